@@ -1,0 +1,15 @@
+# FFTW 3 (double precision) through pkg-config: Debian ships no CMake config for it.
+# Defines the imported target FFTW3::fftw3.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(PC_FFTW3 QUIET fftw3)
+find_path(FFTW3_INCLUDE_DIR fftw3.h HINTS ${PC_FFTW3_INCLUDE_DIRS})
+find_library(FFTW3_LIBRARY NAMES fftw3 HINTS ${PC_FFTW3_LIBRARY_DIRS})
+include(FindPackageHandleStandardArgs)
+find_package_handle_standard_args(FFTW3 REQUIRED_VARS FFTW3_LIBRARY FFTW3_INCLUDE_DIR)
+if(FFTW3_FOUND AND NOT TARGET FFTW3::fftw3)
+  add_library(FFTW3::fftw3 UNKNOWN IMPORTED)
+  set_target_properties(FFTW3::fftw3 PROPERTIES
+    IMPORTED_LOCATION "${FFTW3_LIBRARY}"
+    INTERFACE_INCLUDE_DIRECTORIES "${FFTW3_INCLUDE_DIR}")
+endif()
+mark_as_advanced(FFTW3_INCLUDE_DIR FFTW3_LIBRARY)

@@ -1,0 +1,1 @@
+# Installation and package config: placeholder, completed by the install work.

@@ -1,0 +1,89 @@
+#include "hertz.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <utility>
+
+namespace dc::hertz {
+namespace {
+constexpr double kPi = std::numbers::pi;
+
+/// (K(m) - E(m)) / m, accurate also as m -> 0 (series pi/4 (1 + 3m/8 + ...)).
+double k_minus_e_over_m(double m) {
+  if (m < 1e-6) return kPi / 4.0 * (1.0 + 3.0 * m / 8.0);
+  return (ellipk(m) - ellipe(m)) / m;
+}
+
+/// Curvature ratio B/A of an ellipse with axes a >= b, m = 1 - b^2/a^2 (Johnson 4.2).
+double curvature_ratio(double m) {
+  if (m < 1e-6) return 1.0 + 0.5 * m;  // both numerator and denominator ~ pi m / 4
+  const double K = ellipk(m), E = ellipe(m);
+  return (E / (1.0 - m) - K) / (K - E);
+}
+}  // namespace
+
+double ellipk(double m) {
+  if (!(m >= 0.0 && m < 1.0)) throw std::domain_error("ellipk: parameter outside [0, 1)");
+  double a = 1.0, b = std::sqrt(1.0 - m);
+  while (std::abs(a - b) > 1e-16 * a) {
+    const double an = 0.5 * (a + b);
+    b = std::sqrt(a * b);
+    a = an;
+  }
+  return kPi / (2.0 * a);
+}
+
+double ellipe(double m) {
+  if (!(m >= 0.0 && m <= 1.0)) throw std::domain_error("ellipe: parameter outside [0, 1]");
+  if (m == 1.0) return 1.0;
+  double a = 1.0, b = std::sqrt(1.0 - m), c2 = m, sum = 0.5 * c2, pow2 = 0.5;
+  while (c2 > 1e-32) {
+    const double an = 0.5 * (a + b);
+    const double cn = 0.5 * (a - b);
+    b = std::sqrt(a * b);
+    a = an;
+    pow2 *= 2.0;
+    c2 = cn * cn;
+    sum += pow2 * c2;
+  }
+  return kPi / (2.0 * a) * (1.0 - sum);
+}
+
+SphereSolution sphere(double R, double P, double E_star) {
+  const double a = std::cbrt(3.0 * P * R / (4.0 * E_star));
+  return {a, a * a / R, 3.0 * P / (2.0 * kPi * a * a)};
+}
+
+EllipticSolution elliptic(double A, double B, double P, double E_star) {
+  if (!(A > 0.0 && B > 0.0)) throw std::domain_error("hertz::elliptic: curvatures must be positive");
+  const bool swapped = A > B;  // the major semi-axis lies along the smaller curvature
+  if (swapped) std::swap(A, B);
+  const double ratio = B / A;
+  double lo = 0.0, hi = 1.0 - 1e-15;
+  for (int it = 0; it < 200 && hi - lo > 1e-16; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (curvature_ratio(mid) < ratio ? lo : hi) = mid;
+  }
+  const double m = 0.5 * (lo + hi);
+  const double a = std::cbrt(3.0 * P * k_minus_e_over_m(m) / (2.0 * kPi * E_star * A));
+  const double b = a * std::sqrt(1.0 - m);
+  const double p0 = 3.0 * P / (2.0 * kPi * a * b);
+  const double approach = p0 * b * ellipk(m) / E_star;
+  if (swapped) return {b, a, approach, p0};
+  return {a, b, approach, p0};
+}
+
+CylinderSolution cylinder2d(double R, double P, double E_star) {
+  const double a = std::sqrt(4.0 * P * R / (kPi * E_star));
+  return {a, 2.0 * P / (kPi * a)};
+}
+
+double flat_punch_force(double a, double approach, double E_star) { return 2.0 * a * E_star * approach; }
+
+double flat_punch_pressure(double a, double P, double r) {
+  if (r >= a) return 0.0;
+  return P / (2.0 * kPi * a * std::sqrt(a * a - r * r));
+}
+
+}  // namespace dc::hertz

@@ -1,0 +1,194 @@
+#include "linear_operator.hpp"
+
+#include <complex>
+#include <stdexcept>
+
+#include <fftw3.h>
+
+namespace dc {
+namespace {
+
+/// Common part of the dense and FFT kinds: the kernel tables and their layout.
+class ConvolutionBase : public LinearOperator {
+ public:
+  ConvolutionBase(const Grid& grid, std::vector<KernelTable> blocks, int n_out, int n_in)
+      : grid_(grid), blocks_(std::move(blocks)), n_out_(n_out), n_in_(n_in) {
+    if (static_cast<int>(blocks_.size()) != n_out * n_in)
+      throw std::invalid_argument("convolution operator: blocks must be n_out * n_in");
+  }
+  std::size_t rows() const override { return grid_.size() * n_out_; }
+  std::size_t cols() const override { return grid_.size() * n_in_; }
+  double diagonal(std::size_t i) const override {
+    const std::size_t c = i / grid_.size();
+    if (rows() != cols()) throw std::logic_error("diagonal of a non-square operator");
+    return blocks_[c * n_in_ + c].at(0, 0);
+  }
+  Eigen::MatrixXd to_dense(std::size_t max_entries) const override {
+    if (rows() * cols() > max_entries)
+      throw std::length_error("operator too large for a dense matrix (" + std::to_string(rows()) + "^2)");
+    const std::size_t N = grid_.size();
+    Eigen::MatrixXd m(rows(), cols());
+    for (int r = 0; r < n_out_; ++r)
+      for (int c = 0; c < n_in_; ++c) {
+        const KernelTable& t = blocks_[r * n_in_ + c];
+        for (int jo = 0; jo < grid_.ny; ++jo)
+          for (int io = 0; io < grid_.nx; ++io)
+            for (int ji = 0; ji < grid_.ny; ++ji)
+              for (int ii = 0; ii < grid_.nx; ++ii)
+                m(r * N + grid_.index(io, jo), c * N + grid_.index(ii, ji)) = t.at(io - ii, jo - ji);
+      }
+    return m;
+  }
+
+ protected:
+  Grid grid_;
+  std::vector<KernelTable> blocks_;
+  int n_out_, n_in_;
+};
+
+class DenseConvolution final : public ConvolutionBase {
+ public:
+  DenseConvolution(const Grid& grid, std::vector<KernelTable> blocks, int n_out, int n_in)
+      : ConvolutionBase(grid, std::move(blocks), n_out, n_in), matrix_(to_dense(kDenseAutoLimit * 16)) {}
+  void apply(const double* x, double* y) const override {
+    Eigen::Map<Eigen::VectorXd>(y, rows()).noalias() =
+        matrix_ * Eigen::Map<const Eigen::VectorXd>(x, cols());
+  }
+  std::string kind() const override { return "dense"; }
+
+ private:
+  Eigen::MatrixXd matrix_;
+};
+
+/// Smallest n' >= n whose prime factors are 2, 3, 5 and 7 (fast FFT lengths).
+int fft_size(int n) {
+  for (int m = n;; ++m) {
+    int r = m;
+    for (int p : {2, 3, 5, 7})
+      while (r % p == 0) r /= p;
+    if (r == 1) return m;
+  }
+}
+
+/// Zero-padded (linear, not circular) convolution by FFTW: the kernel spectra and plans are
+/// made once; every apply() does n_in forward and n_out inverse transforms.
+class FftConvolution final : public ConvolutionBase {
+ public:
+  FftConvolution(const Grid& grid, std::vector<KernelTable> blocks, int n_out, int n_in)
+      : ConvolutionBase(grid, std::move(blocks), n_out, n_in) {
+    mx_ = grid_.nx == 1 ? 1 : fft_size(2 * grid_.nx - 1);
+    my_ = grid_.ny == 1 ? 1 : fft_size(2 * grid_.ny - 1);
+    mxc_ = mx_ / 2 + 1;
+    const std::size_t nreal = static_cast<std::size_t>(mx_) * my_;
+    const std::size_t ncplx = static_cast<std::size_t>(mxc_) * my_;
+    real_ = fftw_alloc_real(nreal);
+    cplx_ = fftw_alloc_complex(ncplx);
+    forward_ = fftw_plan_dft_r2c_2d(my_, mx_, real_, cplx_, FFTW_ESTIMATE);
+    inverse_ = fftw_plan_dft_c2r_2d(my_, mx_, cplx_, real_, FFTW_ESTIMATE);
+    if (!forward_ || !inverse_) throw std::runtime_error("FFTW could not plan the convolution");
+    kernel_spectra_.resize(blocks_.size() * ncplx);
+    for (std::size_t b = 0; b < blocks_.size(); ++b) {
+      std::fill(real_, real_ + nreal, 0.0);
+      const KernelTable& t = blocks_[b];
+      for (int dj = -(grid_.ny - 1); dj <= grid_.ny - 1; ++dj)
+        for (int di = -(grid_.nx - 1); di <= grid_.nx - 1; ++di)
+          real_[wrap(di, mx_) + static_cast<std::size_t>(mx_) * wrap(dj, my_)] = t.at(di, dj);
+      fftw_execute(forward_);
+      for (std::size_t k = 0; k < ncplx; ++k)
+        kernel_spectra_[b * ncplx + k] = std::complex<double>(cplx_[k][0], cplx_[k][1]) / double(nreal);
+    }
+    input_spectra_.resize(static_cast<std::size_t>(n_in_) * ncplx);
+  }
+  ~FftConvolution() override {
+    fftw_destroy_plan(forward_);
+    fftw_destroy_plan(inverse_);
+    fftw_free(real_);
+    fftw_free(cplx_);
+  }
+  FftConvolution(const FftConvolution&) = delete;
+  FftConvolution& operator=(const FftConvolution&) = delete;
+
+  void apply(const double* x, double* y) const override {
+    const std::size_t N = grid_.size();
+    const std::size_t nreal = static_cast<std::size_t>(mx_) * my_;
+    const std::size_t ncplx = static_cast<std::size_t>(mxc_) * my_;
+    for (int c = 0; c < n_in_; ++c) {
+      std::fill(real_, real_ + nreal, 0.0);
+      for (int j = 0; j < grid_.ny; ++j)
+        std::copy_n(x + c * N + grid_.index(0, j), grid_.nx, real_ + static_cast<std::size_t>(mx_) * j);
+      fftw_execute(forward_);
+      std::complex<double>* spectrum = input_spectra_.data() + c * ncplx;
+      for (std::size_t k = 0; k < ncplx; ++k) spectrum[k] = {cplx_[k][0], cplx_[k][1]};
+    }
+    for (int r = 0; r < n_out_; ++r) {
+      for (std::size_t k = 0; k < ncplx; ++k) {
+        std::complex<double> acc = 0.0;
+        for (int c = 0; c < n_in_; ++c)
+          acc += kernel_spectra_[(r * n_in_ + c) * ncplx + k] * input_spectra_[c * ncplx + k];
+        cplx_[k][0] = acc.real();
+        cplx_[k][1] = acc.imag();
+      }
+      fftw_execute(inverse_);
+      for (int j = 0; j < grid_.ny; ++j)
+        std::copy_n(real_ + static_cast<std::size_t>(mx_) * j, grid_.nx, y + r * N + grid_.index(0, j));
+    }
+  }
+  std::string kind() const override { return "fft"; }
+
+ private:
+  static std::size_t wrap(int d, int m) { return static_cast<std::size_t>(d < 0 ? d + m : d); }
+
+  int mx_ = 1, my_ = 1, mxc_ = 1;
+  double* real_ = nullptr;
+  fftw_complex* cplx_ = nullptr;
+  fftw_plan forward_ = nullptr, inverse_ = nullptr;
+  std::vector<std::complex<double>> kernel_spectra_;
+  mutable std::vector<std::complex<double>> input_spectra_;
+};
+
+}  // namespace
+
+std::unique_ptr<LinearOperator> make_convolution_operator(const Grid& grid,
+                                                          std::vector<KernelTable> blocks,
+                                                          int n_out, int n_in, OperatorKind kind) {
+  const std::size_t entries = grid.size() * n_out * grid.size() * n_in;
+  if (kind == OperatorKind::automatic)
+    kind = entries <= kDenseAutoLimit ? OperatorKind::dense : OperatorKind::fft;
+  if (kind == OperatorKind::dense) {
+    if (entries > 16 * kDenseAutoLimit)
+      throw std::length_error("dense operator refused: " + std::to_string(grid.size()) +
+                              " elements would need an N x N matrix; use the FFT kind");
+    return std::make_unique<DenseConvolution>(grid, std::move(blocks), n_out, n_in);
+  }
+  return std::make_unique<FftConvolution>(grid, std::move(blocks), n_out, n_in);
+}
+
+HalfSpace::HalfSpace(const Grid& grid, const MaterialPair& materials, InfluenceOptions options)
+    : grid_(grid), materials_(materials), options_(options) {}
+
+std::unique_ptr<LinearOperator> HalfSpace::normal(OperatorKind kind) const {
+  return make_convolution_operator(grid_, {influence_table(grid_, materials_, kZ, kZ, options_)}, 1, 1, kind);
+}
+
+std::unique_ptr<LinearOperator> HalfSpace::tangential(OperatorKind kind) const {
+  if (grid_.dimension == 2)
+    return make_convolution_operator(grid_, {influence_table(grid_, materials_, kX, kX, options_)}, 1, 1, kind);
+  std::vector<KernelTable> blocks;
+  for (Axis out : {kX, kY})
+    for (Axis in : {kX, kY}) blocks.push_back(influence_table(grid_, materials_, out, in, options_));
+  return make_convolution_operator(grid_, std::move(blocks), 2, 2, kind);
+}
+
+std::unique_ptr<LinearOperator> HalfSpace::tangential_from_normal(OperatorKind kind) const {
+  std::vector<KernelTable> blocks{influence_table(grid_, materials_, kX, kZ, options_)};
+  if (grid_.dimension == 3) blocks.push_back(influence_table(grid_, materials_, kY, kZ, options_));
+  return make_convolution_operator(grid_, std::move(blocks), tangential_components(), 1, kind);
+}
+
+std::unique_ptr<LinearOperator> HalfSpace::normal_from_tangential(OperatorKind kind) const {
+  std::vector<KernelTable> blocks{influence_table(grid_, materials_, kZ, kX, options_)};
+  if (grid_.dimension == 3) blocks.push_back(influence_table(grid_, materials_, kZ, kY, options_));
+  return make_convolution_operator(grid_, std::move(blocks), 1, tangential_components(), kind);
+}
+
+}  // namespace dc

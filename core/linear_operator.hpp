@@ -1,0 +1,67 @@
+#pragma once
+// Linear operators on grid fields: the compliance of the half-space applied matrix-free.
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "grid.hpp"
+#include "influence.hpp"
+
+namespace dc {
+
+/// y = A x for stacked component fields (component c of element e at c * N + e).
+class LinearOperator {
+ public:
+  virtual ~LinearOperator() = default;
+  virtual std::size_t rows() const = 0;
+  virtual std::size_t cols() const = 0;
+  /// y = A x; x has cols() entries, y rows(). Not thread-safe (work buffers are reused).
+  virtual void apply(const double* x, double* y) const = 0;
+  /// Diagonal entry A_ii (square operators).
+  virtual double diagonal(std::size_t i) const = 0;
+  /// The matrix itself; throws std::length_error when rows()*cols() exceeds `max_entries`.
+  virtual Eigen::MatrixXd to_dense(std::size_t max_entries = 4096u * 4096u) const = 0;
+  virtual std::string kind() const = 0;  ///< "dense" or "fft"
+
+  void apply(const std::vector<double>& x, std::vector<double>& y) const {
+    y.resize(rows());
+    apply(x.data(), y.data());
+  }
+};
+
+enum class OperatorKind { automatic, dense, fft };
+
+/// Largest rows*cols for which `automatic` picks a dense matrix.
+inline constexpr std::size_t kDenseAutoLimit = 1024u * 1024u;
+
+/// Block convolution operator built from kernel tables: blocks[r * n_in + c] maps input
+/// component c to output component r. Dense and FFT kinds give the same result to round-off.
+std::unique_ptr<LinearOperator> make_convolution_operator(const Grid& grid,
+                                                          std::vector<KernelTable> blocks,
+                                                          int n_out, int n_in, OperatorKind kind);
+
+/// The half-space compliances of one grid and material pair (tables computed once).
+/// normal(): w_z <- p (N x N); tangential(): (w_x, w_y) <- (tau_x, tau_y) (2N x 2N, 2-D: N x N);
+/// tangential_from_normal(): (w_x, w_y) <- p (the kappa B21 term); normal_from_tangential():
+/// w_z <- (tau_x, tau_y) (the kappa B32 term).
+class HalfSpace {
+ public:
+  HalfSpace(const Grid& grid, const MaterialPair& materials, InfluenceOptions options = {});
+  const Grid& grid() const { return grid_; }
+  const MaterialPair& materials() const { return materials_; }
+  std::unique_ptr<LinearOperator> normal(OperatorKind kind = OperatorKind::automatic) const;
+  std::unique_ptr<LinearOperator> tangential(OperatorKind kind = OperatorKind::automatic) const;
+  std::unique_ptr<LinearOperator> tangential_from_normal(OperatorKind kind = OperatorKind::automatic) const;
+  std::unique_ptr<LinearOperator> normal_from_tangential(OperatorKind kind = OperatorKind::automatic) const;
+  int tangential_components() const { return grid_.dimension == 2 ? 1 : 2; }
+
+ private:
+  Grid grid_;
+  MaterialPair materials_;
+  InfluenceOptions options_;
+};
+
+}  // namespace dc

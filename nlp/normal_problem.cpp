@@ -1,0 +1,224 @@
+#include "normal_problem.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+#include "backend_choice.hpp"
+#include "errors.hpp"
+#include "native_solvers.hpp"
+
+namespace dc {
+namespace {
+
+/// The scaled QP of (4.7): x = p / p_ref, Q = C / c0 (unit diagonal),
+/// c = (h - delta) / (c0 p_ref); under force control one row (sum x) / n_ref = 1.
+struct ScaledNormalProgram {
+  double c0 = 1.0, p_ref = 1.0, n_ref = 1.0;
+  QuadraticProgram qp;
+};
+
+class ScaledOperator final : public LinearOperator {
+ public:
+  ScaledOperator(const LinearOperator& op, double scale) : op_(op), scale_(scale) {}
+  std::size_t rows() const override { return op_.rows(); }
+  std::size_t cols() const override { return op_.cols(); }
+  void apply(const double* x, double* y) const override {
+    op_.apply(x, y);
+    for (std::size_t i = 0; i < op_.rows(); ++i) y[i] *= scale_;
+  }
+  double diagonal(std::size_t i) const override { return scale_ * op_.diagonal(i); }
+  Eigen::MatrixXd to_dense(std::size_t max_entries) const override { return scale_ * op_.to_dense(max_entries); }
+  std::string kind() const override { return op_.kind(); }
+
+ private:
+  const LinearOperator& op_;
+  double scale_;
+};
+
+}  // namespace
+
+NormalProblem::NormalProblem(const Grid& grid, const MaterialPair& materials, std::vector<double> heights,
+                             OperatorKind kind)
+    : NormalProblem(std::shared_ptr<const LinearOperator>(HalfSpace(grid, materials).normal(kind)), grid,
+                    std::move(heights)) {}
+
+NormalProblem::NormalProblem(std::shared_ptr<const LinearOperator> compliance, const Grid& grid,
+                             std::vector<double> heights)
+    : compliance_(std::move(compliance)), grid_(grid) {
+  set_heights(std::move(heights));
+  if (compliance_->rows() != grid_.size() || compliance_->cols() != grid_.size())
+    throw std::invalid_argument("normal problem: operator and grid sizes differ");
+  if (!(compliance_->diagonal(0) > 0.0))
+    throw std::invalid_argument("normal problem: the compliance must have a positive diagonal");
+}
+
+void NormalProblem::set_heights(std::vector<double> heights) {
+  if (heights.size() != grid_.size()) throw std::invalid_argument("normal problem: one height per element");
+  heights_ = std::move(heights);
+  if (std::none_of(heights_.begin(), heights_.end(), [](double h) { return std::isfinite(h); }))
+    throw InputError("profile", "no element of the grid can touch the body");
+}
+
+Certificate NormalProblem::certify(const std::vector<double>& p, double approach, const NormalSpec& control) const {
+  Certificate cert;
+  const std::size_t n = grid_.size();
+  std::vector<double> w;
+  compliance_->apply(p, w);
+  const double p_max = std::max(*std::max_element(p.begin(), p.end()), 0.0);
+  double comp = 0.0, gap_neg = 0.0, p_neg = 0.0, force = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    force += p[i] * grid_.area();
+    p_neg = std::max(p_neg, -p[i]);
+    if (!std::isfinite(heights_[i])) continue;  // cannot touch: p is held at 0
+    const double c0 = compliance_->diagonal(i);
+    const double g = (w[i] + heights_[i] - approach) / c0;  // gap in pressure units
+    comp = std::max(comp, std::abs(std::min(p[i], g)));
+    gap_neg = std::max(gap_neg, -g);
+  }
+  const double scale = p_max > 0.0 ? p_max : 1.0;
+  cert.complementarity = comp / scale;
+  cert.gap_violation = gap_neg / scale;
+  cert.pressure_violation = p_neg / scale;
+  if (control.control == Control::force) cert.force_residual = std::abs(force - control.value) / control.value;
+  return cert;
+}
+
+NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverSpec& solver,
+                                    const ProgressCallback& progress) {
+  const std::size_t n = grid_.size();
+  const double A = grid_.area();
+  std::size_t n_free = 0;
+  for (double h : heights_) n_free += std::isfinite(h) ? 1 : 0;
+
+  // Scales: x = p / p_ref is O(1) in the contact; Q has unit diagonal.
+  ScaledNormalProgram s;
+  s.c0 = compliance_->diagonal(0);
+  s.n_ref = std::max(1.0, 0.25 * static_cast<double>(n_free));
+  const double delta = control.control == Control::approach ? control.value : 0.0;
+  if (control.control == Control::force) {
+    s.p_ref = control.value / (A * s.n_ref);
+  } else {
+    const double spread = grid_.dimension == 2 ? s.n_ref : std::sqrt(s.n_ref);
+    s.p_ref = control.value / (s.c0 * spread);
+  }
+  ScaledOperator Q(*compliance_, 1.0 / s.c0);
+  QuadraticProgram& qp = s.qp;
+  qp.Q = &Q;
+  qp.c.resize(n);
+  qp.lower.assign(n, 0.0);
+  qp.upper.assign(n, kInf);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (std::isfinite(heights_[i])) {
+      qp.c[i] = (heights_[i] - delta) / (s.c0 * s.p_ref);
+    } else {
+      qp.c[i] = 0.0;
+      qp.upper[i] = 0.0;
+    }
+  }
+  if (control.control == Control::force) {
+    LinearEquality eq;
+    eq.a.assign(n, 1.0 / s.n_ref);
+    for (std::size_t i = 0; i < n; ++i)
+      if (!std::isfinite(heights_[i])) eq.a[i] = 0.0;
+    eq.b = control.value / (A * s.p_ref * s.n_ref);
+    qp.equalities.push_back(std::move(eq));
+  }
+  if (warm_start_.size() == n) {
+    qp.x0.resize(n);
+    for (std::size_t i = 0; i < n; ++i) qp.x0[i] = warm_start_[i] / s.p_ref;
+  }
+
+  SolveOptions options;
+  options.tol = solver.tol;
+  options.max_iter = solver.max_iter;
+  options.hessian = solver.hessian;
+  options.progress = progress;
+
+  NormalSolution best;
+  best.report.requested = solver.backend;
+  best.report.operator_kind = compliance_->kind();
+  bool have_result = false;
+  const auto order = backend_order(solver.backend, n, solver.fallback);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::string& backend = order[k];
+    const auto start = std::chrono::steady_clock::now();
+    SolveOutcome outcome;
+    try {
+      if (backend == "native") outcome = solve_normal_native(qp, options);
+      else if (backend == "ipopt") outcome = solve_with_ipopt(qp, options);
+      else outcome = solve_with_nlopt(qp, options);
+    } catch (const std::exception& e) {
+      outcome = SolveOutcome{};
+      outcome.message = std::string("exception: ") + e.what();
+    }
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    NormalSolution sol;
+    sol.report = best.report;
+    sol.report.backend = backend;
+    sol.report.fallback_used = k > 0;
+    sol.report.message = outcome.message;
+    sol.report.iterations = outcome.iterations;
+    sol.report.time_s = elapsed;
+    if (outcome.x.size() == n) {
+      sol.pressure.resize(n);
+      for (std::size_t i = 0; i < n; ++i) sol.pressure[i] = std::max(outcome.x[i], 0.0) * s.p_ref;
+      // The approach: given, or the pressure-weighted mean of C p + h over the contact (the
+      // value that makes the gap vanish where p > 0); the backends' multipliers agree with it.
+      std::vector<double> w;
+      compliance_->apply(sol.pressure, w);
+      if (control.control == Control::approach) {
+        sol.approach = control.value;
+      } else {
+        double num = 0.0, den = 0.0;
+        for (std::size_t i = 0; i < n; ++i)
+          if (sol.pressure[i] > 0.0) {
+            num += sol.pressure[i] * (w[i] + heights_[i]);
+            den += sol.pressure[i];
+          }
+        sol.approach = den > 0.0 ? num / den : 0.0;
+      }
+      sol.gap.resize(n);
+      sol.force = 0.0;
+      double energy = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        sol.gap[i] = std::isfinite(heights_[i]) ? w[i] + heights_[i] - sol.approach : kInf;
+        sol.force += sol.pressure[i] * A;
+        if (std::isfinite(heights_[i])) energy += A * sol.pressure[i] * (0.5 * w[i] + heights_[i] - delta);
+      }
+      sol.report.objective = energy;  // the functional (4.7) in J (2-D: J/m)
+      sol.report.certificate = certify(sol.pressure, sol.approach, control);
+      const bool certified = sol.report.certificate.worst() <= solver.certificate_tol;
+      sol.report.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
+      if (!certified && outcome.success)
+        sol.report.message += " (backend reported success but the certificate " +
+                              std::to_string(sol.report.certificate.worst()) + " exceeds the tolerance)";
+    } else {
+      sol.report.status = SolveStatus::failed;
+    }
+    const bool better = !have_result || (sol.report.status == SolveStatus::converged) ||
+                        (best.report.status == SolveStatus::failed && sol.report.status != SolveStatus::failed);
+    if (better) {
+      best = std::move(sol);
+      have_result = true;
+    }
+    if (best.report.status == SolveStatus::converged) break;
+  }
+  if (best.report.status == SolveStatus::converged) {
+    warm_start_ = best.pressure;
+  }
+  return best;
+}
+
+NormalSolution solve_normal_case(const Case& c, const ProgressCallback& progress) {
+  OperatorKind kind = OperatorKind::automatic;
+  if (c.solver.operator_kind == "dense") kind = OperatorKind::dense;
+  if (c.solver.operator_kind == "fft") kind = OperatorKind::fft;
+  NormalProblem problem(c.grid, c.materials, profile_heights(c.profile, c.grid), kind);
+  return problem.solve(c.normal, c.solver, progress);
+}
+
+}  // namespace dc

@@ -1,0 +1,56 @@
+#pragma once
+// The normal contact problem (4.7): minimise 1/2 p'Cp + (h - delta)'p over p >= 0,
+// under force control (sum p A = P, delta its multiplier) or approach control (delta given).
+// KKT = (2.2)-(2.3): g = Cp + h - delta >= 0, p >= 0, p g = 0.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "case_model.hpp"
+#include "linear_operator.hpp"
+#include "quadratic_program.hpp"
+#include "solver_report.hpp"
+
+namespace dc {
+
+struct NormalSolution {
+  std::vector<double> pressure;  ///< Pa (per element)
+  std::vector<double> gap;       ///< deformed gap g (m), >= 0, 0 in contact
+  double approach = 0.0;         ///< delta (m); in 2-D relative to the reference length
+  double force = 0.0;            ///< sum p A (N; 2-D N/m)
+  SolverReport report;
+};
+
+/// Set up once per grid/materials (operator, plans), solve many times (warm starts).
+class NormalProblem {
+ public:
+  NormalProblem(const Grid& grid, const MaterialPair& materials, std::vector<double> heights,
+                OperatorKind kind = OperatorKind::automatic);
+  NormalProblem(std::shared_ptr<const LinearOperator> compliance, const Grid& grid,
+                std::vector<double> heights);
+
+  /// Solves with the requested backend ("auto", "ipopt", "nlopt", "native"); `auto` picks by
+  /// size and falls back on failure (when options.fallback). Never throws for non-convergence:
+  /// the report says so.
+  NormalSolution solve(const NormalSpec& control, const SolverSpec& solver,
+                       const ProgressCallback& progress = {});
+  /// Certificate of an arbitrary pressure field (for tests and for every solve).
+  Certificate certify(const std::vector<double>& pressure, double approach, const NormalSpec& control) const;
+  /// Rigid-body shift of the profile between solves (dynamic steps move the body).
+  void set_heights(std::vector<double> heights);
+
+  const LinearOperator& compliance() const { return *compliance_; }
+  const Grid& grid() const { return grid_; }
+  const std::vector<double>& heights() const { return heights_; }
+
+ private:
+  std::shared_ptr<const LinearOperator> compliance_;
+  Grid grid_;
+  std::vector<double> heights_;
+  std::vector<double> warm_start_;
+};
+
+/// The whole normal case: grid, profile, operator, solve.
+NormalSolution solve_normal_case(const Case& c, const ProgressCallback& progress = {});
+
+}  // namespace dc

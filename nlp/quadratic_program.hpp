@@ -1,0 +1,72 @@
+#pragma once
+// The one program interface every backend sees: a convex quadratic program
+//   minimise  1/2 x'Qx + c'x
+//   subject to lower <= x <= upper,  a_k'x = b_k,  x_i^2 + x_j^2 <= r^2 (cones).
+// Q is applied matrix-free (LinearOperator); small problems may also expose it densely.
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "linear_operator.hpp"
+
+namespace dc {
+
+struct LinearEquality {
+  std::vector<double> a;  ///< dense row, size n
+  double b = 0.0;
+};
+
+/// Second-order cone in two variables: x[ix]^2 + x[iy]^2 <= radius^2 (a friction disk).
+struct DiskConstraint {
+  int ix = 0, iy = 0;
+  double radius = 0.0;
+};
+
+struct QuadraticProgram {
+  const LinearOperator* Q = nullptr;  ///< symmetric positive semi-definite, n x n
+  std::vector<double> c;              ///< size n
+  std::vector<double> lower, upper;   ///< size n (or empty: unbounded); +-infinity allowed
+  std::vector<LinearEquality> equalities;
+  std::vector<DiskConstraint> disks;
+  std::vector<double> x0;  ///< starting point (or empty: zeros projected on the bounds)
+
+  int n() const { return static_cast<int>(c.size()); }
+  double objective(const double* x) const;
+  /// g = Qx + c; returns the objective as a by-product.
+  double gradient(const double* x, double* g) const;
+};
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct ProgressInfo {
+  int iteration = 0;
+  double objective = 0.0;
+  double residual = 0.0;
+};
+using ProgressCallback = std::function<void(const ProgressInfo&)>;
+
+struct SolveOptions {
+  double tol = 1e-9;        ///< relative tolerance handed to the backend
+  int max_iter = 1000;      ///< iteration limit of the backend
+  /// Ipopt Hessian: "exact", "limited-memory" or "auto" (exact while n <= exact_hessian_limit).
+  std::string hessian = "auto";
+  int exact_hessian_limit = 1024;
+  bool verbose = false;
+  ProgressCallback progress;  ///< called now and then by backends that support it
+};
+
+/// What a backend returns. Multipliers follow  Qx + c = sum_k lambda_k a_k + z_l - z_u - sum disks.
+struct SolveOutcome {
+  std::vector<double> x;
+  std::vector<double> equality_multipliers;
+  bool success = false;       ///< the backend's own verdict (the certificate decides)
+  std::string message;        ///< backend status text
+  int iterations = 0;
+  double objective = 0.0;
+};
+
+SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& options);
+SolveOutcome solve_with_nlopt(const QuadraticProgram& qp, const SolveOptions& options);
+
+}  // namespace dc

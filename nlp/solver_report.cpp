@@ -1,0 +1,40 @@
+#include "solver_report.hpp"
+
+#include <algorithm>
+
+namespace dc {
+
+double Certificate::worst() const {
+  return std::max({complementarity, gap_violation, pressure_violation, force_residual, friction_law,
+                   gap_function});
+}
+
+const char* to_string(SolveStatus status) {
+  switch (status) {
+    case SolveStatus::converged: return "converged";
+    case SolveStatus::not_converged: return "not_converged";
+    case SolveStatus::failed: return "failed";
+  }
+  return "failed";
+}
+
+nlohmann::json to_json(const Certificate& c) {
+  return {{"complementarity", c.complementarity}, {"gap_violation", c.gap_violation},
+          {"pressure_violation", c.pressure_violation}, {"force_residual", c.force_residual},
+          {"friction_law", c.friction_law},     {"gap_function", c.gap_function}};
+}
+
+nlohmann::json to_json(const SolverReport& r) {
+  return {{"backend", r.backend},
+          {"requested", r.requested},
+          {"status", to_string(r.status)},
+          {"message", r.message},
+          {"iterations", r.iterations},
+          {"time_s", r.time_s},
+          {"objective", r.objective},
+          {"fallback_used", r.fallback_used},
+          {"operator", r.operator_kind},
+          {"certificate", to_json(r.certificate)}};
+}
+
+}  // namespace dc

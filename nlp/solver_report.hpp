@@ -1,0 +1,40 @@
+#pragma once
+// What every solve reports: backend used, status, effort and our own certificate.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace dc {
+
+/// Residuals measured by us after a solve (never the backend's own claim).
+struct Certificate {
+  double complementarity = 0.0;  ///< max |min(p, g/C_ii)| / max p (normal problem)
+  double gap_violation = 0.0;    ///< max(-g) / (max p * C_ii): interpenetration
+  double pressure_violation = 0.0;  ///< max(-p) / max p
+  double force_residual = 0.0;   ///< |sum p A - P| / P under force control
+  double friction_law = 0.0;     ///< tangential: worst violation of (2.4)-(2.5) / max f(p)
+  double gap_function = 0.0;     ///< tangential: (4.24) g(tau) / sum f(p)|ds|A
+  double worst() const;          ///< the largest of the above
+};
+
+enum class SolveStatus { converged, not_converged, failed };
+
+struct SolverReport {
+  std::string backend;          ///< backend that produced the result
+  std::string requested;        ///< backend the user asked for
+  SolveStatus status = SolveStatus::failed;
+  std::string message;          ///< backend message / reason for failure
+  int iterations = 0;
+  double time_s = 0.0;
+  double objective = 0.0;
+  bool fallback_used = false;
+  std::string operator_kind;    ///< dense | fft
+  Certificate certificate;
+};
+
+const char* to_string(SolveStatus status);
+nlohmann::json to_json(const Certificate& certificate);
+/// The `solver` object of summary.json.
+nlohmann::json to_json(const SolverReport& report);
+
+}  // namespace dc
