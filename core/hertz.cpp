@@ -26,7 +26,7 @@ double curvature_ratio(double m) {
 double ellipk(double m) {
   if (!(m >= 0.0 && m < 1.0)) throw std::domain_error("ellipk: parameter outside [0, 1)");
   double a = 1.0, b = std::sqrt(1.0 - m);
-  while (std::abs(a - b) > 1e-16 * a) {
+  for (int it = 0; it < 64 && std::abs(a - b) > 4e-16 * a; ++it) {  // AGM: quadratic convergence
     const double an = 0.5 * (a + b);
     b = std::sqrt(a * b);
     a = an;
@@ -37,15 +37,15 @@ double ellipk(double m) {
 double ellipe(double m) {
   if (!(m >= 0.0 && m <= 1.0)) throw std::domain_error("ellipe: parameter outside [0, 1]");
   if (m == 1.0) return 1.0;
-  double a = 1.0, b = std::sqrt(1.0 - m), c2 = m, sum = 0.5 * c2, pow2 = 0.5;
-  while (c2 > 1e-32) {
-    const double an = 0.5 * (a + b);
+  // E = K (1 - sum 2^(n-1) c_n^2), c_0^2 = m, c_(n+1) = (a_n - b_n)/2 (AGM).
+  double a = 1.0, b = std::sqrt(1.0 - m), sum = 0.5 * m, pow2 = 0.5;
+  for (int it = 0; it < 64 && std::abs(a - b) > 4e-16 * a; ++it) {
     const double cn = 0.5 * (a - b);
+    const double an = 0.5 * (a + b);
     b = std::sqrt(a * b);
     a = an;
     pow2 *= 2.0;
-    c2 = cn * cn;
-    sum += pow2 * c2;
+    sum += pow2 * cn * cn;
   }
   return kPi / (2.0 * a) * (1.0 - sum);
 }
