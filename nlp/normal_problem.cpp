@@ -141,6 +141,7 @@ NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverSpec&
   best.report.requested = solver.backend;
   best.report.operator_kind = compliance_->kind();
   bool have_result = false;
+  std::string attempts;  // every backend tried, for the report
   const auto order = backend_order(solver.backend, n, solver.fallback);
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::string& backend = order[k];
@@ -199,6 +200,7 @@ NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverSpec&
     } else {
       sol.report.status = SolveStatus::failed;
     }
+    attempts += (attempts.empty() ? "" : "; ") + backend + ": " + to_string(sol.report.status);
     const bool better = !have_result || (sol.report.status == SolveStatus::converged) ||
                         (best.report.status == SolveStatus::failed && sol.report.status != SolveStatus::failed);
     if (better) {
@@ -207,9 +209,9 @@ NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverSpec&
     }
     if (best.report.status == SolveStatus::converged) break;
   }
-  if (best.report.status == SolveStatus::converged) {
-    warm_start_ = best.pressure;
-  }
+  if (best.report.fallback_used || best.report.status != SolveStatus::converged)
+    best.report.message += " [tried " + attempts + "]";
+  if (best.report.status == SolveStatus::converged) warm_start_ = best.pressure;
   return best;
 }
 
