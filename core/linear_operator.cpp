@@ -1,6 +1,9 @@
 #include "linear_operator.hpp"
 
-#include <complex>
+#include <algorithm>
+#include <cstdlib>
+#include <mutex>
+#include <thread>
 #include <stdexcept>
 
 #include <fftw3.h>
@@ -60,6 +63,25 @@ class DenseConvolution final : public ConvolutionBase {
   Eigen::MatrixXd matrix_;
 };
 
+/// Transforms of at least this many points are planned with FFTW_MEASURE and threads.
+constexpr std::size_t kLargeTransform = 1024u * 1024u;
+
+std::mutex& planner_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+/// Threads for large transforms: the hardware's cores (DYNCONTACT_THREADS overrides).
+int fft_threads() {
+  static const int threads = [] {
+    fftw_init_threads();
+    int n = static_cast<int>(std::thread::hardware_concurrency());
+    if (const char* env = std::getenv("DYNCONTACT_THREADS")) n = std::atoi(env);
+    return std::max(1, n);
+  }();
+  return threads;
+}
+
 /// Smallest n' >= n whose prime factors are 2, 3, 5 and 7 (fast FFT lengths).
 int fft_size(int n) {
   for (int m = n;; ++m) {
@@ -83,10 +105,17 @@ class FftConvolution final : public ConvolutionBase {
     const std::size_t ncplx = static_cast<std::size_t>(mxc_) * my_;
     real_ = fftw_alloc_real(nreal);
     cplx_ = fftw_alloc_complex(ncplx);
-    forward_ = fftw_plan_dft_r2c_2d(my_, mx_, real_, cplx_, FFTW_ESTIMATE);
-    inverse_ = fftw_plan_dft_c2r_2d(my_, mx_, cplx_, real_, FFTW_ESTIMATE);
+    {
+      // Planning is not thread-safe in FFTW; large transforms are measured and threaded.
+      std::lock_guard<std::mutex> lock(planner_mutex());
+      const bool large = nreal >= kLargeTransform;
+      fftw_plan_with_nthreads(large ? fft_threads() : 1);
+      const unsigned flags = large ? FFTW_MEASURE : FFTW_ESTIMATE;
+      forward_ = fftw_plan_dft_r2c_2d(my_, mx_, real_, cplx_, flags);
+      inverse_ = fftw_plan_dft_c2r_2d(my_, mx_, cplx_, real_, flags);
+    }
     if (!forward_ || !inverse_) throw std::runtime_error("FFTW could not plan the convolution");
-    kernel_spectra_.resize(blocks_.size() * ncplx);
+    kernel_spectra_.resize(2 * blocks_.size() * ncplx);
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
       std::fill(real_, real_ + nreal, 0.0);
       const KernelTable& t = blocks_[b];
@@ -94,10 +123,12 @@ class FftConvolution final : public ConvolutionBase {
         for (int di = -(grid_.nx - 1); di <= grid_.nx - 1; ++di)
           real_[wrap(di, mx_) + static_cast<std::size_t>(mx_) * wrap(dj, my_)] = t.at(di, dj);
       fftw_execute(forward_);
-      for (std::size_t k = 0; k < ncplx; ++k)
-        kernel_spectra_[b * ncplx + k] = std::complex<double>(cplx_[k][0], cplx_[k][1]) / double(nreal);
+      for (std::size_t k = 0; k < ncplx; ++k) {
+        kernel_spectra_[2 * (b * ncplx + k)] = cplx_[k][0] / double(nreal);
+        kernel_spectra_[2 * (b * ncplx + k) + 1] = cplx_[k][1] / double(nreal);
+      }
     }
-    input_spectra_.resize(static_cast<std::size_t>(n_in_) * ncplx);
+    if (keep_spectra()) input_spectra_.resize(2 * static_cast<std::size_t>(n_in_) * ncplx);
   }
   ~FftConvolution() override {
     fftw_destroy_plan(forward_);
@@ -117,16 +148,25 @@ class FftConvolution final : public ConvolutionBase {
       for (int j = 0; j < grid_.ny; ++j)
         std::copy_n(x + c * N + grid_.index(0, j), grid_.nx, real_ + static_cast<std::size_t>(mx_) * j);
       fftw_execute(forward_);
-      std::complex<double>* spectrum = input_spectra_.data() + c * ncplx;
-      for (std::size_t k = 0; k < ncplx; ++k) spectrum[k] = {cplx_[k][0], cplx_[k][1]};
+      if (keep_spectra()) std::copy_n(&cplx_[0][0], 2 * ncplx, input_spectra_.data() + 2 * c * ncplx);
     }
     for (int r = 0; r < n_out_; ++r) {
-      for (std::size_t k = 0; k < ncplx; ++k) {
-        std::complex<double> acc = 0.0;
-        for (int c = 0; c < n_in_; ++c)
-          acc += kernel_spectra_[(r * n_in_ + c) * ncplx + k] * input_spectra_[c * ncplx + k];
-        cplx_[k][0] = acc.real();
-        cplx_[k][1] = acc.imag();
+      // Spectral product, written out (std::complex's operator* guards against inf/nan and is
+      // several times slower in this loop).
+      if (!keep_spectra()) {
+        multiply(kernel_spectra_.data() + 2 * r * ncplx, ncplx);
+      } else {
+        for (std::size_t k = 0; k < ncplx; ++k) {
+          double re = 0.0, im = 0.0;
+          for (int c = 0; c < n_in_; ++c) {
+            const double* kern = kernel_spectra_.data() + 2 * ((r * n_in_ + c) * ncplx + k);
+            const double* in = input_spectra_.data() + 2 * (c * ncplx + k);
+            re += kern[0] * in[0] - kern[1] * in[1];
+            im += kern[0] * in[1] + kern[1] * in[0];
+          }
+          cplx_[k][0] = re;
+          cplx_[k][1] = im;
+        }
       }
       fftw_execute(inverse_);
       for (int j = 0; j < grid_.ny; ++j)
@@ -137,13 +177,23 @@ class FftConvolution final : public ConvolutionBase {
 
  private:
   static std::size_t wrap(int d, int m) { return static_cast<std::size_t>(d < 0 ? d + m : d); }
+  /// A single block multiplies in place; several keep the input spectra.
+  bool keep_spectra() const { return n_in_ > 1 || n_out_ > 1; }
+  /// cplx_ *= kernel (interleaved re/im), in place.
+  void multiply(const double* kern, std::size_t ncplx) const {
+    for (std::size_t k = 0; k < ncplx; ++k) {
+      const double re = cplx_[k][0], im = cplx_[k][1];
+      cplx_[k][0] = kern[2 * k] * re - kern[2 * k + 1] * im;
+      cplx_[k][1] = kern[2 * k] * im + kern[2 * k + 1] * re;
+    }
+  }
 
   int mx_ = 1, my_ = 1, mxc_ = 1;
   double* real_ = nullptr;
   fftw_complex* cplx_ = nullptr;
   fftw_plan forward_ = nullptr, inverse_ = nullptr;
-  std::vector<std::complex<double>> kernel_spectra_;
-  mutable std::vector<std::complex<double>> input_spectra_;
+  std::vector<double> kernel_spectra_;               ///< interleaved re/im, one spectrum per block
+  mutable std::vector<double> input_spectra_;        ///< interleaved re/im, one per input
 };
 
 }  // namespace
