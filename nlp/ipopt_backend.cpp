@@ -1,0 +1,330 @@
+// Ipopt backend: the quadratic program as an Ipopt TNLP.
+//   min f(x) = 1/2 x'Qx + c'x   s.t.  g_k(x) = a_k'x = b_k,  g_d(x) = x_ix^2 + x_iy^2 <= r_d^2,
+//   lower <= x <= upper.
+// Ipopt's Lagrangian is f + lambda'g, so its KKT reads Qx + c = -J'lambda + z_L - z_U; our
+// equality multipliers (quadratic_program.hpp) are therefore lambda_k = -lambda_ipopt_k.
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include <IpIpoptApplication.hpp>
+#include <IpSolveStatistics.hpp>
+#include <IpTNLP.hpp>
+
+#include "quadratic_program.hpp"
+
+namespace dc {
+namespace {
+
+using Ipopt::Index;
+using Ipopt::Number;
+
+constexpr Number kIpoptInf = 1e19;  // Ipopt's default nlp_{lower,upper}_bound_inf
+
+const char* status_name(Ipopt::ApplicationReturnStatus status) {
+  switch (status) {
+    case Ipopt::Solve_Succeeded: return "Solve_Succeeded";
+    case Ipopt::Solved_To_Acceptable_Level: return "Solved_To_Acceptable_Level";
+    case Ipopt::Infeasible_Problem_Detected: return "Infeasible_Problem_Detected";
+    case Ipopt::Search_Direction_Becomes_Too_Small: return "Search_Direction_Becomes_Too_Small";
+    case Ipopt::Diverging_Iterates: return "Diverging_Iterates";
+    case Ipopt::User_Requested_Stop: return "User_Requested_Stop";
+    case Ipopt::Feasible_Point_Found: return "Feasible_Point_Found";
+    case Ipopt::Maximum_Iterations_Exceeded: return "Maximum_Iterations_Exceeded";
+    case Ipopt::Restoration_Failed: return "Restoration_Failed";
+    case Ipopt::Error_In_Step_Computation: return "Error_In_Step_Computation";
+    case Ipopt::Maximum_CpuTime_Exceeded: return "Maximum_CpuTime_Exceeded";
+    case Ipopt::Not_Enough_Degrees_Of_Freedom: return "Not_Enough_Degrees_Of_Freedom";
+    case Ipopt::Invalid_Problem_Definition: return "Invalid_Problem_Definition";
+    case Ipopt::Invalid_Option: return "Invalid_Option";
+    case Ipopt::Invalid_Number_Detected: return "Invalid_Number_Detected";
+    case Ipopt::Unrecoverable_Exception: return "Unrecoverable_Exception";
+    case Ipopt::NonIpopt_Exception_Thrown: return "NonIpopt_Exception_Thrown";
+    case Ipopt::Insufficient_Memory: return "Insufficient_Memory";
+    case Ipopt::Internal_Error: return "Internal_Error";
+  }
+  return "unknown Ipopt status";
+}
+
+double bound_or(const std::vector<double>& bounds, int i, double fallback) {
+  return bounds.empty() ? fallback : bounds[static_cast<std::size_t>(i)];
+}
+
+/// Start: qp.x0 if given, else zero; projected on the bounds either way.
+std::vector<double> starting_point(const QuadraticProgram& qp) {
+  const int n = qp.n();
+  std::vector<double> x(static_cast<std::size_t>(n), 0.0);
+  if (qp.x0.size() == x.size()) x = qp.x0;
+  for (int i = 0; i < n; ++i) {
+    auto& xi = x[static_cast<std::size_t>(i)];
+    xi = std::clamp(xi, bound_or(qp.lower, i, -kInf), bound_or(qp.upper, i, kInf));
+  }
+  return x;
+}
+
+class QpTnlp final : public Ipopt::TNLP {
+ public:
+  /// `hessian` is the dense Q for the exact Hessian, or empty for limited memory.
+  QpTnlp(const QuadraticProgram& qp, const SolveOptions& options, const Eigen::MatrixXd& hessian)
+      : qp_(qp), options_(options), n_(qp.n()), n_eq_(static_cast<Index>(qp.equalities.size())),
+        n_disk_(static_cast<Index>(qp.disks.size())), start_(starting_point(qp)) {
+    for (Index k = 0; k < n_eq_; ++k) {
+      const auto& a = qp.equalities[static_cast<std::size_t>(k)].a;
+      for (Index j = 0; j < n_; ++j)
+        if (a[static_cast<std::size_t>(j)] != 0.0) eq_nonzeros_.push_back({k, j});
+    }
+    if (hessian.size() > 0) {
+      // Lower triangle of Q, structural zeros dropped but every diagonal kept (disk terms).
+      diag_index_.assign(static_cast<std::size_t>(n_), -1);
+      for (Index i = 0; i < n_; ++i)
+        for (Index j = 0; j <= i; ++j) {
+          const double v = 0.5 * (hessian(i, j) + hessian(j, i));
+          if (v == 0.0 && i != j) continue;
+          if (i == j) diag_index_[static_cast<std::size_t>(i)] = static_cast<Index>(h_rows_.size());
+          h_rows_.push_back(i);
+          h_cols_.push_back(j);
+          h_values_.push_back(v);
+        }
+    }
+    x_ = start_;
+    multipliers_.assign(static_cast<std::size_t>(n_eq_), 0.0);
+  }
+
+  bool get_nlp_info(Index& n, Index& m, Index& nnz_jac_g, Index& nnz_h_lag,
+                    IndexStyleEnum& index_style) override {
+    n = n_;
+    m = n_eq_ + n_disk_;
+    nnz_jac_g = static_cast<Index>(eq_nonzeros_.size()) + 2 * n_disk_;
+    nnz_h_lag = static_cast<Index>(h_rows_.size());
+    index_style = C_STYLE;
+    return true;
+  }
+
+  bool get_bounds_info(Index n, Number* x_l, Number* x_u, Index, Number* g_l, Number* g_u) override {
+    for (Index i = 0; i < n; ++i) {
+      x_l[i] = std::max(bound_or(qp_.lower, i, -kInf), -kIpoptInf);
+      x_u[i] = std::min(bound_or(qp_.upper, i, kInf), kIpoptInf);
+    }
+    for (Index k = 0; k < n_eq_; ++k) g_l[k] = g_u[k] = qp_.equalities[static_cast<std::size_t>(k)].b;
+    for (Index d = 0; d < n_disk_; ++d) {
+      const double r = qp_.disks[static_cast<std::size_t>(d)].radius;
+      g_l[n_eq_ + d] = -kIpoptInf;
+      g_u[n_eq_ + d] = r * r;
+    }
+    return true;
+  }
+
+  bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number*, Number*, Index,
+                          bool init_lambda, Number*) override {
+    if (init_z || init_lambda) return false;  // no warm start of multipliers
+    if (init_x) std::copy(start_.begin(), start_.begin() + n, x);
+    return true;
+  }
+
+  bool eval_f(Index n, const Number* x, bool, Number& obj_value) override {
+    evaluate(n, x);
+    obj_value = f_;
+    return true;
+  }
+
+  bool eval_grad_f(Index n, const Number* x, bool, Number* grad_f) override {
+    evaluate(n, x);
+    std::copy(g_.begin(), g_.end(), grad_f);
+    return true;
+  }
+
+  bool eval_g(Index, const Number* x, bool, Index, Number* g) override {
+    for (Index k = 0; k < n_eq_; ++k) g[k] = 0.0;
+    for (const auto& [k, j] : eq_nonzeros_)
+      g[k] += qp_.equalities[static_cast<std::size_t>(k)].a[static_cast<std::size_t>(j)] * x[j];
+    for (Index d = 0; d < n_disk_; ++d) {
+      const auto& disk = qp_.disks[static_cast<std::size_t>(d)];
+      g[n_eq_ + d] = x[disk.ix] * x[disk.ix] + x[disk.iy] * x[disk.iy];
+    }
+    return true;
+  }
+
+  bool eval_jac_g(Index, const Number* x, bool, Index, Index, Index* i_row, Index* j_col,
+                  Number* values) override {
+    Index e = 0;
+    if (values == nullptr) {
+      const auto put = [&](Index row, Index col) {
+        i_row[e] = row;
+        j_col[e++] = col;
+      };
+      for (const auto& [k, j] : eq_nonzeros_) put(k, j);
+      for (Index d = 0; d < n_disk_; ++d) {
+        const auto& disk = qp_.disks[static_cast<std::size_t>(d)];
+        put(n_eq_ + d, disk.ix);
+        put(n_eq_ + d, disk.iy);
+      }
+      return true;
+    }
+    for (const auto& [k, j] : eq_nonzeros_)
+      values[e++] = qp_.equalities[static_cast<std::size_t>(k)].a[static_cast<std::size_t>(j)];
+    for (Index d = 0; d < n_disk_; ++d) {  // grad (x_ix^2 + x_iy^2) = 2 (x_ix, x_iy)
+      const auto& disk = qp_.disks[static_cast<std::size_t>(d)];
+      values[e++] = 2.0 * x[disk.ix];
+      values[e++] = 2.0 * x[disk.iy];
+    }
+    return true;
+  }
+
+  /// Hessian of the Lagrangian: sigma Q + sum_d 2 lambda_d (e_ix e_ix' + e_iy e_iy').
+  bool eval_h(Index, const Number*, bool, Number obj_factor, Index, const Number* lambda, bool,
+              Index, Index* i_row, Index* j_col, Number* values) override {
+    if (h_rows_.empty()) return false;  // limited-memory mode never asks
+    if (values == nullptr) {
+      std::copy(h_rows_.begin(), h_rows_.end(), i_row);
+      std::copy(h_cols_.begin(), h_cols_.end(), j_col);
+      return true;
+    }
+    for (std::size_t e = 0; e < h_values_.size(); ++e) values[e] = obj_factor * h_values_[e];
+    for (Index d = 0; d < n_disk_; ++d) {
+      const auto& disk = qp_.disks[static_cast<std::size_t>(d)];
+      values[diag_index_[static_cast<std::size_t>(disk.ix)]] += 2.0 * lambda[n_eq_ + d];
+      values[diag_index_[static_cast<std::size_t>(disk.iy)]] += 2.0 * lambda[n_eq_ + d];
+    }
+    return true;
+  }
+
+  void finalize_solution(Ipopt::SolverReturn, Index n, const Number* x, const Number*, const Number*,
+                         Index, const Number*, const Number* lambda, Number,
+                         const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+    x_.assign(x, x + n);
+    for (Index k = 0; k < n_eq_; ++k) multipliers_[static_cast<std::size_t>(k)] = -lambda[k];
+    finalized_ = true;
+  }
+
+  bool intermediate_callback(Ipopt::AlgorithmMode, Index iter, Number obj_value, Number inf_pr,
+                             Number, Number, Number, Number, Number, Number, Index,
+                             const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+    iterations_ = std::max(iterations_, static_cast<int>(iter));
+    if (options_.progress) options_.progress(ProgressInfo{static_cast<int>(iter), obj_value, inf_pr});
+    return true;
+  }
+
+  std::vector<double> x_, multipliers_;
+  int iterations_ = 0;
+  bool finalized_ = false;
+
+ private:
+  /// f and g = Qx + c at x: one operator apply, cached for the next call at the same x.
+  void evaluate(Index n, const Number* x) {
+    if (have_cache_ && std::equal(x, x + n, cached_x_.begin())) return;
+    cached_x_.assign(x, x + n);
+    g_.resize(static_cast<std::size_t>(n));
+    f_ = qp_.gradient(x, g_.data());
+    have_cache_ = true;
+  }
+
+  struct Nonzero {
+    Index row, col;
+  };
+
+  const QuadraticProgram& qp_;
+  const SolveOptions& options_;
+  Index n_, n_eq_, n_disk_;
+  std::vector<double> start_;
+  std::vector<Nonzero> eq_nonzeros_;
+  std::vector<Index> h_rows_, h_cols_, diag_index_;
+  std::vector<double> h_values_;
+  std::vector<double> cached_x_, g_;
+  double f_ = 0.0;
+  bool have_cache_ = false;
+};
+
+bool use_exact_hessian(const QuadraticProgram& qp, const SolveOptions& options) {
+  if (options.hessian == "exact") return true;
+  if (options.hessian == "limited-memory") return false;
+  return qp.n() <= options.exact_hessian_limit;
+}
+
+/// Why the program is malformed (sizes, indices, missing operator), or empty when it is fine.
+std::string invalid_reason(const QuadraticProgram& qp) {
+  const auto n = static_cast<std::size_t>(qp.n());
+  if (qp.Q == nullptr) return "no operator Q";
+  if (qp.Q->rows() != n || qp.Q->cols() != n) return "Q does not match c in size";
+  if ((!qp.lower.empty() && qp.lower.size() != n) || (!qp.upper.empty() && qp.upper.size() != n))
+    return "bounds do not match c in size";
+  for (const auto& eq : qp.equalities)
+    if (eq.a.size() != n) return "an equality row does not match c in size";
+  for (const auto& d : qp.disks)
+    if (d.ix < 0 || d.iy < 0 || static_cast<std::size_t>(d.ix) >= n || static_cast<std::size_t>(d.iy) >= n ||
+        d.ix == d.iy)
+      return "a disk has bad indices";
+  return {};
+}
+
+}  // namespace
+
+SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& options) {
+  SolveOutcome out;
+  if (const std::string why = invalid_reason(qp); !why.empty()) {
+    out.message = "Ipopt: invalid program: " + why;
+    return out;
+  }
+  out.x = starting_point(qp);
+  out.equality_multipliers.assign(qp.equalities.size(), 0.0);
+  if (qp.n() == 0) {
+    out.success = true;
+    out.message = "Ipopt: empty program";
+    return out;
+  }
+  try {
+    if (options.hessian != "auto" && options.hessian != "exact" && options.hessian != "limited-memory") {
+      out.message = "Ipopt: unknown hessian option '" + options.hessian + "'";
+      return out;
+    }
+    const bool exact = use_exact_hessian(qp, options);
+    const bool disks = !qp.disks.empty();
+    const Eigen::MatrixXd dense_q = exact ? qp.Q->to_dense() : Eigen::MatrixXd();
+
+    Ipopt::SmartPtr<QpTnlp> tnlp = new QpTnlp(qp, options, dense_q);
+    Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
+    auto opts = app->Options();
+    bool ok = true;
+    ok &= opts->SetNumericValue("tol", options.tol);
+    ok &= opts->SetIntegerValue("max_iter", options.max_iter);
+    ok &= opts->SetIntegerValue("print_level", options.verbose ? 5 : 0);
+    ok &= opts->SetStringValue("sb", "yes");
+    ok &= opts->SetStringValue("mu_strategy", "adaptive");
+    ok &= opts->SetStringValue("jac_c_constant", "yes");
+    ok &= opts->SetStringValue("jac_d_constant", disks ? "no" : "yes");
+    ok &= opts->SetStringValue("hessian_approximation", exact ? "exact" : "limited-memory");
+    ok &= opts->SetStringValue("hessian_constant", exact && !disks ? "yes" : "no");
+    if (!ok) {
+      out.message = "Ipopt: an option was rejected";
+      return out;
+    }
+    // Initialize("") skips reading an ipopt.opt that may lie in the working directory.
+    Ipopt::ApplicationReturnStatus status = app->Initialize("");
+    if (status == Ipopt::Solve_Succeeded) status = app->OptimizeTNLP(Ipopt::GetRawPtr(tnlp));
+
+    out.success = status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;
+    out.message = std::string("Ipopt: ") + status_name(status);
+    out.iterations = tnlp->iterations_;
+    if (tnlp->finalized_) {
+      out.x = tnlp->x_;
+      out.equality_multipliers = tnlp->multipliers_;
+    } else {
+      out.success = false;
+    }
+    // Ipopt's own value is taken before x is moved back inside the (relaxed) bounds.
+    out.objective = qp.objective(out.x.data());
+  } catch (const Ipopt::IpoptException& e) {
+    out.success = false;
+    out.message = "Ipopt exception: " + e.Message();
+  } catch (const std::exception& e) {
+    out.success = false;
+    out.message = std::string("Ipopt backend error: ") + e.what();
+  }
+  return out;
+}
+
+}  // namespace dc
