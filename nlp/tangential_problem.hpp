@@ -1,0 +1,113 @@
+#pragma once
+// The tangential problem (3.25)/(4.8) on top of the normal problem (4.7), with the outer
+// loops for dissimilar materials (4.26)-(4.27) and pressure-dependent friction (3.31)-(3.32).
+//
+// Unknown tau (traction on the body, (2.1)) per element, |tau| <= f(p). Over one step the slip
+// increment is ds = W + C_t tau ((3.8), (4.4)) with
+//   W = rigid slip + kappa B21(p) - (relative tangential displacement of the previous step,
+//       taken at the upstream material point when rolling),
+// and tau minimises 1/2 tau'C_t tau + W'tau (KKT = friction law (2.4)-(2.5)).
+// The rigid slip has three modes: x and y translation and rotation about z through the grid
+// origin: s_rigid(x, y) = (a_x - a_z y, a_y + a_z x). Each mode is controlled either by its
+// amplitude or by its resultant (F_x, F_y, M_z = sum (x tau_y - y tau_x) A); a prescribed
+// resultant becomes an equality row and the amplitude its multiplier.
+//
+// Sign convention: tau and the reported forces are tractions ON THE BODY (tau+ of the paper);
+// under a rigid shift of the body in +x the force is negative. Kalker's F_x = -G c^2 C11 xi.
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "case_model.hpp"
+#include "friction_law.hpp"
+#include "linear_operator.hpp"
+#include "normal_problem.hpp"
+#include "solver_report.hpp"
+
+namespace dc {
+
+enum class TangentialRegime { shift, torsion, rolling };
+
+/// Control of one rigid mode (x, y, rotation z): amplitude or resultant.
+struct ModeControl {
+  enum class Kind { amplitude, resultant } kind = Kind::amplitude;
+  double value = 0.0;
+};
+
+/// One quasi-static load step (shift / torsion): the normal load and the rigid modes.
+/// Amplitudes are TOTAL rigid displacements (m, m, rad) since the unloaded state.
+struct TangentialLoad {
+  NormalSpec normal;
+  std::array<ModeControl, 3> modes{};  ///< x shift (m) | F_x (N); y shift | F_y; angle (rad) | M_z (N m)
+};
+
+/// Steady rolling: creepages (rigid slip velocity / V) and spin (1/m), or resultants.
+struct RollingLoad {
+  NormalSpec normal;
+  std::array<ModeControl, 3> modes{};  ///< cx (-) | F_x; cy (-) | F_y; spin phi (1/m) | M_z
+  double velocity = 1.0;               ///< rolling speed V (m/s), along +x
+  int max_steps = 0;                   ///< marching steps; 0: 4 * nx
+};
+
+struct OuterLoopReport {
+  int iterations = 0;      ///< outer (p, tau) iterations
+  double last_change = 0;  ///< relative change of (p, tau) in the last iteration
+  bool converged = true;
+};
+
+struct TangentialSolution {
+  NormalSolution normal;             ///< pressure, gap, approach, force and its report
+  std::vector<double> tx, ty;        ///< tau (Pa), per element (2-D: ty = 0)
+  std::vector<double> sx, sy;        ///< slip increment ds of the step (m) (rolling: per dx of travel)
+  std::vector<double> bound;         ///< f(p) (Pa)
+  std::vector<int> state;            ///< 0 free, 1 stick, 2 slip
+  std::array<double, 3> amplitudes{};  ///< rigid modes (given or solved): shift x, y (m), angle (rad);
+                                       ///< rolling: creepage x, y (-), spin (1/m)
+  std::array<double, 3> resultants{};  ///< F_x, F_y (N; 2-D N/m), M_z (N m)
+  int n_stick = 0, n_slip = 0;
+  double stick_area = 0.0;           ///< m^2 (2-D: stick length, m)
+  SolverReport report;               ///< the tangential solve; certificate has all residuals
+  OuterLoopReport outer;             ///< (4.26)-(4.27) / (3.31)-(3.32)
+  int marching_steps = 0;            ///< rolling: steps to steady state
+};
+
+/// Set up once (operators, plans), then step: the state (previous relative displacement)
+/// is kept between steps, so a sequence of loads is a loading history with memory.
+class TangentialProblem {
+ public:
+  TangentialProblem(const Grid& grid, const MaterialPair& materials, std::vector<double> heights,
+                    FrictionLaw friction, OperatorKind kind = OperatorKind::automatic);
+
+  /// One quasi-static step (shift/torsion/loading history).
+  TangentialSolution step(const TangentialLoad& load, const SolverSpec& solver,
+                          const ProgressCallback& progress = {});
+  /// Steady rolling by marching in time (dt = dx / V) until the traction stops changing;
+  /// proven by the gap function (4.24) of the steady slip.
+  TangentialSolution steady_rolling(const RollingLoad& load, const SolverSpec& solver,
+                                    const ProgressCallback& progress = {});
+  /// Forget the loading history (back to the unloaded state).
+  void reset();
+
+  const Grid& grid() const { return grid_; }
+  /// Certificate of a traction field for given slip increments and bounds (for tests).
+  static Certificate certify_friction(const Grid& grid, const std::vector<double>& tx,
+                                      const std::vector<double>& ty, const std::vector<double>& sx,
+                                      const std::vector<double>& sy, const std::vector<double>& bound,
+                                      double slip_scale);
+
+ private:
+  struct Impl;
+  std::shared_ptr<Impl> impl_;
+  Grid grid_;
+};
+
+/// The whole tangential case (CASES.md "tangential"): one solution, or one per history step.
+std::vector<TangentialSolution> solve_tangential_case(const Case& c, const ProgressCallback& progress = {});
+
+/// The native tangential solver (cone-projected accelerated gradient on the FFT operator):
+/// min 1/2 x'Qx + c'x over disks (3-D) or boxes (2-D), with up to three equality rows.
+SolveOutcome solve_tangential_native(const QuadraticProgram& qp, const SolveOptions& options);
+
+}  // namespace dc
