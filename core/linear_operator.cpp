@@ -235,6 +235,40 @@ std::unique_ptr<LinearOperator> HalfSpace::tangential_from_normal(OperatorKind k
   return make_convolution_operator(grid_, std::move(blocks), tangential_components(), 1, kind);
 }
 
+namespace {
+/// Table of the same kernel with every offset moved by `shift` along x: at(di, dj) = K(di + shift, dj).
+KernelTable shifted_table(const Grid& grid, const MaterialPair& m, Axis out, Axis in, int shift,
+                          const InfluenceOptions& options) {
+  Grid wide = grid;
+  wide.nx = grid.nx + std::abs(shift);
+  InfluenceOptions o = options;
+  if (grid.dimension == 2 && o.reference_length <= 0.0) o.reference_length = grid.nx * grid.dx;
+  const KernelTable big = influence_table(wide, m, out, in, o);
+  KernelTable t;
+  t.nx = grid.nx;
+  t.ny = grid.ny;
+  t.values.assign(static_cast<std::size_t>(2 * grid.nx - 1) * static_cast<std::size_t>(2 * grid.ny - 1), 0.0);
+  for (int dj = -(grid.ny - 1); dj <= grid.ny - 1; ++dj)
+    for (int di = -(grid.nx - 1); di <= grid.nx - 1; ++di) t.at(di, dj) = big.at(di + shift, dj);
+  return t;
+}
+}  // namespace
+
+std::unique_ptr<LinearOperator> HalfSpace::tangential_shifted(int shift, OperatorKind kind) const {
+  std::vector<KernelTable> blocks;
+  const std::vector<Axis> axes = grid_.dimension == 2 ? std::vector<Axis>{kX} : std::vector<Axis>{kX, kY};
+  for (Axis out : axes)
+    for (Axis in : axes) blocks.push_back(shifted_table(grid_, materials_, out, in, shift, options_));
+  const int m = static_cast<int>(axes.size());
+  return make_convolution_operator(grid_, std::move(blocks), m, m, kind);
+}
+
+std::unique_ptr<LinearOperator> HalfSpace::tangential_from_normal_shifted(int shift, OperatorKind kind) const {
+  std::vector<KernelTable> blocks{shifted_table(grid_, materials_, kX, kZ, shift, options_)};
+  if (grid_.dimension == 3) blocks.push_back(shifted_table(grid_, materials_, kY, kZ, shift, options_));
+  return make_convolution_operator(grid_, std::move(blocks), tangential_components(), 1, kind);
+}
+
 std::unique_ptr<LinearOperator> HalfSpace::normal_from_tangential(OperatorKind kind) const {
   std::vector<KernelTable> blocks{influence_table(grid_, materials_, kZ, kX, options_)};
   if (grid_.dimension == 3) blocks.push_back(influence_table(grid_, materials_, kZ, kY, options_));

@@ -56,6 +56,12 @@ class HalfSpace {
   std::unique_ptr<LinearOperator> tangential(OperatorKind kind = OperatorKind::automatic) const;
   std::unique_ptr<LinearOperator> tangential_from_normal(OperatorKind kind = OperatorKind::automatic) const;
   std::unique_ptr<LinearOperator> normal_from_tangential(OperatorKind kind = OperatorKind::automatic) const;
+  /// The same tangential compliances evaluated `shift` elements downstream along x:
+  /// row i gives w at the centre of element i + shift (the convective term of (3.8): the
+  /// previous displacement of the material point now at i). Exact also beyond the grid edge.
+  std::unique_ptr<LinearOperator> tangential_shifted(int shift, OperatorKind kind = OperatorKind::automatic) const;
+  std::unique_ptr<LinearOperator> tangential_from_normal_shifted(int shift,
+                                                                 OperatorKind kind = OperatorKind::automatic) const;
   int tangential_components() const { return grid_.dimension == 2 ? 1 : 2; }
 
  private:

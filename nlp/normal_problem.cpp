@@ -9,6 +9,7 @@
 #include "backend_choice.hpp"
 #include "errors.hpp"
 #include "native_solvers.hpp"
+#include "scaled_operator.hpp"
 
 namespace dc {
 namespace {
@@ -20,23 +21,6 @@ struct ScaledNormalProgram {
   QuadraticProgram qp;
 };
 
-class ScaledOperator final : public LinearOperator {
- public:
-  ScaledOperator(const LinearOperator& op, double scale) : op_(op), scale_(scale) {}
-  std::size_t rows() const override { return op_.rows(); }
-  std::size_t cols() const override { return op_.cols(); }
-  void apply(const double* x, double* y) const override {
-    op_.apply(x, y);
-    for (std::size_t i = 0; i < op_.rows(); ++i) y[i] *= scale_;
-  }
-  double diagonal(std::size_t i) const override { return scale_ * op_.diagonal(i); }
-  Eigen::MatrixXd to_dense(std::size_t max_entries) const override { return scale_ * op_.to_dense(max_entries); }
-  std::string kind() const override { return op_.kind(); }
-
- private:
-  const LinearOperator& op_;
-  double scale_;
-};
 
 }  // namespace
 

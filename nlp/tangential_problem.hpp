@@ -14,6 +14,8 @@
 //
 // Sign convention: tau and the reported forces are tractions ON THE BODY (tau+ of the paper);
 // under a rigid shift of the body in +x the force is negative. Kalker's F_x = -G c^2 C11 xi.
+// The paper's gap function (4.8)/(4.24) is written for the substrate's traction tau- = -tau+:
+// g = sum [f(p)|ds| + tau+ . ds] A >= 0, = 0 exactly at the solution (4.25).
 #include <array>
 #include <memory>
 #include <optional>

@@ -1,0 +1,455 @@
+#include "tangential_problem.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <optional>
+#include <stdexcept>
+
+#include "backend_choice.hpp"
+#include "errors.hpp"
+#include "scaled_operator.hpp"
+
+namespace dc {
+namespace {
+
+double max_abs(const std::vector<double>& v) {
+  double m = 0.0;
+  for (double x : v) m = std::max(m, std::abs(x));
+  return m;
+}
+
+/// Relative change between two fields (0 when both vanish).
+double relative_change(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size()) return 1.0;
+  double d = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
+  const double s = std::max(max_abs(a), max_abs(b));
+  return s > 0.0 ? d / s : 0.0;
+}
+
+}  // namespace
+
+/// Operators, plans and the loading history of one grid and material pair.
+struct TangentialProblem::Impl {
+  Grid grid;
+  MaterialPair materials;
+  FrictionLaw friction;
+  OperatorKind kind;
+  HalfSpace half_space;
+  int comps;                         // tangential components: 1 (2-D) or 2 (3-D)
+  std::size_t N;
+  bool coupled;                      // kappa != 0: normal and tangential interact (4.26)-(4.27)
+  std::shared_ptr<const LinearOperator> C;   // B31
+  std::unique_ptr<LinearOperator> Ct;        // B22
+  std::unique_ptr<LinearOperator> B21, B32;  // kappa terms (only when coupled)
+  std::unique_ptr<LinearOperator> Ct_up, B21_up;  // rolling: upstream displacement
+  std::unique_ptr<NormalProblem> normal;
+  std::vector<double> heights;
+
+  // Loading history: the state at the end of the last step.
+  std::vector<double> tau_prev, p_prev;      // comps*N, N
+  std::array<double, 3> amplitude_prev{};
+  std::vector<double> tau_warm;              // warm start of the tangential program
+
+  Impl(const Grid& g, const MaterialPair& m, std::vector<double> h, FrictionLaw f, OperatorKind k)
+      : grid(g), materials(m), friction(std::move(f)), kind(k), half_space(g, m),
+        comps(g.dimension == 2 ? 1 : 2), N(g.size()), coupled(m.kappa() != 0.0),
+        heights(std::move(h)) {
+    C = half_space.normal(kind);
+    Ct = half_space.tangential(kind);
+    if (coupled) {
+      B21 = half_space.tangential_from_normal(kind);
+      B32 = half_space.normal_from_tangential(kind);
+    }
+    normal = std::make_unique<NormalProblem>(C, grid, heights);
+    reset();
+  }
+
+  void reset() {
+    tau_prev.assign(comps * N, 0.0);
+    p_prev.assign(N, 0.0);
+    amplitude_prev = {0.0, 0.0, 0.0};
+    tau_warm.clear();
+  }
+
+  /// Rigid-slip mode k at element e, component c: x, y translation, rotation about z.
+  double mode(int k, std::size_t e, int c) const {
+    const int i = static_cast<int>(e % grid.nx), j = static_cast<int>(e / grid.nx);
+    if (k == 0) return c == 0 ? 1.0 : 0.0;
+    if (k == 1) return c == 1 ? 1.0 : 0.0;
+    return c == 0 ? -grid.yc(j) : grid.xc(i);
+  }
+  int n_modes() const { return grid.dimension == 2 ? 1 : 3; }
+
+  /// Relative tangential displacement of (p, tau): kappa B21 p + B22 tau (4.2).
+  void displacement(const std::vector<double>& p, const std::vector<double>& tau, std::vector<double>& u,
+                    const LinearOperator& ct, const LinearOperator* b21) const {
+    ct.apply(tau, u);
+    if (coupled && b21) {
+      std::vector<double> w;
+      b21->apply(p, w);
+      for (std::size_t i = 0; i < u.size(); ++i) u[i] += w[i];
+    }
+  }
+
+  // The last normal solution and what it was solved for: rolling and histories with kappa = 0
+  // ask for the same pressure at every step.
+  std::optional<NormalSolution> normal_cache;
+  std::vector<double> normal_cache_heights;
+  NormalSpec normal_cache_load;
+
+  NormalSolution solve_normal(std::vector<double> h, const NormalSpec& load, const SolverSpec& solver) {
+    if (normal_cache && normal_cache_load.control == load.control && normal_cache_load.value == load.value &&
+        normal_cache_heights == h)
+      return *normal_cache;
+    normal->set_heights(h);
+    NormalSolution s = normal->solve(load, solver);
+    normal_cache = s;
+    normal_cache_heights = std::move(h);
+    normal_cache_load = load;
+    return s;
+  }
+
+  struct InnerResult {
+    std::vector<double> tau;
+    std::array<double, 3> increment{};  // rigid-mode increments of the step (given or solved)
+    SolverReport report;
+  };
+
+  /// The convex program of one step: min 1/2 tau'Ct tau + W'tau over |tau| <= f, with the
+  /// resultant-controlled modes as equality rows; W excludes the resultant-controlled modes.
+  InnerResult solve_tangential(const std::vector<double>& W, const std::vector<double>& f,
+                               const std::array<ModeControl, 3>& modes, const std::array<double, 3>& given_increment,
+                               const SolverSpec& solver, const ProgressCallback& progress) {
+    const double A = grid.area();
+    const double ct0 = Ct->diagonal(0);
+    const double f_ref = std::max(max_abs(f), 1e-300);
+    const std::size_t n = comps * N;
+    ScaledOperator Q(*Ct, 1.0 / ct0);
+    QuadraticProgram qp;
+    qp.Q = &Q;
+    qp.c.resize(n);
+    qp.lower.assign(n, -kInf);
+    qp.upper.assign(n, kInf);
+    for (std::size_t e = 0; e < N; ++e) {
+      for (int c = 0; c < comps; ++c) {
+        double w = W[c * N + e];
+        for (int k = 0; k < n_modes(); ++k)
+          if (modes[k].kind == ModeControl::Kind::amplitude) w += given_increment[k] * mode(k, e, c);
+        qp.c[c * N + e] = w / (ct0 * f_ref);
+      }
+      const double r = f[e] / f_ref;
+      if (r <= 0.0) {
+        for (int c = 0; c < comps; ++c) qp.lower[c * N + e] = qp.upper[c * N + e] = 0.0;
+      } else if (comps == 1) {
+        qp.lower[e] = -r;
+        qp.upper[e] = r;
+      } else {
+        qp.disks.push_back({static_cast<int>(e), static_cast<int>(N + e), r});
+      }
+    }
+    std::vector<int> row_mode;
+    std::vector<double> row_scale;
+    for (int k = 0; k < n_modes(); ++k) {
+      if (modes[k].kind != ModeControl::Kind::resultant) continue;
+      // Row sum_e mode_k . tau A = R_k, scaled by the largest resultant friction can carry.
+      double capacity = 0.0;
+      for (std::size_t e = 0; e < N; ++e) {
+        double m2 = 0.0;
+        for (int c = 0; c < comps; ++c) m2 += mode(k, e, c) * mode(k, e, c);
+        capacity += f[e] * std::sqrt(m2) * A;
+      }
+      if (!(capacity > 0.0)) throw InputError("tangential", "no friction can be transmitted: the contact carries no load");
+      if (std::abs(modes[k].value) >= capacity * (1.0 - 1e-12)) {
+        static const char* names[] = {"tangential.force[0]", "tangential.force[1]", "tangential.moment"};
+        throw InputError(names[k], "the prescribed resultant " + std::to_string(modes[k].value) +
+                                       " reaches the friction limit " + std::to_string(capacity) +
+                                       ": gross sliding, no quasi-static solution");
+      }
+      LinearEquality eq;
+      eq.a.assign(n, 0.0);
+      for (std::size_t e = 0; e < N; ++e)
+        for (int c = 0; c < comps; ++c) eq.a[c * N + e] = mode(k, e, c) * A * f_ref / capacity;
+      eq.b = modes[k].value / capacity;
+      qp.equalities.push_back(std::move(eq));
+      row_mode.push_back(k);
+      row_scale.push_back(capacity);
+    }
+    if (tau_warm.size() == n) {
+      qp.x0.resize(n);
+      for (std::size_t i = 0; i < n; ++i) qp.x0[i] = tau_warm[i] / f_ref;
+    }
+    SolveOptions options;
+    options.tol = solver.tol;
+    options.max_iter = solver.max_iter;
+    options.hessian = solver.hessian;
+    options.progress = progress;
+
+    InnerResult best;
+    best.report.requested = solver.backend;
+    best.report.operator_kind = Ct->kind();
+    std::string attempts;
+    const auto order = backend_order(solver.backend, n, solver.fallback);
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      const auto start = std::chrono::steady_clock::now();
+      SolveOutcome out;
+      try {
+        if (order[k] == "native") out = solve_tangential_native(qp, options);
+        else if (order[k] == "ipopt") out = solve_with_ipopt(qp, options);
+        else out = solve_with_nlopt(qp, options);
+      } catch (const std::exception& e) {
+        out = SolveOutcome{};
+        out.message = std::string("exception: ") + e.what();
+      }
+      SolverReport rep = best.report;
+      rep.backend = order[k];
+      rep.fallback_used = k > 0;
+      rep.message = out.message;
+      rep.iterations = out.iterations;
+      rep.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      rep.objective = out.objective * ct0 * f_ref * f_ref * A;
+      rep.status = out.x.size() == n ? (out.success ? SolveStatus::converged : SolveStatus::not_converged)
+                                     : SolveStatus::failed;
+      attempts += (attempts.empty() ? "" : "; ") + order[k] + ": " + to_string(rep.status);
+      if (rep.status == SolveStatus::failed && !best.tau.empty()) continue;
+      best.report = rep;
+      best.tau.assign(n, 0.0);
+      if (out.x.size() == n) {
+        for (std::size_t i = 0; i < n; ++i) best.tau[i] = out.x[i] * f_ref;
+        // Project onto the friction set (interior-point iterates may sit a hair outside).
+        for (std::size_t e = 0; e < N; ++e) {
+          double m2 = 0.0;
+          for (int c = 0; c < comps; ++c) m2 += best.tau[c * N + e] * best.tau[c * N + e];
+          const double mag = std::sqrt(m2);
+          if (mag > f[e])
+            for (int c = 0; c < comps; ++c) best.tau[c * N + e] *= f[e] > 0.0 ? f[e] / mag : 0.0;
+        }
+      }
+      best.increment = given_increment;
+      for (std::size_t r = 0; r < row_mode.size() && r < out.equality_multipliers.size(); ++r)
+        // Stationarity: (Ct tau + W)/(ct0 f_ref) + alpha m/(ct0 f_ref) = lambda a, a = m A f_ref / S
+        best.increment[row_mode[r]] = -out.equality_multipliers[r] * A * f_ref * f_ref * ct0 / row_scale[r];
+      if (rep.status == SolveStatus::converged) break;
+    }
+    if (best.report.fallback_used || best.report.status != SolveStatus::converged)
+      best.report.message += " [tried " + attempts + "]";
+    return best;
+  }
+
+  /// One step with the outer loop (4.26)-(4.27) / (3.31)-(3.32). `upstream` selects the
+  /// convective (rolling) form of the previous displacement; rigid slips are increments.
+  TangentialSolution solve_step(const NormalSpec& normal_load, const std::array<ModeControl, 3>& modes,
+                                const std::array<double, 3>& given_increment, bool upstream,
+                                const SolverSpec& solver, const ProgressCallback& progress) {
+    const std::size_t n = comps * N;
+    const LinearOperator& ct_prev = upstream ? *Ct_up : *Ct;
+    const LinearOperator* b21_prev = upstream ? B21_up.get() : B21.get();
+    std::vector<double> u_prev;
+    displacement(p_prev, tau_prev, u_prev, ct_prev, b21_prev);
+
+    TangentialSolution sol;
+    std::vector<double> tau = tau_warm.size() == n ? tau_warm : std::vector<double>(n, 0.0);
+    std::vector<double> p_old, tau_old, f(N), W(n), w21;
+    // kappa = 0: p does not depend on tau, so f(p) is final after one pass; else iterate.
+    const int max_outer = coupled ? 100 : 1;
+    const double outer_tol = std::max(1e-9, 10.0 * solver.tol);
+    InnerResult inner;
+    for (int m = 1; m <= max_outer; ++m) {
+      // (4.26): the pressure with the gap shifted by kappa B32 tau of the previous iterate.
+      std::vector<double> h = heights;
+      if (coupled) {
+        std::vector<double> wz;
+        B32->apply(tau, wz);
+        for (std::size_t i = 0; i < N; ++i) h[i] += wz[i];
+      }
+      sol.normal = solve_normal(std::move(h), normal_load, solver);
+      if (sol.normal.report.status == SolveStatus::failed)
+        throw std::runtime_error("normal problem failed: " + sol.normal.report.message);
+      const std::vector<double>& p = sol.normal.pressure;
+      // (3.32): the friction bound from this pressure; noise-level pressures carry none.
+      const double p_cut = 1e-9 * max_abs(p);
+      for (std::size_t e = 0; e < N; ++e) f[e] = p[e] > p_cut ? friction.bound(p[e]) : 0.0;
+      // (4.27): W = kappa B21 p - u_prev.
+      for (std::size_t i = 0; i < n; ++i) W[i] = -u_prev[i];
+      if (coupled) {
+        B21->apply(p, w21);
+        for (std::size_t i = 0; i < n; ++i) W[i] += w21[i];
+      }
+      inner = solve_tangential(W, f, modes, given_increment, solver, progress);
+      tau = inner.tau;
+      tau_warm = tau;
+      const double change = std::max(relative_change(p, p_old), relative_change(tau, tau_old));
+      sol.outer.iterations = m;
+      sol.outer.last_change = m == 1 ? 0.0 : change;
+      p_old = p;
+      tau_old = tau;
+      if (max_outer == 1) break;
+      if (m > 1 && change < outer_tol) break;
+      if (m == max_outer) {
+        sol.outer.converged = false;
+        sol.outer.last_change = change;
+      }
+    }
+    // Results: slip increment ds = W + rigid + Ct tau (3.8), certificate, states.
+    sol.tx.assign(N, 0.0);
+    sol.ty.assign(N, 0.0);
+    sol.sx.assign(N, 0.0);
+    sol.sy.assign(N, 0.0);
+    sol.bound = f;
+    sol.state.assign(N, 0);
+    std::vector<double> ctt;
+    Ct->apply(tau, ctt);
+    std::vector<double> ds(n);
+    for (std::size_t e = 0; e < N; ++e)
+      for (int c = 0; c < comps; ++c) {
+        double rigid = 0.0;
+        for (int k = 0; k < n_modes(); ++k) rigid += inner.increment[k] * mode(k, e, c);
+        ds[c * N + e] = W[c * N + e] + rigid + ctt[c * N + e];
+      }
+    for (std::size_t e = 0; e < N; ++e) {
+      sol.tx[e] = tau[e];
+      sol.sx[e] = ds[e];
+      if (comps == 2) {
+        sol.ty[e] = tau[N + e];
+        sol.sy[e] = ds[N + e];
+      }
+    }
+    const double A = grid.area();
+    const double slip_scale = Ct->diagonal(0) * std::max(max_abs(f), 1e-300);
+    for (std::size_t e = 0; e < N; ++e) {
+      if (f[e] <= 0.0) continue;
+      const bool slipping = std::hypot(sol.sx[e], sol.sy[e]) > 1e-5 * slip_scale;
+      sol.state[e] = slipping ? 2 : 1;
+      (slipping ? sol.n_slip : sol.n_stick) += 1;
+      if (!slipping) sol.stick_area += A;
+    }
+    sol.resultants = {0.0, 0.0, 0.0};
+    for (std::size_t e = 0; e < N; ++e)
+      for (int k = 0; k < n_modes(); ++k)
+        for (int c = 0; c < comps; ++c) sol.resultants[k] += mode(k, e, c) * tau[c * N + e] * A;
+    sol.report = inner.report;
+    sol.report.certificate = TangentialProblem::certify_friction(grid, sol.tx, sol.ty, sol.sx, sol.sy, f, slip_scale);
+    // The normal part of the certificate comes from the normal solve of the last iterate.
+    sol.report.certificate.complementarity = sol.normal.report.certificate.complementarity;
+    sol.report.certificate.gap_violation = sol.normal.report.certificate.gap_violation;
+    sol.report.certificate.pressure_violation = sol.normal.report.certificate.pressure_violation;
+    sol.report.certificate.force_residual = sol.normal.report.certificate.force_residual;
+    for (int k = 0; k < 3; ++k)
+      if (modes[k].kind == ModeControl::Kind::resultant && std::abs(modes[k].value) > 0.0)
+        sol.report.certificate.force_residual = std::max(
+            sol.report.certificate.force_residual, std::abs(sol.resultants[k] - modes[k].value) / std::abs(modes[k].value));
+    const bool certified = sol.report.certificate.worst() <= solver.certificate_tol && sol.outer.converged &&
+                           sol.normal.report.status == SolveStatus::converged;
+    if (sol.report.status != SolveStatus::failed)
+      sol.report.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
+    if (!sol.outer.converged)
+      sol.report.message += " [outer loop did not converge: last change " + std::to_string(sol.outer.last_change) + "]";
+    // Remember the state for the next step.
+    tau_prev = tau;
+    p_prev = sol.normal.pressure;
+    sol.amplitudes = inner.increment;
+    return sol;
+  }
+};
+
+TangentialProblem::TangentialProblem(const Grid& grid, const MaterialPair& materials, std::vector<double> heights,
+                                     FrictionLaw friction, OperatorKind kind)
+    : impl_(std::make_shared<Impl>(grid, materials, std::move(heights), std::move(friction), kind)), grid_(grid) {}
+
+void TangentialProblem::reset() { impl_->reset(); }
+
+TangentialSolution TangentialProblem::step(const TangentialLoad& load, const SolverSpec& solver,
+                                           const ProgressCallback& progress) {
+  Impl& s = *impl_;
+  if (s.grid.dimension == 2)
+    for (int k = 1; k < 3; ++k)
+      if (load.modes[k].value != 0.0)
+        throw InputError("tangential", "a 2-D problem has no y shift and no rotation about z");
+  std::array<double, 3> increment{};
+  for (int k = 0; k < 3; ++k)
+    if (load.modes[k].kind == ModeControl::Kind::amplitude) increment[k] = load.modes[k].value - s.amplitude_prev[k];
+  TangentialSolution sol = s.solve_step(load.normal, load.modes, increment, false, solver, progress);
+  for (int k = 0; k < 3; ++k) sol.amplitudes[k] += s.amplitude_prev[k];
+  s.amplitude_prev = sol.amplitudes;
+  return sol;
+}
+
+TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, const SolverSpec& solver,
+                                                     const ProgressCallback& progress) {
+  Impl& s = *impl_;
+  if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
+  // Rolling in +x: the material now at x was at x + dx one step (dt = dx / V) earlier.
+  if (!s.Ct_up) {
+    s.Ct_up = s.half_space.tangential_shifted(1, s.kind);
+    if (s.coupled) s.B21_up = s.half_space.tangential_from_normal_shifted(1, s.kind);
+  }
+  s.reset();
+  // Per step the rigid slip is v dt = dx (creepage - phi y, eta + phi x): increments dx * mode.
+  std::array<ModeControl, 3> modes = load.modes;
+  std::array<double, 3> increment{};
+  for (int k = 0; k < 3; ++k) {
+    if (modes[k].kind == ModeControl::Kind::amplitude) increment[k] = s.grid.dx * modes[k].value;
+  }
+  const int max_steps = load.max_steps > 0 ? load.max_steps : 4 * s.grid.nx;
+  const double steady_tol = std::max(1e-9, 10.0 * solver.tol);
+  TangentialSolution sol;
+  std::vector<double> tau_last;
+  int steps = 0;
+  bool steady = false;
+  for (steps = 1; steps <= max_steps; ++steps) {
+    sol = s.solve_step(load.normal, modes, increment, true, solver, {});
+    std::vector<double> tau(sol.tx);
+    if (s.comps == 2) tau.insert(tau.end(), sol.ty.begin(), sol.ty.end());
+    const double change = relative_change(tau, tau_last);
+    tau_last = std::move(tau);
+    if (progress) progress({steps, 0.0, change});
+    if (steps > 2 && change < steady_tol) {
+      steady = true;
+      break;
+    }
+    if (sol.report.status == SolveStatus::failed) break;
+  }
+  sol.marching_steps = std::min(steps, max_steps);
+  // Amplitudes as creepages / spin (per unit rolling distance).
+  for (int k = 0; k < 3; ++k) sol.amplitudes[k] /= s.grid.dx;
+  if (!steady && sol.report.status == SolveStatus::converged) {
+    sol.report.status = SolveStatus::not_converged;
+    sol.report.message += " [rolling did not reach a steady state in " + std::to_string(max_steps) + " steps]";
+  }
+  return sol;
+}
+
+Certificate TangentialProblem::certify_friction(const Grid& grid, const std::vector<double>& tx,
+                                                const std::vector<double>& ty, const std::vector<double>& sx,
+                                                const std::vector<double>& sy, const std::vector<double>& bound,
+                                                double slip_scale) {
+  Certificate cert;
+  const double A = grid.area();
+  const double f_max = std::max(max_abs(bound), 1e-300);
+  const double c_t = slip_scale / f_max;  // slip per unit traction of one element
+  double law = 0.0, numerator = 0.0, denominator = 0.0;
+  for (std::size_t e = 0; e < bound.size(); ++e) {
+    const double f = bound[e];
+    // (2.4)-(2.5) as a fixed point: tau = proj_{|t| <= f}(tau - ds / c_t).
+    double zx = tx[e] - sx[e] / c_t, zy = ty[e] - sy[e] / c_t;
+    const double mag = std::hypot(zx, zy);
+    if (mag > f) {
+      zx *= f > 0.0 ? f / mag : 0.0;
+      zy *= f > 0.0 ? f / mag : 0.0;
+    }
+    law = std::max(law, std::hypot(tx[e] - zx, ty[e] - zy));
+    law = std::max(law, std::hypot(tx[e], ty[e]) - f);
+    // (4.24): g = sum [f |ds| - tau- . ds] A, with the paper's tau- = -tau+ on the substrate
+    // ((3.12), (3.25)); it vanishes when tau+ = -f ds/|ds| on slip, ds = 0 on stick.
+    const double slip = std::hypot(sx[e], sy[e]);
+    numerator += (f * slip + (tx[e] * sx[e] + ty[e] * sy[e])) * A;
+    denominator += f * (slip + 1e-5 * slip_scale) * A;
+  }
+  cert.friction_law = law / f_max;
+  cert.gap_function = denominator > 0.0 ? std::abs(numerator) / denominator : 0.0;
+  return cert;
+}
+
+}  // namespace dc
