@@ -50,7 +50,7 @@ struct RollingLoad {
   NormalSpec normal;
   std::array<ModeControl, 3> modes{};  ///< cx (-) | F_x; cy (-) | F_y; spin phi (1/m) | M_z
   double velocity = 1.0;               ///< rolling speed V (m/s), along +x
-  int max_steps = 0;                   ///< marching steps; 0: 4 * nx
+  int max_steps = 0;                   ///< marching steps; 0: 10 * nx
 };
 
 struct OuterLoopReport {
