@@ -1,0 +1,158 @@
+// dyncontact compare CASE.json --backends ipopt,nlopt,native [--out DIR]
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "errors.hpp"
+#include "normal_run.hpp"
+#include "solver_report.hpp"
+#include "summary_writer.hpp"
+
+namespace dc::cli {
+namespace {
+
+struct CompareArgs {
+  std::string case_path, out;
+  std::vector<std::string> backends{"ipopt", "nlopt", "native"};
+  std::vector<std::string> sets;
+  bool quiet = false;
+};
+
+struct Entry {
+  std::string backend;
+  bool ok = false;  ///< produced a result (whatever its status)
+  NormalRun run;
+  std::string error;  ///< what the backend threw, if it did
+};
+
+double relative(double value, double reference) {
+  const double scale = std::abs(reference);
+  return scale > 0.0 ? std::abs(value - reference) / scale : std::abs(value);
+}
+
+double pressure_difference(const std::vector<double>& p, const std::vector<double>& ref) {
+  double scale = 0.0, diff = 0.0;
+  for (double v : ref) scale = std::max(scale, std::abs(v));
+  for (std::size_t i = 0; i < std::min(p.size(), ref.size()); ++i) diff = std::max(diff, std::abs(p[i] - ref[i]));
+  return scale > 0.0 ? diff / scale : diff;
+}
+
+int run_compare(const CompareArgs& args) {
+  if (args.backends.empty()) throw InputError("--backends", "give at least one backend");
+  for (const auto& b : args.backends)
+    if (b != "auto" && b != "ipopt" && b != "nlopt" && b != "native")
+      throw InputError("--backends", "unknown backend '" + b + "' (expected auto, ipopt, nlopt or native)");
+  const Case base = load_case(args.case_path, args.sets);
+  if (base.problem != ProblemKind::normal) not_implemented(base.problem);
+  const std::string dir = prepare_output_dir(base, args.out);
+
+  std::vector<Entry> entries;
+  for (const auto& b : args.backends) {
+    Case c = base;
+    c.solver.backend = b;
+    c.solver.fallback = false;  // compare the backend itself, not its fallbacks
+    c.source["solver"]["backend"] = b;
+    c.source["solver"]["fallback"] = false;
+    Entry e;
+    e.backend = b;
+    try {
+      e.run = run_normal(c, !args.quiet);
+      e.ok = true;
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception& ex) {
+      e.error = ex.what();
+    }
+    entries.push_back(std::move(e));
+  }
+
+  const Entry* first = entries.front().ok ? &entries.front() : nullptr;
+  nlohmann::json list = nlohmann::json::array();
+  bool all_converged = true;
+  std::printf("%-8s %-14s %6s %9s %14s %11s %11s %11s %11s\n", "backend", "status", "iter", "time_s", "objective",
+              "certificate", "d_pressure", "d_approach", "d_force");
+  for (const auto& e : entries) {
+    nlohmann::json item;
+    item["backend"] = e.backend;
+    if (!e.ok) {
+      all_converged = false;
+      item["status"] = "failed";
+      item["message"] = e.error;
+      item["time_s"] = nullptr;
+      item["iterations"] = nullptr;
+      item["objective"] = nullptr;
+      item["certificate"] = nullptr;
+      item["summary"] = nullptr;
+      list.push_back(item);
+      std::printf("%-8s %-14s %s\n", e.backend.c_str(), "failed", e.error.c_str());
+      continue;
+    }
+    const SolverReport& r = e.run.solution.report;
+    all_converged = all_converged && e.run.converged();
+    item["status"] = to_string(r.status);
+    item["time_s"] = r.time_s;
+    item["iterations"] = r.iterations;
+    item["objective"] = r.objective;
+    item["certificate"] = to_json(r.certificate);
+    item["summary"] = e.run.summary;
+    double dp = 0.0, da = 0.0, df = 0.0;
+    if (first) {
+      dp = pressure_difference(e.run.solution.pressure, first->run.solution.pressure);
+      da = relative(e.run.solution.approach, first->run.solution.approach);
+      df = relative(e.run.solution.force, first->run.solution.force);
+      item["difference_from_first"] = {{"backend", first->backend}, {"pressure", dp}, {"approach", da}, {"normal_force", df}};
+    }
+    list.push_back(item);
+    auto cell = [&](double v) {
+      char b[32];
+      if (!first || &e == first) std::snprintf(b, sizeof b, "%11s", "-");
+      else std::snprintf(b, sizeof b, "%11.2e", v);
+      return std::string(b);
+    };
+    std::printf("%-8s %-14s %6d %9.3f %14.6e %11.2e %s %s %s\n", e.backend.c_str(), to_string(r.status), r.iterations,
+                r.time_s, r.objective, r.certificate.worst(), cell(dp).c_str(), cell(da).c_str(), cell(df).c_str());
+  }
+  if (first) std::printf("(d_*: largest relative difference from %s)\n", first->backend.c_str());
+  const std::string path = (std::filesystem::path(dir) / "compare.json").string();
+  write_text_file(path, list.dump(2) + "\n");
+  std::printf("wrote %s\n", path.c_str());
+  std::fflush(stdout);
+  if (!all_converged) {
+    std::cerr << "error: solver: not every backend converged (see " << path << ")\n";
+    return kExitUnconverged;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<CompareArgs>();
+  CLI::App* sub = app.add_subcommand("compare", "Solve one case with several backends and compare the results");
+  sub->footer(
+      "Solves the same case once per backend (fallback off, so each result is that backend's own), writes "
+      "compare.json into the output folder (a list of {backend, status, time_s, iterations, objective, "
+      "certificate, summary}) and prints a table: status, iterations, time, objective, the largest certificate "
+      "residual, and the largest relative difference of the pressure field, the approach and the force from the "
+      "first backend. Use it to check that the backends agree on a new kind of case or to pick the fastest. "
+      "Exit code 0 when every backend converged, 3 otherwise, 2 for bad input.");
+  sub->add_option("case", args->case_path, "case file (JSON)")->required();
+  sub->add_option("--backends", args->backends, "comma-separated backends (default ipopt,nlopt,native)")
+      ->delimiter(',');
+  sub->add_option("-o,--out", args->out, "output folder (default: output.dir of the case, else out/<name>)");
+  sub->add_option("-s,--set", args->sets, "override a case key: path=value (repeatable)")->allow_extra_args(false);
+  sub->add_flag("-q,--quiet", args->quiet, "no progress line");
+  sub->callback([args, &exit_code] { exit_code = run_compare(*args); });
+}
+
+}  // namespace dc::cli

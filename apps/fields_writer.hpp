@@ -1,0 +1,15 @@
+#pragma once
+// fields.csv of static problems: x,y,p,tx,ty,sx,sy,state (one row per element, grid order
+// i + nx*j; element centres; 2-D: y = 0). state 0 free, 1 stick, 2 slip; a normal problem
+// writes 1 for every element in contact (p above the contact threshold).
+#include <string>
+
+#include "grid.hpp"
+#include "static_fields.hpp"
+
+namespace dc::cli {
+
+/// Writes dir/fields.csv; returns the path.
+std::string write_fields(const std::string& dir, const Grid& grid, const StaticFields& fields);
+
+}  // namespace dc::cli

@@ -1,0 +1,54 @@
+// dyncontact: the command line. Subcommand wiring and error handling only; each subcommand
+// lives in its own file (solve_command.cpp, compare_command.cpp, validate_command.cpp,
+// example_command.cpp).
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "errors.hpp"
+
+#ifndef DYNCONTACT_VERSION
+#define DYNCONTACT_VERSION "unknown"
+#endif
+
+int main(int argc, char** argv) {
+  using namespace dc::cli;
+  int exit_code = kExitOk;
+  try {
+    CLI::App app{
+        "dyncontact: frictional contact between an elastic body and an elastic half-space "
+        "(after Spector & Batra), solved as convex programs with certified results.\n"
+        "Start with `dyncontact example --list`, save one with `dyncontact example hertz-sphere > case.json`, "
+        "then `dyncontact solve case.json`.",
+        "dyncontact"};
+    app.set_version_flag("--version", std::string("dyncontact ") + DYNCONTACT_VERSION);
+    app.require_subcommand(1);
+    app.footer("Exit codes: 0 success, 2 bad input, 3 solver did not converge, 4 internal error.");
+    add_solve_command(app, exit_code);
+    add_compare_command(app, exit_code);
+    add_validate_command(app, exit_code);
+    add_example_command(app, exit_code);
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+      const int code = app.exit(e);
+      return code == 0 ? kExitOk : kExitBadInput;
+    }
+    return exit_code;
+  } catch (const dc::InputError& e) {
+    std::cout.flush();
+    std::cerr << "error: " << e.what() << '\n';
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cout.flush();
+    std::cerr << "error: internal: " << e.what() << '\n';
+    return kExitInternal;
+  } catch (...) {
+    std::cerr << "error: internal: unknown exception\n";
+    return kExitInternal;
+  }
+}

@@ -1,0 +1,24 @@
+#include "normal_run.hpp"
+
+#include <algorithm>
+
+#include "progress.hpp"
+#include "summary_writer.hpp"
+
+namespace dc::cli {
+
+NormalRun run_normal(const Case& c, bool progress) {
+  NormalRun run;
+  {
+    Progress reporter("solving " + c.name + " (" + c.solver.backend + ")", progress);
+    run.solution = solve_normal_case(c, reporter.callback());
+    reporter.finish();
+  }
+  // A solver leaves round-off pressures outside the contact; those within the certificate
+  // tolerance of the peak count as free.
+  run.fields = normal_fields(run.solution.pressure, std::max(c.solver.certificate_tol, 1e-12));
+  run.summary = normal_summary(c, run.solution, run.fields);
+  return run;
+}
+
+}  // namespace dc::cli

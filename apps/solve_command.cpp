@@ -1,0 +1,108 @@
+// dyncontact solve CASE.json [--out DIR] [--backend B] [--set path=value ...]
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "fields_writer.hpp"
+#include "normal_run.hpp"
+#include "plot_writer.hpp"
+#include "summary_writer.hpp"
+
+namespace dc::cli {
+namespace {
+
+struct SolveArgs {
+  std::string case_path, out, backend;
+  std::vector<std::string> sets;
+  bool quiet = false;
+};
+
+void print_line(const char* label, double value, const char* unit, const nlohmann::json& ref, const char* ref_key) {
+  std::printf("  %-16s %-12.5g %-5s", label, value, unit);
+  if (ref.is_object() && ref.contains(ref_key) && ref[ref_key].is_number())
+    std::printf("  (closed form %.5g)", ref[ref_key].get<double>());
+  std::printf("\n");
+}
+
+int run_solve(const SolveArgs& args) {
+  const Case c = load_case(args.case_path, args.sets, args.backend);
+  if (c.problem != ProblemKind::normal) not_implemented(c.problem);
+  const std::string dir = prepare_output_dir(c, args.out);
+
+  NormalRun run = run_normal(c, !args.quiet);
+  nlohmann::json& s = run.summary;
+  nlohmann::json files = {{"summary", "summary.json"}};
+  if (c.output.fields) {
+    write_fields(dir, c.grid, run.fields);
+    files["fields"] = "fields.csv";
+  }
+  if (c.output.plots) {
+    nlohmann::json plots = nlohmann::json::array();
+    for (const auto& p : write_static_plots(dir, c, run.fields))
+      plots.push_back(std::filesystem::path(p).filename().string());
+    files["plots"] = plots;
+  }
+  s["files"] = files;
+  const std::string summary_path = write_summary(dir, s);
+
+  const SolverReport& r = run.solution.report;
+  if (!args.quiet) {
+    std::printf("%s: %s (%s, %d iterations, %.3g s; certificate %.2e)\n", c.name.c_str(), to_string(r.status),
+                r.backend.c_str(), r.iterations, r.time_s, r.certificate.worst());
+    const nlohmann::json ref = s.contains("hertz") ? s["hertz"] : nlohmann::json();
+    const bool two_d = c.dimension == 2;
+    print_line("normal force", run.solution.force, two_d ? "N/m" : "N", ref, "normal_force");
+    print_line("approach", run.solution.approach, "m", ref, "approach");
+    print_line(two_d ? "contact width" : "contact area", s["contact_area"].get<double>(), two_d ? "m" : "m^2", ref,
+               "contact_area");
+    print_line("max pressure", s["max_pressure"].get<double>(), "Pa", ref, "max_pressure");
+    std::printf("  %-16s %d of %zu elements\n", "in contact", s["n_contact"].get<int>(), c.grid.size());
+    std::printf("wrote %s\n", summary_path.c_str());
+    std::fflush(stdout);
+  }
+  if (s.value("contact_touches_boundary", false))
+    std::cerr << "warning: grid: the contact reaches the edge of the grid; the result is truncated "
+                 "(enlarge grid.extent or grid.x/grid.y)\n";
+  if (!run.converged()) {
+    const std::string what = std::string(to_string(r.status)) + (r.message.empty() ? "" : ": " + r.message);
+    if (c.solver.accept_unconverged) {
+      std::cerr << "warning: solver: " << what << " (accepted: solver.accept_unconverged)\n";
+      return kExitOk;
+    }
+    std::cerr << "error: solver: did not converge (" << what << "); results written to " << dir
+              << " (set solver.accept_unconverged to accept them)\n";
+    return kExitUnconverged;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_solve_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<SolveArgs>();
+  CLI::App* sub = app.add_subcommand("solve", "Solve a case file; write summary.json, fields.csv and plots");
+  sub->footer(
+      "Reads a case file (JSON, the contract in CASES.md; get a start with `dyncontact example hertz-sphere`), "
+      "checks every key, solves it and writes into the output folder: summary.json (force, approach, contact "
+      "area, peak pressure, solver status and certificate, and the Hertz/Boussinesq values when a closed form "
+      "exists), fields.csv (x,y,p,tx,ty,sx,sy,state per element; state 0 free, 1 stick, 2 slip - a normal "
+      "problem marks every element in contact with 1) and plots (SVG and PNG via gnuplot). Any key can be "
+      "changed without editing the file: --set grid.nx=128 --set normal.force=200. Exit code 0 converged, "
+      "2 bad input, 3 not converged (results are still written), 4 internal error.");
+  sub->add_option("case", args->case_path, "case file (JSON)")->required();
+  sub->add_option("-o,--out", args->out, "output folder (default: output.dir of the case, else out/<name>)");
+  sub->add_option("-b,--backend", args->backend, "solver backend: auto, ipopt, nlopt or native (sets solver.backend)");
+  sub->add_option("-s,--set", args->sets, "override a case key: path=value, e.g. materials.body.E=2e11 (repeatable)")
+      ->allow_extra_args(false);
+  sub->add_flag("-q,--quiet", args->quiet, "print nothing but warnings and errors");
+  sub->callback([args, &exit_code] { exit_code = run_solve(*args); });
+}
+
+}  // namespace dc::cli

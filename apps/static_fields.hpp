@@ -1,0 +1,42 @@
+#pragma once
+// The per-element result of a static problem as written to fields.csv, and the contact
+// measures of summary.json derived from it.
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "grid.hpp"
+
+namespace dc::cli {
+
+/// Element states of fields.csv.
+enum ElementState : int { kFree = 0, kStick = 1, kSlip = 2 };
+
+struct StaticFields {
+  std::vector<double> p;             ///< pressure (Pa)
+  std::vector<double> tx, ty;        ///< tangential traction (Pa); empty = 0
+  std::vector<double> sx, sy;        ///< slip (m); empty = 0
+  std::vector<int> state;            ///< ElementState per element
+  double contact_threshold = 0.0;    ///< elements with p > this are in contact
+};
+
+/// Normal problem: no tangential traction; state 1 (kStick: "in contact") where
+/// p > threshold, 0 elsewhere. threshold = relative_threshold * max p (a solver leaves
+/// round-off pressures of that relative size outside the contact).
+StaticFields normal_fields(const std::vector<double>& pressure, double relative_threshold);
+
+struct ContactMeasures {
+  int n_contact = 0;
+  double contact_area = 0.0;  ///< m^2 (2-D: m)
+  double max_pressure = 0.0;
+  double x_min = 0.0, x_max = 0.0, y_min = 0.0, y_max = 0.0;  ///< element edges of the contact region
+  bool touches_boundary = false;  ///< a contact element lies on the grid's edge
+};
+
+ContactMeasures contact_measures(const Grid& grid, const StaticFields& fields);
+
+/// The normal-problem keys of summary.json: n_contact, contact_area, max_pressure,
+/// contact_half_width (2-D), plus extras (contact_extent, contact_touches_boundary, ...).
+void add_contact_measures(nlohmann::json& summary, const Grid& grid, const StaticFields& fields);
+
+}  // namespace dc::cli

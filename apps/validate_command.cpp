@@ -1,0 +1,126 @@
+// dyncontact validate CASE.json [--set path=value ...]
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "analytic_reference.hpp"
+#include "cli_common.hpp"
+#include "commands.hpp"
+
+namespace dc::cli {
+namespace {
+
+struct ValidateArgs {
+  std::string case_path;
+  std::vector<std::string> sets;
+};
+
+std::string material_text(const Elastic& m) {
+  if (m.rigid) return "rigid";
+  char b[96];
+  std::snprintf(b, sizeof b, "E = %.4g Pa, nu = %.4g (G = %.4g Pa)", m.E, m.nu, m.G);
+  return b;
+}
+
+std::string profile_text(const ProfileSpec& p, int dimension) {
+  char b[160];
+  switch (p.type) {
+    case ProfileType::sphere: std::snprintf(b, sizeof b, "sphere, R = %.4g m", p.radius); break;
+    case ProfileType::ellipsoid:
+      std::snprintf(b, sizeof b, "ellipsoid, Rx = %.4g m, Ry = %.4g m", p.radius_x, p.radius_y);
+      break;
+    case ProfileType::cylinder:
+      if (dimension == 3 && p.length > 0.0)
+        std::snprintf(b, sizeof b, "cylinder along y, R = %.4g m, length %.4g m", p.radius, p.length);
+      else
+        std::snprintf(b, sizeof b, "cylinder, R = %.4g m", p.radius);
+      break;
+    case ProfileType::flat_punch: std::snprintf(b, sizeof b, "flat punch, radius %.4g m", p.radius); break;
+    case ProfileType::quadratic: std::snprintf(b, sizeof b, "quadratic, h = %.4g x^2 + %.4g y^2", p.a, p.b); break;
+    case ProfileType::table:
+      std::snprintf(b, sizeof b, "table '%s' (%zu points)", p.file.c_str(), p.table_h.size());
+      break;
+  }
+  return b;
+}
+
+int run_validate(const ValidateArgs& args) {
+  const Case c = load_case(args.case_path, args.sets);
+  const bool two_d = c.dimension == 2;
+  std::printf("case '%s': problem %s, %s\n", c.name.c_str(), to_string(c.problem),
+              two_d ? "2-D (plane strain, per unit length)" : "3-D");
+  if (c.source.contains("description")) std::printf("  %s\n", c.source["description"].get<std::string>().c_str());
+  const bool static_problem = c.problem == ProblemKind::normal || c.problem == ProblemKind::tangential;
+  if (static_problem || c.source.contains("materials")) {
+    std::printf("  body:     %s\n  base:     %s\n  E*:       %.4g Pa\n", material_text(c.materials.body).c_str(),
+                material_text(c.materials.base).c_str(), c.materials.E_star());
+  }
+  if (static_problem || c.source.contains("profile"))
+    std::printf("  profile:  %s\n", profile_text(c.profile, c.dimension).c_str());
+  if (static_problem || c.source.contains("normal")) {
+    if (c.normal.control == Control::force)
+      std::printf("  normal:   force %.4g %s\n", c.normal.value, two_d ? "N/m" : "N");
+    else
+      std::printf("  normal:   approach %.4g m\n", c.normal.value);
+  }
+  if (c.friction) {
+    const FrictionSpec& f = *c.friction;
+    if (f.law == "coulomb") std::printf("  friction: Coulomb, mu = %.4g\n", f.mu);
+    else if (f.law == "tresca") std::printf("  friction: Tresca, bound %.4g Pa\n", f.bound);
+    else std::printf("  friction: table of %zu points\n", f.pressure.size());
+  }
+  const Grid& g = c.grid;
+  if (static_problem || c.source.contains("grid")) {
+    if (two_d)
+      std::printf("  grid:     %d strips, x in [%.4g, %.4g] m, dx = %.4g m\n", g.nx, g.x0, g.x_max(), g.dx);
+    else
+      std::printf("  grid:     %d x %d = %zu elements, x in [%.4g, %.4g] m, y in [%.4g, %.4g] m, dx = %.4g m, "
+                  "dy = %.4g m\n",
+                  g.nx, g.ny, g.size(), g.x0, g.x_max(), g.y0, g.y_max(), g.dx, g.dy);
+  }
+  std::printf("  solver:   backend %s, tol %.3g, certificate tolerance %.3g, at most %d iterations\n",
+              c.solver.backend.c_str(), c.solver.tol, c.solver.certificate_tol, c.solver.max_iter);
+  if (const auto ref = analytic_reference(c)) {
+    const char* label = ref->kind == "boussinesq_flat_punch" ? "Boussinesq" : "Hertz";
+    if (two_d)
+      std::printf("  %s:    a = %.4g m (%.1f strips across), p0 = %.4g Pa\n", label, ref->semi_axis_x,
+                  2.0 * ref->semi_axis_x / g.dx, ref->max_pressure);
+    else
+      std::printf("  %s:    a = %.4g m, b = %.4g m (%.1f x %.1f elements across), %s = %.4g Pa, force %.4g N, "
+                  "approach %.4g m\n",
+                  label, ref->semi_axis_x, ref->semi_axis_y, 2.0 * ref->semi_axis_x / g.dx,
+                  2.0 * ref->semi_axis_y / g.dy, ref->kind == "boussinesq_flat_punch" ? "centre p" : "p0",
+                  ref->max_pressure, ref->force, ref->approach.value_or(NAN));
+    const bool beyond = ref->semi_axis_x > std::min(-g.x0, g.x_max()) ||
+                        (!two_d && ref->semi_axis_y > std::min(-g.y0, g.y_max()));
+    if (beyond) std::fprintf(stderr, "warning: grid: the %s contact reaches beyond the grid\n", label);
+    if (2.0 * ref->semi_axis_x / g.dx < 6.0 || (!two_d && 2.0 * ref->semi_axis_y / g.dy < 6.0))
+      std::fprintf(stderr, "warning: grid: fewer than 6 elements across the contact; refine the grid\n");
+  }
+  if (c.problem != ProblemKind::normal)
+    std::printf("note: the solver for problem '%s' is not implemented in this build yet\n", to_string(c.problem));
+  std::printf("valid\n");
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_validate_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<ValidateArgs>();
+  CLI::App* sub = app.add_subcommand("validate", "Check a case file and describe it, without solving");
+  sub->footer(
+      "Reads and checks a case file exactly as `solve` would (unknown keys, types, ranges, the grid against the "
+      "profile) and prints what it understood: materials and E*, profile, load, grid size and spacing, and the "
+      "closed-form (Hertz/Boussinesq) contact size, peak pressure and approach where one applies, with a warning "
+      "when the grid is too small or too coarse for that contact. Exit code 0 when the case is valid, 2 "
+      "otherwise (the message names the offending key).");
+  sub->add_option("case", args->case_path, "case file (JSON)")->required();
+  sub->add_option("-s,--set", args->sets, "override a case key: path=value (repeatable)")->allow_extra_args(false);
+  sub->callback([args, &exit_code] { exit_code = run_validate(*args); });
+}
+
+}  // namespace dc::cli
