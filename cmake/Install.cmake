@@ -1,1 +1,62 @@
-# Installation and package config: placeholder, completed by the install work.
+# Installation and the CMake package config, so that another project can
+#
+#   find_package(dyncontact 0.1 REQUIRED)
+#   target_link_libraries(app PRIVATE dyncontact::nlp)      # or dyncontact::dyncontact_nlp
+#
+# `cmake --install build --prefix P` installs
+#   P/lib/libdyncontact_{core,nlp,dynamics}.a   (shared with -DBUILD_SHARED_LIBS=ON)
+#   P/include/dyncontact/*.hpp                  (flat: #include "normal_problem.hpp")
+#   P/bin/dyncontact                            (install rule in apps/CMakeLists.txt)
+#   P/lib/cmake/dyncontact/                     (config, version, targets, find modules)
+#
+# Target names: the exported targets keep their build names under the namespace
+# `dyncontact::` (dyncontact::dyncontact_core, ::dyncontact_nlp, ::dyncontact_dynamics).
+# The config adds the short names dyncontact::core, ::nlp, ::dynamics (INTERFACE IMPORTED
+# targets linking to the long ones), so code written against the in-tree ALIAS targets
+# builds unchanged against an installed package.
+#
+# The libraries are static by default and link FFTW3, Ipopt and NLopt PRIVATE; the exported
+# link interface still names them ($<LINK_ONLY:...>), so the config re-finds them: FFTW3 and
+# Ipopt through the find modules installed next to the config (pkg-config), NLopt, Eigen3
+# and nlohmann_json through their own CMake configs.
+include(CMakePackageConfigHelpers)
+
+set(DYNCONTACT_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/dyncontact
+    CACHE STRING "Where the dyncontact CMake package files are installed (relative to the prefix)")
+mark_as_advanced(DYNCONTACT_INSTALL_CMAKEDIR)
+
+set(_dyncontact_libraries dyncontact_core dyncontact_nlp dyncontact_dynamics)
+
+install(TARGETS ${_dyncontact_libraries}
+  EXPORT dyncontactTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+  PUBLIC_HEADER DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dyncontact)
+# (The include directory comes from each target's $<INSTALL_INTERFACE:...> entry.)
+
+install(EXPORT dyncontactTargets
+  NAMESPACE dyncontact::
+  FILE dyncontactTargets.cmake
+  DESTINATION ${DYNCONTACT_INSTALL_CMAKEDIR})
+
+configure_package_config_file(
+  ${CMAKE_CURRENT_LIST_DIR}/dyncontactConfig.cmake.in
+  ${CMAKE_CURRENT_BINARY_DIR}/dyncontactConfig.cmake
+  INSTALL_DESTINATION ${DYNCONTACT_INSTALL_CMAKEDIR}
+  PATH_VARS CMAKE_INSTALL_INCLUDEDIR CMAKE_INSTALL_BINDIR)
+
+# 0.x: minor versions may break the API, so a request for 0.1 accepts 0.1.* only.
+write_basic_package_version_file(
+  ${CMAKE_CURRENT_BINARY_DIR}/dyncontactConfigVersion.cmake
+  VERSION ${PROJECT_VERSION}
+  COMPATIBILITY SameMinorVersion)
+
+install(FILES
+  ${CMAKE_CURRENT_BINARY_DIR}/dyncontactConfig.cmake
+  ${CMAKE_CURRENT_BINARY_DIR}/dyncontactConfigVersion.cmake
+  ${CMAKE_CURRENT_LIST_DIR}/FindFFTW3.cmake
+  ${CMAKE_CURRENT_LIST_DIR}/FindIpopt.cmake
+  DESTINATION ${DYNCONTACT_INSTALL_CMAKEDIR})
+
+unset(_dyncontact_libraries)
