@@ -1,6 +1,7 @@
 #include "backend_choice.hpp"
 
 #include <algorithm>
+#include <chrono>
 
 #include "errors.hpp"
 
@@ -20,6 +21,31 @@ std::vector<std::string> backend_order(const std::string& requested, std::size_t
   }
   if (!fallback) order.resize(1);
   return order;
+}
+
+SolveOptions solve_options(const SolverSpec& solver, const ProgressCallback& progress) {
+  SolveOptions options;
+  options.tol = solver.tol;
+  options.max_iter = solver.max_iter;
+  options.hessian = solver.hessian;
+  options.progress = progress;
+  return options;
+}
+
+TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp, const SolveOptions& options,
+                         NativeSolver native) {
+  TimedOutcome timed;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    if (backend == "native") timed.outcome = native(qp, options);
+    else if (backend == "ipopt") timed.outcome = solve_with_ipopt(qp, options);
+    else timed.outcome = solve_with_nlopt(qp, options);
+  } catch (const std::exception& e) {
+    timed.outcome = SolveOutcome{};
+    timed.outcome.message = std::string("exception: ") + e.what();
+  }
+  timed.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return timed;
 }
 
 }  // namespace dc

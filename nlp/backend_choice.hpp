@@ -4,6 +4,9 @@
 #include <string>
 #include <vector>
 
+#include "case_model.hpp"
+#include "quadratic_program.hpp"
+
 namespace dc {
 
 /// Problems up to this many unknowns go to Ipopt first under `auto` (exact Hessian, ~0.1 s);
@@ -14,5 +17,18 @@ inline constexpr std::size_t kAutoIpoptLimit = 256;
 /// "auto": by size, then the others as fallbacks (when `fallback`); a named backend: that one,
 /// then the others when `fallback`. Throws InputError("solver.backend") for an unknown name.
 std::vector<std::string> backend_order(const std::string& requested, std::size_t unknowns, bool fallback);
+
+/// The backend options of a case's solver block.
+SolveOptions solve_options(const SolverSpec& solver, const ProgressCallback& progress);
+
+/// One backend run: its outcome (an exception becomes a failed outcome with the message)
+/// and the wall time. `native` is the problem's specialist solver.
+struct TimedOutcome {
+  SolveOutcome outcome;
+  double time_s = 0.0;
+};
+using NativeSolver = SolveOutcome (*)(const QuadraticProgram&, const SolveOptions&);
+TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp, const SolveOptions& options,
+                         NativeSolver native);
 
 }  // namespace dc

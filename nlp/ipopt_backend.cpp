@@ -245,27 +245,12 @@ bool use_exact_hessian(const QuadraticProgram& qp, const SolveOptions& options) 
   return qp.n() <= options.exact_hessian_limit;
 }
 
-/// Why the program is malformed (sizes, indices, missing operator), or empty when it is fine.
-std::string invalid_reason(const QuadraticProgram& qp) {
-  const auto n = static_cast<std::size_t>(qp.n());
-  if (qp.Q == nullptr) return "no operator Q";
-  if (qp.Q->rows() != n || qp.Q->cols() != n) return "Q does not match c in size";
-  if ((!qp.lower.empty() && qp.lower.size() != n) || (!qp.upper.empty() && qp.upper.size() != n))
-    return "bounds do not match c in size";
-  for (const auto& eq : qp.equalities)
-    if (eq.a.size() != n) return "an equality row does not match c in size";
-  for (const auto& d : qp.disks)
-    if (d.ix < 0 || d.iy < 0 || static_cast<std::size_t>(d.ix) >= n || static_cast<std::size_t>(d.iy) >= n ||
-        d.ix == d.iy)
-      return "a disk has bad indices";
-  return {};
-}
 
 }  // namespace
 
 SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& options) {
   SolveOutcome out;
-  if (const std::string why = invalid_reason(qp); !why.empty()) {
+  if (const std::string why = qp.invalid_reason(); !why.empty()) {
     out.message = "Ipopt: invalid program: " + why;
     return out;
   }

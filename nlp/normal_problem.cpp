@@ -1,7 +1,6 @@
 #include "normal_problem.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -115,11 +114,7 @@ NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverSpec&
     for (std::size_t i = 0; i < n; ++i) qp.x0[i] = warm_start_[i] / s.p_ref;
   }
 
-  SolveOptions options;
-  options.tol = solver.tol;
-  options.max_iter = solver.max_iter;
-  options.hessian = solver.hessian;
-  options.progress = progress;
+  const SolveOptions options = solve_options(solver, progress);
 
   NormalSolution best;
   best.report.requested = solver.backend;
@@ -129,17 +124,9 @@ NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverSpec&
   const auto order = backend_order(solver.backend, n, solver.fallback);
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::string& backend = order[k];
-    const auto start = std::chrono::steady_clock::now();
-    SolveOutcome outcome;
-    try {
-      if (backend == "native") outcome = solve_normal_native(qp, options);
-      else if (backend == "ipopt") outcome = solve_with_ipopt(qp, options);
-      else outcome = solve_with_nlopt(qp, options);
-    } catch (const std::exception& e) {
-      outcome = SolveOutcome{};
-      outcome.message = std::string("exception: ") + e.what();
-    }
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const TimedOutcome run = run_backend(backend, qp, options, solve_normal_native);
+    const SolveOutcome& outcome = run.outcome;
+    const double elapsed = run.time_s;
 
     NormalSolution sol;
     sol.report = best.report;

@@ -9,6 +9,21 @@ double QuadraticProgram::objective(const double* x) const {
   return gradient(x, g.data());
 }
 
+std::string QuadraticProgram::invalid_reason() const {
+  const auto size = c.size();
+  if (Q == nullptr) return "no operator Q";
+  if (Q->rows() != size || Q->cols() != size) return "Q does not match c in size";
+  if ((!lower.empty() && lower.size() != size) || (!upper.empty() && upper.size() != size))
+    return "bounds do not match c in size";
+  for (const auto& eq : equalities)
+    if (eq.a.size() != size) return "an equality row does not match c in size";
+  for (const auto& d : disks)
+    if (d.ix < 0 || d.iy < 0 || static_cast<std::size_t>(d.ix) >= size || static_cast<std::size_t>(d.iy) >= size ||
+        d.ix == d.iy)
+      return "a disk has bad indices";
+  return {};
+}
+
 double QuadraticProgram::gradient(const double* x, double* g) const {
   Q->apply(x, g);
   double f = 0.0;

@@ -32,6 +32,8 @@ struct QuadraticProgram {
   std::vector<double> x0;  ///< starting point (or empty: zeros projected on the bounds)
 
   int n() const { return static_cast<int>(c.size()); }
+  /// Why the program is malformed (sizes, indices, missing operator), or empty when it is fine.
+  std::string invalid_reason() const;
   double objective(const double* x) const;
   /// g = Qx + c; returns the objective as a by-product.
   double gradient(const double* x, double* g) const;

@@ -1,7 +1,6 @@
 #include "tangential_problem.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -181,11 +180,7 @@ struct TangentialProblem::Impl {
       qp.x0.resize(n);
       for (std::size_t i = 0; i < n; ++i) qp.x0[i] = tau_warm[i] / f_ref;
     }
-    SolveOptions options;
-    options.tol = solver.tol;
-    options.max_iter = solver.max_iter;
-    options.hessian = solver.hessian;
-    options.progress = progress;
+    const SolveOptions options = solve_options(solver, progress);
 
     InnerResult best;
     best.report.requested = solver.backend;
@@ -193,22 +188,14 @@ struct TangentialProblem::Impl {
     std::string attempts;
     const auto order = backend_order(solver.backend, n, solver.fallback);
     for (std::size_t k = 0; k < order.size(); ++k) {
-      const auto start = std::chrono::steady_clock::now();
-      SolveOutcome out;
-      try {
-        if (order[k] == "native") out = solve_tangential_native(qp, options);
-        else if (order[k] == "ipopt") out = solve_with_ipopt(qp, options);
-        else out = solve_with_nlopt(qp, options);
-      } catch (const std::exception& e) {
-        out = SolveOutcome{};
-        out.message = std::string("exception: ") + e.what();
-      }
+      const TimedOutcome run = run_backend(order[k], qp, options, solve_tangential_native);
+      const SolveOutcome& out = run.outcome;
       SolverReport rep = best.report;
       rep.backend = order[k];
       rep.fallback_used = k > 0;
       rep.message = out.message;
       rep.iterations = out.iterations;
-      rep.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      rep.time_s = run.time_s;
       rep.objective = out.objective * ct0 * f_ref * f_ref * A;
       rep.status = out.x.size() == n ? (out.success ? SolveStatus::converged : SolveStatus::not_converged)
                                      : SolveStatus::failed;
