@@ -14,9 +14,9 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
-#include "normal_run.hpp"
 #include "solver_report.hpp"
 #include "summary_writer.hpp"
+#include "tangential_run.hpp"
 
 namespace dc::cli {
 namespace {
@@ -31,7 +31,7 @@ struct CompareArgs {
 struct Entry {
   std::string backend;
   bool ok = false;  ///< produced a result (whatever its status)
-  NormalRun run;
+  StaticRun run;
   std::string error;  ///< what the backend threw, if it did
 };
 
@@ -40,11 +40,32 @@ double relative(double value, double reference) {
   return scale > 0.0 ? std::abs(value - reference) / scale : std::abs(value);
 }
 
-double pressure_difference(const std::vector<double>& p, const std::vector<double>& ref) {
+/// Largest difference of a field (one or two components) relative to the reference's peak.
+double field_difference(const std::vector<double>& p, const std::vector<double>& ref,
+                        const std::vector<double>& q = {}, const std::vector<double>& q_ref = {}) {
   double scale = 0.0, diff = 0.0;
-  for (double v : ref) scale = std::max(scale, std::abs(v));
+  for (const auto* r : {&ref, &q_ref})
+    for (double v : *r) scale = std::max(scale, std::abs(v));
   for (std::size_t i = 0; i < std::min(p.size(), ref.size()); ++i) diff = std::max(diff, std::abs(p[i] - ref[i]));
+  for (std::size_t i = 0; i < std::min(q.size(), q_ref.size()); ++i) diff = std::max(diff, std::abs(q[i] - q_ref[i]));
   return scale > 0.0 ? diff / scale : diff;
+}
+
+/// summary[key] (or its component), 0 when absent or not a number.
+double number(const nlohmann::json& summary, const char* key, int component = -1) {
+  if (!summary.is_object() || !summary.contains(key)) return 0.0;
+  const nlohmann::json& v = summary.at(key);
+  if (component < 0) return v.is_number() ? v.get<double>() : 0.0;
+  const auto k = static_cast<std::size_t>(component);
+  return v.is_array() && k < v.size() && v[k].is_number() ? v[k].get<double>() : 0.0;
+}
+
+/// |F - F_ref| / |F_ref| of the tangential force vectors.
+double force_difference(const nlohmann::json& s, const nlohmann::json& ref) {
+  const double dx = number(s, "tangential_force", 0) - number(ref, "tangential_force", 0);
+  const double dy = number(s, "tangential_force", 1) - number(ref, "tangential_force", 1);
+  const double scale = std::hypot(number(ref, "tangential_force", 0), number(ref, "tangential_force", 1));
+  return scale > 0.0 ? std::hypot(dx, dy) / scale : std::hypot(dx, dy);
 }
 
 int run_compare(const CompareArgs& args) {
@@ -53,7 +74,8 @@ int run_compare(const CompareArgs& args) {
     if (b != "auto" && b != "ipopt" && b != "nlopt" && b != "native")
       throw InputError("--backends", "unknown backend '" + b + "' (expected auto, ipopt, nlopt or native)");
   const Case base = load_case(args.case_path, args.sets);
-  if (base.problem != ProblemKind::normal) not_implemented(base.problem);
+  if (base.problem != ProblemKind::normal && base.problem != ProblemKind::tangential) not_implemented(base.problem);
+  const bool tangential = base.problem == ProblemKind::tangential;
   const std::string dir = prepare_output_dir(base, args.out);
 
   std::vector<Entry> entries;
@@ -66,7 +88,7 @@ int run_compare(const CompareArgs& args) {
     Entry e;
     e.backend = b;
     try {
-      e.run = run_normal(c, !args.quiet);
+      e.run = run_static(c, !args.quiet);
       e.ok = true;
     } catch (const InputError&) {
       throw;
@@ -79,8 +101,10 @@ int run_compare(const CompareArgs& args) {
   const Entry* first = entries.front().ok ? &entries.front() : nullptr;
   nlohmann::json list = nlohmann::json::array();
   bool all_converged = true;
-  std::printf("%-8s %-14s %6s %9s %14s %11s %11s %11s %11s\n", "backend", "status", "iter", "time_s", "objective",
+  std::printf("%-8s %-14s %6s %9s %14s %11s %11s %11s %11s", "backend", "status", "iter", "time_s", "objective",
               "certificate", "d_pressure", "d_approach", "d_force");
+  if (tangential) std::printf(" %11s %11s", "d_traction", "d_t_force");
+  std::printf("\n");
   for (const auto& e : entries) {
     nlohmann::json item;
     item["backend"] = e.backend;
@@ -97,20 +121,29 @@ int run_compare(const CompareArgs& args) {
       std::printf("%-8s %-14s %s\n", e.backend.c_str(), "failed", e.error.c_str());
       continue;
     }
-    const SolverReport& r = e.run.solution.report;
-    all_converged = all_converged && e.run.converged();
+    const SolverReport& r = e.run.report;
+    all_converged = all_converged && e.run.converged;
     item["status"] = to_string(r.status);
     item["time_s"] = r.time_s;
     item["iterations"] = r.iterations;
     item["objective"] = r.objective;
     item["certificate"] = to_json(r.certificate);
     item["summary"] = e.run.summary;
-    double dp = 0.0, da = 0.0, df = 0.0;
+    double dp = 0.0, da = 0.0, df = 0.0, dt = 0.0, dft = 0.0;
     if (first) {
-      dp = pressure_difference(e.run.solution.pressure, first->run.solution.pressure);
-      da = relative(e.run.solution.approach, first->run.solution.approach);
-      df = relative(e.run.solution.force, first->run.solution.force);
+      const StaticFields& f = e.run.fields.back();
+      const StaticFields& f0 = first->run.fields.back();
+      const nlohmann::json& s0 = first->run.summary;
+      dp = field_difference(f.p, f0.p);
+      da = relative(number(e.run.summary, "approach"), number(s0, "approach"));
+      df = relative(number(e.run.summary, "normal_force"), number(s0, "normal_force"));
       item["difference_from_first"] = {{"backend", first->backend}, {"pressure", dp}, {"approach", da}, {"normal_force", df}};
+      if (tangential) {
+        dt = field_difference(f.tx, f0.tx, f.ty, f0.ty);
+        dft = force_difference(e.run.summary, s0);
+        item["difference_from_first"]["traction"] = dt;
+        item["difference_from_first"]["tangential_force"] = dft;
+      }
     }
     list.push_back(item);
     auto cell = [&](double v) {
@@ -119,8 +152,10 @@ int run_compare(const CompareArgs& args) {
       else std::snprintf(b, sizeof b, "%11.2e", v);
       return std::string(b);
     };
-    std::printf("%-8s %-14s %6d %9.3f %14.6e %11.2e %s %s %s\n", e.backend.c_str(), to_string(r.status), r.iterations,
+    std::printf("%-8s %-14s %6d %9.3f %14.6e %11.2e %s %s %s", e.backend.c_str(), to_string(r.status), r.iterations,
                 r.time_s, r.objective, r.certificate.worst(), cell(dp).c_str(), cell(da).c_str(), cell(df).c_str());
+    if (tangential) std::printf(" %s %s", cell(dt).c_str(), cell(dft).c_str());
+    std::printf("\n");
   }
   if (first) std::printf("(d_*: largest relative difference from %s)\n", first->backend.c_str());
   const std::string path = (std::filesystem::path(dir) / "compare.json").string();
@@ -144,7 +179,8 @@ void add_compare_command(CLI::App& app, int& exit_code) {
       "compare.json into the output folder (a list of {backend, status, time_s, iterations, objective, "
       "certificate, summary}) and prints a table: status, iterations, time, objective, the largest certificate "
       "residual, and the largest relative difference of the pressure field, the approach and the force from the "
-      "first backend. Use it to check that the backends agree on a new kind of case or to pick the fastest. "
+      "first backend (tangential cases add the traction field and the tangential force: d_traction, d_t_force). "
+      "Use it to check that the backends agree on a new kind of case or to pick the fastest. "
       "Exit code 0 when every backend converged, 3 otherwise, 2 for bad input.");
   sub->add_option("case", args->case_path, "case file (JSON)")->required();
   sub->add_option("--backends", args->backends, "comma-separated backends (default ipopt,nlopt,native)")

@@ -74,6 +74,109 @@ const std::vector<BundledExample>& bundled_examples() {
   "solver": {"backend": "auto", "tol": 1e-9}
 }
 )json"},
+      {"cattaneo-sphere", "Cattaneo-Mindlin: steel sphere, 100 N, tangential force 0.5 mu P (3-D, shift)",
+       R"json({
+  "schema": "dyncontact/1",
+  "name": "cattaneo-sphere",
+  "description": "Cattaneo-Mindlin: steel sphere (R = 10 mm) on steel under 100 N, then a tangential force of half the friction limit (Q = 0.5 mu P = 15 N, Coulomb mu = 0.3): a central stick circle of radius c = a (1 - Q/(mu P))^(1/3) = 0.79 a inside a slip annulus. The force is the traction ON THE BODY (-x: the body is pushed towards +x).",
+  "problem": "tangential",
+  "dimension": 3,
+  "materials": {
+    "body": {"E": 2.1e11, "nu": 0.3},
+    "base": {"E": 2.1e11, "nu": 0.3}
+  },
+  "profile": {"type": "sphere", "radius": 0.01},
+  "grid": {"nx": 32, "ny": 32, "extent": 1.2},
+  "normal": {"force": 100.0},
+  "friction": {"law": "coulomb", "mu": 0.3},
+  "tangential": {"regime": "shift", "force": [-15.0, 0.0]},
+  "solver": {"backend": "ipopt", "tol": 1e-9}
+}
+)json"},
+      {"torsion-sphere", "Lubkin: steel sphere, 100 N, twisting moment half the full-slip value (3-D, torsion)",
+       R"json({
+  "schema": "dyncontact/1",
+  "name": "torsion-sphere",
+  "description": "Lubkin: steel sphere (R = 10 mm) on steel under 100 N, twisted by half the full-slip moment 3 pi mu P a / 16 (mu = 0.3, a = 0.1866 mm): M = 1.649e-3 N m, a stick core inside a slip annulus.",
+  "problem": "tangential",
+  "dimension": 3,
+  "materials": {
+    "body": {"E": 2.1e11, "nu": 0.3},
+    "base": {"E": 2.1e11, "nu": 0.3}
+  },
+  "profile": {"type": "sphere", "radius": 0.01},
+  "grid": {"nx": 32, "ny": 32, "extent": 1.2},
+  "normal": {"force": 100.0},
+  "friction": {"law": "coulomb", "mu": 0.3},
+  "tangential": {"regime": "torsion", "moment": 1.64897e-3},
+  "solver": {"backend": "ipopt", "tol": 1e-9}
+}
+)json"},
+      {"carter-2d", "Carter: steel cylinder rolling on steel, 100 kN/m, force 0.5 mu P (2-D, rolling)",
+       R"json({
+  "schema": "dyncontact/1",
+  "name": "carter-2d",
+  "description": "Carter: steel cylinder (R = 20 mm) rolling steadily on steel, plane strain, 100 kN/m, tangential force 0.5 mu P = 15 kN/m on the body (mu = 0.3): stick zone of half-length a sqrt(1 - |F|/(mu P)) at the leading edge, creepage |xi| = (mu a / R)(1 - sqrt(1 - |F|/(mu P))) = 6.53e-4.",
+  "problem": "tangential",
+  "dimension": 2,
+  "materials": {
+    "body": {"E": 2.1e11, "nu": 0.3},
+    "base": {"E": 2.1e11, "nu": 0.3}
+  },
+  "profile": {"type": "cylinder", "radius": 0.02},
+  "grid": {"nx": 100, "extent": 1.2},
+  "normal": {"force": 1.0e5},
+  "friction": {"law": "coulomb", "mu": 0.3},
+  "tangential": {"regime": "rolling", "force": [-15000.0], "velocity": 1.0},
+  "solver": {"backend": "ipopt", "tol": 1e-9}
+}
+)json"},
+      {"rolling-sphere", "steady rolling of a steel sphere, 100 N, creepage 1e-3 (3-D, rolling)",
+       R"json({
+  "schema": "dyncontact/1",
+  "name": "rolling-sphere",
+  "description": "Steady rolling of a steel sphere (R = 10 mm) on steel under 100 N with a longitudinal creepage of 1e-3 (mu = 0.3): stick at the leading edge, slip at the trailing edge, F_x about -11 N on the body (Kalker's linear theory, no slip: -G a^2 C11 xi = -12.2 N). A coarse 16 x 16 grid keeps the time-marching to the steady state short with Ipopt; refine it with the native backend.",
+  "problem": "tangential",
+  "dimension": 3,
+  "materials": {
+    "body": {"E": 2.1e11, "nu": 0.3},
+    "base": {"E": 2.1e11, "nu": 0.3}
+  },
+  "profile": {"type": "sphere", "radius": 0.01},
+  "grid": {"nx": 16, "ny": 16, "extent": 1.2},
+  "normal": {"force": 100.0},
+  "friction": {"law": "coulomb", "mu": 0.3},
+  "tangential": {"regime": "rolling", "creepage": [1.0e-3, 0.0], "spin": 0.0, "velocity": 1.0},
+  "solver": {"backend": "ipopt", "tol": 1e-9, "hessian": "exact"}
+}
+)json"},
+      {"spence-sphere", "Spence: rigid sphere pressed into aluminium in 3 load steps, mu = 0.2 (3-D, history)",
+       R"json({
+  "schema": "dyncontact/1",
+  "name": "spence-sphere",
+  "description": "Spence: a rigid sphere (R = 10 mm) pressed into aluminium in three load steps (50, 100, 150 N), no tangential force, Coulomb mu = 0.2. The dissimilar materials (kappa != 0) make the surfaces slip radially under the growing load: a central stick circle of a fixed fraction c/a of the contact (|beta|/mu = 1.27) inside a slip annulus.",
+  "problem": "tangential",
+  "dimension": 3,
+  "materials": {
+    "body": {"rigid": true},
+    "base": {"E": 7.0e10, "nu": 0.33}
+  },
+  "profile": {"type": "sphere", "radius": 0.01},
+  "grid": {"nx": 24, "ny": 24, "extent": 1.3},
+  "normal": {"force": 150.0},
+  "friction": {"law": "coulomb", "mu": 0.2},
+  "tangential": {
+    "regime": "shift",
+    "force": [0.0, 0.0],
+    "history": [
+      {"normal": {"force": 50.0}},
+      {"normal": {"force": 100.0}},
+      {"normal": {"force": 150.0}}
+    ]
+  },
+  "solver": {"backend": "ipopt", "tol": 1e-9}
+}
+)json"},
   };
   return examples;
 }

@@ -8,8 +8,8 @@
 
 namespace dc::cli {
 
-std::string write_fields(const std::string& dir, const Grid& grid, const StaticFields& f) {
-  const std::string path = (std::filesystem::path(dir) / "fields.csv").string();
+std::string write_fields(const std::string& dir, const Grid& grid, const StaticFields& f, const std::string& file) {
+  const std::string path = (std::filesystem::path(dir) / file).string();
   auto at = [](const std::vector<double>& v, std::size_t e) { return e < v.size() ? v[e] : 0.0; };
   std::string text = "x,y,p,tx,ty,sx,sy,state\n";
   text.reserve(text.size() + grid.size() * 96);

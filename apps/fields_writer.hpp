@@ -9,7 +9,8 @@
 
 namespace dc::cli {
 
-/// Writes dir/fields.csv; returns the path.
-std::string write_fields(const std::string& dir, const Grid& grid, const StaticFields& fields);
+/// Writes dir/`file` (fields.csv; fields_<k>.csv for the steps of a history); returns the path.
+std::string write_fields(const std::string& dir, const Grid& grid, const StaticFields& fields,
+                         const std::string& file = "fields.csv");
 
 }  // namespace dc::cli

@@ -67,7 +67,10 @@ std::vector<std::string> write_static_plots(const std::string& dir, const Case& 
   const Grid& g = c.grid;
   const auto ref = analytic_reference(c);
   const std::string ref_label = !ref ? "" : (ref->kind == "boussinesq_flat_punch" ? "Boussinesq" : "Hertz");
-  const bool traction = any_nonzero(f.tx) || any_nonzero(f.ty);
+  // With a friction bound (tangential problems) the tractions get their own figures, with +-f(p);
+  // otherwise nonzero tractions are drawn with the pressure.
+  const bool friction = !f.bound.empty();
+  const bool traction = !friction && (any_nonzero(f.tx) || any_nonzero(f.ty));
   auto path = [&](const char* name) { return (fs::path(dir) / name).string(); };
 
   // Centre lines: the row nearest y = 0 and the column nearest x = 0.
@@ -78,21 +81,21 @@ std::vector<std::string> write_static_plots(const std::string& dir, const Case& 
   const int i0 = nearest(g.x0, g.dx, g.nx, 0.0);
   {
     std::ostringstream s;
-    s << "# x p tx ty  (row j = " << j0 << ", y = " << num(g.yc(j0)) << ")\n";
+    s << "# x p tx ty f  (row j = " << j0 << ", y = " << num(g.yc(j0)) << ")\n";
     for (int i = 0; i < g.nx; ++i) {
       const std::size_t e = g.index(i, j0);
       s << num(g.xc(i)) << ' ' << num(field(f.p, e)) << ' ' << num(field(f.tx, e)) << ' ' << num(field(f.ty, e))
-        << '\n';
+        << ' ' << num(field(f.bound, e)) << '\n';
     }
     write_text_file(path("line_x.dat"), s.str());
   }
   if (g.dimension == 3) {
     std::ostringstream s;
-    s << "# y p tx ty  (column i = " << i0 << ", x = " << num(g.xc(i0)) << ")\n";
+    s << "# y p tx ty f  (column i = " << i0 << ", x = " << num(g.xc(i0)) << ")\n";
     for (int j = 0; j < g.ny; ++j) {
       const std::size_t e = g.index(i0, j);
       s << num(g.yc(j)) << ' ' << num(field(f.p, e)) << ' ' << num(field(f.tx, e)) << ' ' << num(field(f.ty, e))
-        << '\n';
+        << ' ' << num(field(f.bound, e)) << '\n';
     }
     write_text_file(path("line_y.dat"), s.str());
     std::ostringstream m;
@@ -153,9 +156,27 @@ std::vector<std::string> write_static_plots(const std::string& dir, const Case& 
     b << "\n";
     figures.push_back({stem, b.str()});
   };
+  // Tangential: t_x, t_y along a centre line between the friction bounds -f(p) and f(p).
+  auto traction_plot = [&](const char* stem, const char* data, const char* axis, double at, const char* other) {
+    std::ostringstream b;
+    b << "set grid\nset key top right\n"
+      << "set title \"" << c.name << ": tractions along " << axis;
+    if (g.dimension == 3) b << " (" << other << " = " << short_num(at * 1e3) << " mm)";
+    b << "\" noenhanced\n"
+      << "set xlabel \"" << axis << " (mm)\"\nset ylabel \"traction (MPa)\"\n"
+      << "plot \"" << data << "\" using ($1*1e3):($5*1e-6) with lines lw 2 lc rgb \"#808080\" title \"f(p)\""
+      << ", \\\n     \"" << data << "\" using ($1*1e3):(-$5*1e-6) with lines lw 2 dt 2 lc rgb \"#808080\" title \"-f(p)\""
+      << ", \\\n     \"" << data << "\" using ($1*1e3):($3*1e-6) with linespoints pt 7 ps 0.5 lw 1.5 title \"t_x\"";
+    if (g.dimension == 3)
+      b << ", \\\n     \"" << data << "\" using ($1*1e3):($4*1e-6) with linespoints pt 5 ps 0.5 lw 1.5 title \"t_y\"";
+    b << "\n";
+    figures.push_back({stem, b.str()});
+  };
   line_plot("pressure_x", "line_x.dat", "reference_x.dat", "x", g.yc(j0), "y");
+  if (friction) traction_plot("traction_x", "line_x.dat", "x", g.yc(j0), "y");
   if (g.dimension == 3) {
     line_plot("pressure_y", "line_y.dat", "reference_y.dat", "y", g.xc(i0), "x");
+    if (friction) traction_plot("traction_y", "line_y.dat", "y", g.xc(i0), "x");
     const double aspect = (g.y_max() - g.y0) / (g.x_max() - g.x0);
     std::ostringstream frame;
     frame << "set xlabel \"x (mm)\"\nset ylabel \"y (mm)\"\n"

@@ -1,7 +1,8 @@
 #pragma once
 // Plots of static results with gnuplot: pressure (and traction) along the centre lines with
-// the closed-form curve where one applies, the pressure map and the contact (stick/slip)
-// map. Writes plots.gp + *.dat into the output folder, then runs gnuplot there to produce
+// the closed-form curve where one applies, the tractions between -f(p) and f(p) along the
+// centre lines (tangential problems: fields.bound given), the pressure map and the contact
+// (stick/slip) map. Writes plots.gp + *.dat into the output folder, then runs gnuplot there to produce
 // SVG and PNG (pngcairo when available). Without gnuplot: one warning, no plots, no failure.
 #include <string>
 #include <vector>

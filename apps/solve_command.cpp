@@ -11,9 +11,9 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "fields_writer.hpp"
-#include "normal_run.hpp"
 #include "plot_writer.hpp"
 #include "summary_writer.hpp"
+#include "tangential_run.hpp"
 
 namespace dc::cli {
 namespace {
@@ -31,46 +31,90 @@ void print_line(const char* label, double value, const char* unit, const nlohman
   std::printf("\n");
 }
 
+/// The tangential lines of the report (from the summary, like the normal ones).
+void print_tangential(const Case& c, const nlohmann::json& s) {
+  const bool two_d = c.dimension == 2;
+  const auto& F = s["tangential_force"];
+  if (two_d)
+    std::printf("  %-16s %-12.5g %-5s\n", "tangential force", F[0].get<double>(), "N/m");
+  else
+    std::printf("  %-16s [%.5g, %.5g] N\n  %-16s %-12.5g %-5s\n", "tangential force", F[0].get<double>(),
+                F[1].get<double>(), "twisting moment", s["twisting_moment"].get<double>(), "N m");
+  if (s["creepage"].is_array()) {
+    std::printf("  %-16s [%.5g, %.5g]", "creepage", s["creepage"][0].get<double>(), s["creepage"][1].get<double>());
+    if (!two_d) std::printf(", spin %.5g 1/m", s["spin"].get<double>());
+    std::printf(" (%d marching steps)\n", s["marching_steps"].get<int>());
+  } else {
+    std::printf("  %-16s [%.5g, %.5g] m", "rigid shift", s["rigid_shift"][0].get<double>(),
+                s["rigid_shift"][1].get<double>());
+    if (!two_d) std::printf(", rotation %.5g rad", s["rotation"].get<double>());
+    std::printf("\n");
+  }
+  std::printf("  %-16s %d stick, %d slip; stick %s %.5g %s\n", "contact", s["n_stick"].get<int>(),
+              s["n_slip"].get<int>(), two_d ? "length" : "area", s["stick_area"].get<double>(), two_d ? "m" : "m^2");
+  if (!s.contains("steps")) return;
+  std::printf("  history (%zu steps):\n", s["steps"].size());
+  for (const auto& st : s["steps"]) {
+    std::printf("    step %d: normal force %.5g, tangential force [%.5g, %.5g], %d stick, %d slip, %s\n",
+                st["step"].get<int>(), st["normal_force"].get<double>(), st["tangential_force"][0].get<double>(),
+                st["tangential_force"][1].get<double>(), st["n_stick"].get<int>(), st["n_slip"].get<int>(),
+                st["solver"]["status"].get<std::string>().c_str());
+  }
+}
+
 int run_solve(const SolveArgs& args) {
   const Case c = load_case(args.case_path, args.sets, args.backend);
-  if (c.problem != ProblemKind::normal) not_implemented(c.problem);
+  if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential) not_implemented(c.problem);
   const std::string dir = prepare_output_dir(c, args.out);
 
-  NormalRun run = run_normal(c, !args.quiet);
+  StaticRun run = run_static(c, !args.quiet);
   nlohmann::json& s = run.summary;
   nlohmann::json files = {{"summary", "summary.json"}};
   if (c.output.fields) {
-    write_fields(dir, c.grid, run.fields);
+    if (run.history) {  // one file per step; fields.csv is the last
+      nlohmann::json per_step = nlohmann::json::array();
+      for (std::size_t k = 0; k < run.fields.size(); ++k) {
+        const std::string name = "fields_" + std::to_string(k) + ".csv";
+        write_fields(dir, c.grid, run.fields[k], name);
+        per_step.push_back(name);
+        s["steps"][k]["fields"] = name;
+      }
+      files["fields_steps"] = per_step;
+    }
+    write_fields(dir, c.grid, run.fields.back());
     files["fields"] = "fields.csv";
   }
   if (c.output.plots) {
+    Case plotted = c;
+    plotted.normal = run.normal;  // the closed-form curve of the last step's load
     nlohmann::json plots = nlohmann::json::array();
-    for (const auto& p : write_static_plots(dir, c, run.fields))
+    for (const auto& p : write_static_plots(dir, plotted, run.fields.back()))
       plots.push_back(std::filesystem::path(p).filename().string());
     files["plots"] = plots;
   }
   s["files"] = files;
   const std::string summary_path = write_summary(dir, s);
 
-  const SolverReport& r = run.solution.report;
+  const SolverReport& r = run.report;
   if (!args.quiet) {
     std::printf("%s: %s (%s, %d iterations, %.3g s; certificate %.2e)\n", c.name.c_str(), to_string(r.status),
                 r.backend.c_str(), r.iterations, r.time_s, r.certificate.worst());
     const nlohmann::json ref = s.contains("hertz") ? s["hertz"] : nlohmann::json();
     const bool two_d = c.dimension == 2;
-    print_line("normal force", run.solution.force, two_d ? "N/m" : "N", ref, "normal_force");
-    print_line("approach", run.solution.approach, "m", ref, "approach");
+    print_line("normal force", s["normal_force"].get<double>(), two_d ? "N/m" : "N", ref, "normal_force");
+    print_line("approach", s["approach"].get<double>(), "m", ref, "approach");
     print_line(two_d ? "contact width" : "contact area", s["contact_area"].get<double>(), two_d ? "m" : "m^2", ref,
                "contact_area");
     print_line("max pressure", s["max_pressure"].get<double>(), "Pa", ref, "max_pressure");
     std::printf("  %-16s %d of %zu elements\n", "in contact", s["n_contact"].get<int>(), c.grid.size());
+    if (c.problem == ProblemKind::tangential) print_tangential(c, s);
     std::printf("wrote %s\n", summary_path.c_str());
     std::fflush(stdout);
   }
   if (s.value("contact_touches_boundary", false))
     std::cerr << "warning: grid: the contact reaches the edge of the grid; the result is truncated "
                  "(enlarge grid.extent or grid.x/grid.y)\n";
-  if (!run.converged()) {
+  if (!run.converged) {
     const std::string what = std::string(to_string(r.status)) + (r.message.empty() ? "" : ": " + r.message);
     if (c.solver.accept_unconverged) {
       std::cerr << "warning: solver: " << what << " (accepted: solver.accept_unconverged)\n";
@@ -93,7 +137,11 @@ void add_solve_command(CLI::App& app, int& exit_code) {
       "checks every key, solves it and writes into the output folder: summary.json (force, approach, contact "
       "area, peak pressure, solver status and certificate, and the Hertz/Boussinesq values when a closed form "
       "exists), fields.csv (x,y,p,tx,ty,sx,sy,state per element; state 0 free, 1 stick, 2 slip - a normal "
-      "problem marks every element in contact with 1) and plots (SVG and PNG via gnuplot). Any key can be "
+      "problem marks every element in contact with 1) and plots (SVG and PNG via gnuplot). A tangential case "
+      "(problem \"tangential\": shift, torsion or steady rolling) adds tangential_force, twisting_moment, "
+      "rigid_shift/rotation or creepage/spin, n_stick, n_slip and stick_area to summary.json, and plots of the "
+      "tractions between -f(p) and f(p); with a loading history (tangential.history) summary.json lists the "
+      "steps and fields_<k>.csv holds each step (fields.csv the last). Any key can be "
       "changed without editing the file: --set grid.nx=128 --set normal.force=200. Exit code 0 converged, "
       "2 bad input, 3 not converged (results are still written), 4 internal error.");
   sub->add_option("case", args->case_path, "case file (JSON)")->required();

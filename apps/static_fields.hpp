@@ -16,6 +16,7 @@ struct StaticFields {
   std::vector<double> p;             ///< pressure (Pa)
   std::vector<double> tx, ty;        ///< tangential traction (Pa); empty = 0
   std::vector<double> sx, sy;        ///< slip (m); empty = 0
+  std::vector<double> bound;         ///< friction bound f(p) (Pa); empty for a normal problem
   std::vector<int> state;            ///< ElementState per element
   double contact_threshold = 0.0;    ///< elements with p > this are in contact
 };

@@ -1,0 +1,168 @@
+#include "tangential_run.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "normal_run.hpp"
+#include "progress.hpp"
+#include "summary_writer.hpp"
+
+namespace dc::cli {
+namespace {
+
+/// The normal load of each step: the case's, replaced by a history step's "normal" from that
+/// step on (the block was validated by solve_tangential_case).
+std::vector<NormalSpec> step_loads(const Case& c, std::size_t n_steps) {
+  std::vector<NormalSpec> out(n_steps, c.normal);
+  const nlohmann::json& t = c.tangential;
+  if (!t.is_object() || !t.contains("history") || !t["history"].is_array()) return out;
+  NormalSpec n = c.normal;
+  for (std::size_t k = 0; k < n_steps && k < t["history"].size(); ++k) {
+    const nlohmann::json& s = t["history"][k];
+    if (s.is_object() && s.contains("normal") && s["normal"].is_object()) {
+      const nlohmann::json& v = s["normal"];
+      const bool force = v.contains("force");
+      n.control = force ? Control::force : Control::approach;
+      n.value = v.value(force ? "force" : "approach", n.value);
+    }
+    out[k] = n;
+  }
+  return out;
+}
+
+/// A solver leaves round-off pressures outside the contact; those within the certificate
+/// tolerance of the peak count as free (as in run_normal).
+double contact_threshold(const Case& c) { return std::max(c.solver.certificate_tol, 1e-12); }
+
+nlohmann::json pair(double x, double y) { return nlohmann::json::array({x, y}); }
+
+nlohmann::json friction_json(const FrictionSpec& f) {
+  nlohmann::json j = {{"law", f.law}};
+  if (f.law == "coulomb") j["mu"] = f.mu;
+  if (f.law == "tresca") j["bound"] = f.bound;
+  if (f.law == "table") {
+    j["pressure"] = f.pressure;
+    j["bound"] = f.bound_table;
+  }
+  return j;
+}
+
+/// Keys of the whole case that are not per step (left out of the entries of "steps").
+bool case_level_key(const std::string& key) {
+  static const char* keys[] = {"schema", "name",     "problem",  "dimension", "version",
+                               "grid",   "materials", "profile", "friction",  "regime"};
+  return std::any_of(std::begin(keys), std::end(keys), [&](const char* k) { return key == k; });
+}
+
+bool has_history(const Case& c) { return c.tangential.is_object() && c.tangential.contains("history"); }
+
+}  // namespace
+
+bool TangentialRun::converged() const {
+  return !steps.empty() && std::all_of(steps.begin(), steps.end(), [](const TangentialSolution& s) {
+           return s.report.status == SolveStatus::converged;
+         });
+}
+
+const SolverReport& TangentialRun::report() const {
+  for (const auto& s : steps)
+    if (s.report.status != SolveStatus::converged) return s.report;
+  return steps.back().report;
+}
+
+StaticFields tangential_fields(const TangentialSolution& s, double relative_threshold) {
+  StaticFields f = normal_fields(s.normal.pressure, relative_threshold);
+  f.tx = s.tx;
+  f.ty = s.ty;
+  f.sx = s.sx;
+  f.sy = s.sy;
+  f.bound = s.bound;
+  for (std::size_t e = 0; e < f.state.size(); ++e)
+    if (f.state[e] != kFree) f.state[e] = (e < s.state.size() && s.state[e] == kStick) ? kStick : kSlip;
+  return f;
+}
+
+nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, const StaticFields& f) {
+  nlohmann::json s = normal_summary(c, sol.normal, f);
+  s["normal_solver"] = s["solver"];
+  s["solver"] = to_json(sol.report);
+  const std::string regime = c.tangential.value("regime", "");
+  const bool rolling = regime == "rolling";
+  s["regime"] = regime;
+  if (c.friction) s["friction"] = friction_json(*c.friction);
+  const auto& a = sol.amplitudes;
+  const auto& r = sol.resultants;
+  s["tangential_force"] = pair(r[0], r[1]);
+  s["twisting_moment"] = r[2];
+  s["creepage"] = rolling ? pair(a[0], a[1]) : nlohmann::json();
+  s["spin"] = rolling ? nlohmann::json(a[2]) : nlohmann::json();
+  s["rigid_shift"] = rolling ? nlohmann::json() : pair(a[0], a[1]);
+  s["rotation"] = rolling ? nlohmann::json() : nlohmann::json(a[2]);
+  if (rolling) s["velocity"] = c.tangential.value("velocity", 1.0);
+  int n_stick = 0, n_slip = 0;
+  double capacity = 0.0;
+  for (std::size_t e = 0; e < f.state.size(); ++e) {
+    n_stick += f.state[e] == kStick;
+    n_slip += f.state[e] == kSlip;
+    if (e < sol.bound.size()) capacity += sol.bound[e];
+  }
+  s["n_stick"] = n_stick;
+  s["n_slip"] = n_slip;
+  s["stick_area"] = n_stick * c.grid.area();
+  s["slip_area"] = n_slip * c.grid.area();
+  s["friction_capacity"] = capacity * c.grid.area();  // sum f(p) A: the largest tangential force
+  s["outer_iterations"] = sol.outer.iterations;
+  s["outer_last_change"] = sol.outer.last_change;
+  s["outer_converged"] = sol.outer.converged;
+  s["marching_steps"] = rolling ? nlohmann::json(sol.marching_steps) : nlohmann::json();
+  return s;
+}
+
+TangentialRun run_tangential(const Case& c, bool progress) {
+  TangentialRun run;
+  {
+    Progress reporter("solving " + c.name + " (" + c.solver.backend + ")", progress);
+    run.steps = solve_tangential_case(c, reporter.callback());
+    reporter.finish();
+  }
+  run.normal = step_loads(c, run.steps.size());
+  nlohmann::json steps = nlohmann::json::array();
+  for (std::size_t k = 0; k < run.steps.size(); ++k) {
+    Case step_case = c;
+    step_case.normal = run.normal[k];
+    run.fields.push_back(tangential_fields(run.steps[k], contact_threshold(c)));
+    run.summary = tangential_summary(step_case, run.steps[k], run.fields.back());
+    nlohmann::json entry = {{"step", k}};
+    for (auto it = run.summary.begin(); it != run.summary.end(); ++it)
+      if (!case_level_key(it.key())) entry[it.key()] = it.value();
+    steps.push_back(std::move(entry));
+  }
+  if (has_history(c)) {
+    run.summary["steps"] = steps;
+    run.summary["all_steps_converged"] = run.converged();
+  }
+  return run;
+}
+
+StaticRun run_static(const Case& c, bool progress) {
+  StaticRun out;
+  if (c.problem == ProblemKind::tangential) {
+    TangentialRun run = run_tangential(c, progress);
+    out.summary = std::move(run.summary);
+    out.fields = std::move(run.fields);
+    out.normal = run.normal.back();
+    out.report = run.report();
+    out.converged = run.converged();
+    out.history = has_history(c);
+    return out;
+  }
+  NormalRun run = run_normal(c, progress);
+  out.summary = std::move(run.summary);
+  out.fields.push_back(std::move(run.fields));
+  out.normal = c.normal;
+  out.report = run.solution.report;
+  out.converged = run.converged();
+  return out;
+}
+
+}  // namespace dc::cli

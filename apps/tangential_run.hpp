@@ -1,0 +1,56 @@
+#pragma once
+// Solving a tangential case for the command line (progress, fields, summary), and the
+// static run that `solve` and `compare` use for either static problem (normal, tangential).
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "case_model.hpp"
+#include "solver_report.hpp"
+#include "static_fields.hpp"
+#include "tangential_problem.hpp"
+
+namespace dc::cli {
+
+struct TangentialRun {
+  std::vector<TangentialSolution> steps;  ///< one, or one per history step
+  std::vector<StaticFields> fields;       ///< per step
+  std::vector<NormalSpec> normal;         ///< the normal load of each step
+  nlohmann::json summary;                 ///< summary.json content (without "files"): the last
+                                          ///< step's keys, plus "steps" with a history
+  bool converged() const;                 ///< every step converged
+  /// The report to show: the first step that did not converge, else the last.
+  const SolverReport& report() const;
+};
+
+/// Solves with dc::solve_tangential_case, a progress line on stderr when `progress` and the
+/// solve takes over a second.
+TangentialRun run_tangential(const Case& c, bool progress);
+
+/// The contact fields of one tangential step: pressure, traction, slip, friction bound, and
+/// the states 0 free / 1 stick / 2 slip. An element is in contact when p exceeds
+/// `relative_threshold` times the peak (as for the normal problem); its stick/slip state is the
+/// solver's (an element in contact without friction capacity slips).
+StaticFields tangential_fields(const TangentialSolution& solution, double relative_threshold);
+
+/// The keys of one tangential step (CASES.md): the normal keys of `c` (whose `normal` is the
+/// step's load) plus tangential_force, twisting_moment, creepage, spin, rigid_shift, rotation,
+/// n_stick, n_slip, stick_area, the outer-loop and marching counts; `solver` is the
+/// tangential report (its certificate holds the normal residuals too).
+nlohmann::json tangential_summary(const Case& c, const TangentialSolution& solution, const StaticFields& fields);
+
+/// A solved static case, whichever problem it was: what `solve` writes and `compare` compares.
+struct StaticRun {
+  nlohmann::json summary;            ///< summary.json content (without "files")
+  std::vector<StaticFields> fields;  ///< one per step; the last is fields.csv
+  NormalSpec normal;                 ///< the normal load of the last step (closed-form curves)
+  SolverReport report;               ///< see TangentialRun::report()
+  bool converged = false;
+  bool history = false;              ///< a loading history: summary "steps", fields_<k>.csv
+};
+
+/// Runs a normal or tangential case (run_normal / run_tangential).
+StaticRun run_static(const Case& c, bool progress);
+
+}  // namespace dc::cli

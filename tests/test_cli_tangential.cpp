@@ -1,0 +1,279 @@
+// `dyncontact solve` / `compare` on tangential cases, run as a program: the summary.json keys
+// of the contract (CASES.md), fields.csv with stick and slip, Carter's creepage for steady
+// rolling, a loading history with one entry per step, and bad tangential inputs (exit 2,
+// the message naming the key). Small grids and the Ipopt backend keep the file fast.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <numbers>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+struct Result {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+json example(const std::string& name) {
+  return json::parse(slurp(fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / (name + ".json")));
+}
+
+/// Rows of fields.csv: the header, then the state column of every row.
+struct FieldsFile {
+  std::string header;
+  std::vector<int> states;
+};
+
+FieldsFile read_fields(const fs::path& p) {
+  FieldsFile f;
+  std::ifstream in(p);
+  std::getline(in, f.header);
+  for (std::string line; std::getline(in, line);) {
+    const auto comma = line.rfind(',');
+    if (comma != std::string::npos) f.states.push_back(std::stoi(line.substr(comma + 1)));
+  }
+  return f;
+}
+
+class CliTangential : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("dc_cli_tan_" + std::to_string(::getpid()) + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(dir_);
+  }
+
+  /// Runs `dyncontact ARGS` (ARGS already shell-quoted) in the test folder.
+  Result run(const std::string& args) const {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string cmd = "cd " + quote(dir_.string()) + " && " + quote(DYNCONTACT_BINARY) + " " + args + " >" +
+                            quote(out.string()) + " 2>" + quote(err.string());
+    const int status = std::system(cmd.c_str());
+    Result r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+  }
+
+  /// Writes example `name` with `edit` applied (Ipopt, no plots) and returns the file name.
+  std::string case_file(const std::string& name, const std::function<void(json&)>& edit = {}) const {
+    json doc = example(name);
+    doc["solver"]["backend"] = "ipopt";
+    doc["output"] = {{"plots", false}};
+    if (edit) edit(doc);
+    const std::string file = name + ".json";
+    std::ofstream(dir_ / file) << doc.dump(2);
+    return file;
+  }
+
+  /// The cattaneo-sphere case with `edit` must be rejected with exit 2 and a message naming `key`.
+  void expect_rejected(const std::function<void(json&)>& edit, const std::string& key,
+                       const std::string& phrase = "") const {
+    const std::string file = case_file("cattaneo-sphere", [&](json& d) {
+      d["grid"]["nx"] = 8;
+      d["grid"]["ny"] = 8;
+      edit(d);
+    });
+    const Result r = run("solve " + file + " --out rejected -q");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("error: " + key + ":"), std::string::npos) << "stderr: " << r.err;
+    if (!phrase.empty()) {
+      EXPECT_NE(r.err.find(phrase), std::string::npos) << "stderr: " << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "rejected" / "summary.json"));
+  }
+
+  fs::path dir_;
+};
+
+const char* const kTangentialExamples[] = {"cattaneo-sphere", "torsion-sphere", "carter-2d", "rolling-sphere",
+                                           "spence-sphere"};
+
+TEST_F(CliTangential, ExamplesMatchTheFilesAndValidate) {
+  const Result list = run("example --list");
+  EXPECT_EQ(list.code, 0);
+  for (const char* name : kTangentialExamples) {
+    SCOPED_TRACE(name);
+    EXPECT_NE(list.out.find(name), std::string::npos);
+    const Result e = run(std::string("example ") + name);
+    EXPECT_EQ(e.code, 0);
+    EXPECT_EQ(e.out, slurp(fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / (std::string(name) + ".json")));
+    const json doc = json::parse(e.out);
+    EXPECT_EQ(doc["name"], name);
+    EXPECT_EQ(doc["problem"], "tangential");
+    std::ofstream(dir_ / "example.json") << e.out;
+    const Result v = run("validate example.json");
+    EXPECT_EQ(v.code, 0) << v.err;
+  }
+}
+
+TEST_F(CliTangential, CattaneoSphereWritesTheContract) {
+  // 16 x 16 instead of the example's 32 x 32: the same physics in a second.
+  const std::string file = case_file("cattaneo-sphere", [](json& d) {
+    d["grid"]["nx"] = 16;
+    d["grid"]["ny"] = 16;
+  });
+  const Result r = run("solve " + file + " --out result");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("tangential force"), std::string::npos) << r.out;
+  const fs::path out = dir_ / "result";
+  ASSERT_TRUE(fs::exists(out / "summary.json"));
+  const json s = json::parse(slurp(out / "summary.json"));
+  for (const char* key : {"schema", "name", "problem", "dimension", "solver", "normal_force", "approach",
+                          "contact_area", "max_pressure", "n_contact", "tangential_force", "twisting_moment",
+                          "creepage", "spin", "rigid_shift", "rotation", "n_stick", "n_slip", "stick_area",
+                          "outer_iterations", "outer_last_change", "marching_steps"})
+    EXPECT_TRUE(s.contains(key)) << key;
+  for (const char* key : {"backend", "status", "iterations", "time_s", "objective", "fallback_used", "certificate"})
+    EXPECT_TRUE(s["solver"].contains(key)) << key;
+  for (const char* key : {"complementarity", "friction_law", "gap_function"})
+    EXPECT_TRUE(s["solver"]["certificate"].contains(key)) << key;
+  EXPECT_EQ(s["name"], "cattaneo-sphere");
+  EXPECT_EQ(s["problem"], "tangential");
+  EXPECT_EQ(s["solver"]["status"], "converged");
+  EXPECT_EQ(s["solver"]["backend"], "ipopt");
+  // The prescribed force, on the body.
+  ASSERT_TRUE(s["tangential_force"].is_array());
+  ASSERT_EQ(s["tangential_force"].size(), 2u);
+  EXPECT_NEAR(s["tangential_force"][0].get<double>(), -15.0, 1e-6);
+  EXPECT_NEAR(s["tangential_force"][1].get<double>(), 0.0, 1e-6);
+  EXPECT_NEAR(s["normal_force"].get<double>(), 100.0, 1e-3);
+  // Shift regime: a rigid shift (towards +x, opposite to the force on the body), no creepage.
+  ASSERT_TRUE(s["rigid_shift"].is_array());
+  EXPECT_GT(s["rigid_shift"][0].get<double>(), 0.0);
+  EXPECT_TRUE(s["creepage"].is_null());
+  const int n_stick = s["n_stick"].get<int>(), n_slip = s["n_slip"].get<int>();
+  EXPECT_GT(n_stick, 0);
+  EXPECT_GT(n_slip, 0);
+  EXPECT_EQ(n_stick + n_slip, s["n_contact"].get<int>());
+  const double area = s["grid"]["dx"].get<double>() * s["grid"]["dy"].get<double>();
+  EXPECT_NEAR(s["stick_area"].get<double>(), n_stick * area, 1e-9 * area);
+
+  const FieldsFile f = read_fields(out / "fields.csv");
+  EXPECT_EQ(f.header, "x,y,p,tx,ty,sx,sy,state");
+  EXPECT_EQ(f.states.size(), 16u * 16u);
+  const std::multiset<int> states(f.states.begin(), f.states.end());
+  EXPECT_EQ(static_cast<int>(states.count(1)), n_stick);
+  EXPECT_EQ(static_cast<int>(states.count(2)), n_slip);
+  EXPECT_GT(states.count(0), 0u);
+}
+
+TEST_F(CliTangential, CarterRollingCreepage) {
+  const Result r = run("solve " + case_file("carter-2d") + " --out carter -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json s = json::parse(slurp(dir_ / "carter" / "summary.json"));
+  EXPECT_EQ(s["solver"]["status"], "converged");
+  EXPECT_EQ(s["dimension"], 2);
+  EXPECT_GT(s["marching_steps"].get<int>(), 0);
+  EXPECT_TRUE(s["rigid_shift"].is_null());
+  const double E = 2.1e11, nu = 0.3, R = 0.02, P = 1.0e5, mu = 0.3, F = -15000.0;
+  const double E_star = E / (2.0 * (1.0 - nu * nu));
+  const double a = std::sqrt(4.0 * P * R / (std::numbers::pi * E_star));
+  const double carter = mu * a / R * (1.0 - std::sqrt(1.0 - std::abs(F) / (mu * P)));
+  EXPECT_NEAR(s["tangential_force"][0].get<double>(), F, 1e-6 * std::abs(F));
+  ASSERT_TRUE(s["creepage"].is_array());
+  const double xi = s["creepage"][0].get<double>();
+  EXPECT_GT(xi, 0.0);  // a braking force on the body: the body creeps forwards (F = -sgn(xi)|F|)
+  EXPECT_NEAR(std::abs(xi), carter, 0.03 * carter) << "Carter |xi| = " << carter;
+  EXPECT_EQ(s["n_stick"].get<int>() + s["n_slip"].get<int>(), s["n_contact"].get<int>());
+  EXPECT_GT(s["n_stick"].get<int>(), 0);
+  EXPECT_GT(s["n_slip"].get<int>(), 0);
+}
+
+TEST_F(CliTangential, LoadingHistoryWritesEveryStep) {
+  const std::string file = case_file("spence-sphere", [](json& d) {
+    d["grid"]["nx"] = 16;
+    d["grid"]["ny"] = 16;
+  });
+  const Result r = run("solve " + file + " --out history");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  const fs::path out = dir_ / "history";
+  const json s = json::parse(slurp(out / "summary.json"));
+  ASSERT_TRUE(s.contains("steps"));
+  ASSERT_EQ(s["steps"].size(), 3u);
+  const double loads[] = {50.0, 100.0, 150.0};
+  for (std::size_t k = 0; k < 3; ++k) {
+    SCOPED_TRACE(k);
+    const json& st = s["steps"][k];
+    for (const char* key : {"normal_force", "tangential_force", "twisting_moment", "rigid_shift", "n_stick", "n_slip",
+                            "stick_area", "n_contact", "solver"})
+      EXPECT_TRUE(st.contains(key)) << key;
+    EXPECT_NEAR(st["normal_force"].get<double>(), loads[k], 1e-6 * loads[k]);
+    EXPECT_EQ(st["solver"]["status"], "converged");
+    EXPECT_NEAR(st["tangential_force"][0].get<double>(), 0.0, 1e-6);
+    const std::string name = "fields_" + std::to_string(k) + ".csv";
+    EXPECT_EQ(st["fields"], name);
+    EXPECT_TRUE(fs::exists(out / name)) << name;
+    EXPECT_EQ(st["n_stick"].get<int>() + st["n_slip"].get<int>(), st["n_contact"].get<int>());
+  }
+  // The contact grows with the load; the top level is the last step.
+  EXPECT_LT(s["steps"][0]["n_contact"].get<int>(), s["steps"][2]["n_contact"].get<int>());
+  EXPECT_EQ(s["n_contact"], s["steps"][2]["n_contact"]);
+  EXPECT_EQ(s["normal_force"], s["steps"][2]["normal_force"]);
+  EXPECT_EQ(slurp(out / "fields.csv"), slurp(out / "fields_2.csv"));
+  // Dissimilar materials (kappa != 0): the indentation alone makes part of the contact slip.
+  EXPECT_GT(s["n_slip"].get<int>(), 0);
+  EXPECT_GT(s["n_stick"].get<int>(), 0);
+}
+
+TEST_F(CliTangential, BadTangentialInputsNameTheKey) {
+  expect_rejected([](json& d) { d["tangential"]["forse"] = {1.0, 0.0}; }, "tangential.forse", "unknown key");
+  expect_rejected([](json& d) { d.erase("friction"); }, "friction");
+  expect_rejected([](json& d) { d["friction"]["mu"] = -0.3; }, "friction.mu");
+  expect_rejected([](json& d) { d["tangential"]["force"] = {-40.0, 0.0}; }, "tangential.force[0]", "gross sliding");
+  expect_rejected([](json& d) { d["tangential"]["regime"] = "skid"; }, "tangential.regime");
+}
+
+TEST_F(CliTangential, CompareReportsTractionDifferences) {
+  const std::string file = case_file("cattaneo-sphere", [](json& d) {
+    d["grid"]["nx"] = 12;
+    d["grid"]["ny"] = 12;
+  });
+  const Result r = run("compare " + file + " --backends ipopt,ipopt --out cmp -q");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("d_traction"), std::string::npos) << r.out;
+  const json list = json::parse(slurp(dir_ / "cmp" / "compare.json"));
+  ASSERT_EQ(list.size(), 2u);
+  for (const auto& e : list) {
+    EXPECT_EQ(e["status"], "converged");
+    EXPECT_TRUE(e["certificate"].contains("friction_law"));
+    EXPECT_NEAR(e["summary"]["tangential_force"][0].get<double>(), -15.0, 1e-6);
+  }
+  EXPECT_LT(list[1]["difference_from_first"]["traction"].get<double>(), 1e-6);
+  EXPECT_LT(list[1]["difference_from_first"]["tangential_force"].get<double>(), 1e-6);
+}
+
+}  // namespace
