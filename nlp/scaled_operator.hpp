@@ -11,7 +11,8 @@ class ScaledOperator final : public LinearOperator {
   std::size_t cols() const override { return op_.cols(); }
   void apply(const double* x, double* y) const override {
     op_.apply(x, y);
-    for (std::size_t i = 0; i < op_.rows(); ++i) y[i] *= scale_;
+    const std::size_t n = op_.rows();
+    for (std::size_t i = 0; i < n; ++i) y[i] *= scale_;
   }
   double diagonal(std::size_t i) const override { return scale_ * op_.diagonal(i); }
   Eigen::MatrixXd to_dense(std::size_t max_entries) const override { return scale_ * op_.to_dense(max_entries); }
