@@ -8,7 +8,7 @@ namespace dc::cli {
 struct BundledExample {
   const char* name;
   const char* summary;  ///< one line for `dyncontact example --list`
-  const char* text;     ///< the case file, byte for byte as examples/<name>.json
+  const char* text = nullptr;  ///< the case file, byte for byte as examples/<name>.json
 };
 
 const std::vector<BundledExample>& bundled_examples();

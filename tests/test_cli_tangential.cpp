@@ -19,28 +19,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_runner.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
+using dc::test::slurp;
+using Result = dc::test::CliResult;
+const auto& quote = dc::test::shell_quote;
 
 json example(const std::string& name) {
   return json::parse(slurp(fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / (name + ".json")));
@@ -63,31 +51,8 @@ FieldsFile read_fields(const fs::path& p) {
   return f;
 }
 
-class CliTangential : public ::testing::Test {
+class CliTangential : public dc::test::CliTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("dc_cli_tan_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    if (!HasFailure()) fs::remove_all(dir_);
-  }
-
-  /// Runs `dyncontact ARGS` (ARGS already shell-quoted) in the test folder.
-  Result run(const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd = "cd " + quote(dir_.string()) + " && " + quote(DYNCONTACT_BINARY) + " " + args + " >" +
-                            quote(out.string()) + " 2>" + quote(err.string());
-    const int status = std::system(cmd.c_str());
-    Result r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
-
   /// Writes example `name` with `edit` applied (Ipopt, no plots) and returns the file name.
   std::string case_file(const std::string& name, const std::function<void(json&)>& edit = {}) const {
     json doc = example(name);
@@ -115,8 +80,6 @@ class CliTangential : public ::testing::Test {
     }
     EXPECT_FALSE(fs::exists(dir_ / "rejected" / "summary.json"));
   }
-
-  fs::path dir_;
 };
 
 const char* const kTangentialExamples[] = {"cattaneo-sphere", "torsion-sphere", "carter-2d", "rolling-sphere",

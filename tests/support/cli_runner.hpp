@@ -1,0 +1,31 @@
+#pragma once
+// Runs the built `dyncontact` program from tests: a fresh folder per test, exit code and
+// captured output.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace dc::test {
+
+struct CliResult {
+  int code = -1;
+  std::string out, err;
+};
+
+/// The whole file as a string (empty when missing).
+std::string slurp(const std::filesystem::path& p);
+/// Single-quoted for the shell.
+std::string shell_quote(const std::string& s);
+
+/// Fixture: a temporary folder per test (kept when the test fails) and run().
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override;
+  void TearDown() override;
+  /// Runs `dyncontact ARGS` (ARGS already shell-quoted) in the test folder.
+  CliResult run(const std::string& args) const;
+  std::filesystem::path dir_;
+};
+
+}  // namespace dc::test
