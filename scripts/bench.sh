@@ -1,18 +1,22 @@
 #!/usr/bin/env bash
-# Builds (scripts/setup.sh) and times the normal-contact backends on a Hertz sphere.
-#   scripts/bench.sh            sizes 32,64,128,256,512 (ipopt up to 128^2, nlopt up to 64^2)
-#   scripts/bench.sh --quick    sizes 32,64
+# Builds (scripts/setup.sh) and times the backends on a Hertz sphere: the normal problem,
+# then the tangential shift (Cattaneo) and steady rolling on the same sphere.
+#   scripts/bench.sh            normal: 32..512 (ipopt up to 128^2, nlopt up to 64^2);
+#                               shift: 32..256; rolling: 32..128 (native and auto)
+#   scripts/bench.sh --quick    32,64 for each
 # --sizes/--backends override the defaults; other arguments go to dyncontact_bench (e.g. --repeat 3, --force, --csv out/bench.csv).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 BUILD_DIR="${DYNCONTACT_BUILD_DIR:-build}"
 sizes="32,64,128,256,512"
+shift_sizes="32,64,128,256"
+rolling_sizes="32,64,128"
 backends="native,ipopt,nlopt"
 args=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
-    --quick) sizes="32,64" ;;
+    --quick) sizes="32,64"; shift_sizes="32,64"; rolling_sizes="32,64" ;;
     --sizes) sizes="${2:?--sizes needs a value}"; shift ;;
     --sizes=*) sizes="${1#--sizes=}" ;;
     --backends) backends="${2:?--backends needs a value}"; shift ;;
@@ -27,4 +31,10 @@ scripts/setup.sh
   echo "bench: $BUILD_DIR/bin/dyncontact_bench missing (configured with -DDYNCONTACT_BUILD_BENCH=OFF?)" >&2
   exit 1
 }
-exec "$BUILD_DIR/bin/dyncontact_bench" --backends "$backends" --sizes "$sizes" "${args[@]}"
+bench="$BUILD_DIR/bin/dyncontact_bench"
+echo "== normal contact"
+"$bench" --backends "$backends" --sizes "$sizes" "${args[@]}"
+echo; echo "== tangential shift (Cattaneo, Q = mu P / 2)"
+"$bench" --problem shift --backends native,auto --sizes "$shift_sizes" "${args[@]}"
+echo; echo "== steady rolling (F = mu P / 2)"
+"$bench" --problem rolling --backends native --sizes "$rolling_sizes" "${args[@]}"

@@ -41,6 +41,7 @@
 #include "normal_problem.hpp"
 #include "profile.hpp"
 #include "solver_report.hpp"
+#include "tangential_problem.hpp"
 
 namespace {
 
@@ -56,6 +57,7 @@ struct Options {
   int max_iter = 1000;
   std::string operator_kind = "auto";
   std::string csv;
+  std::string problem = "normal";  ///< normal | shift (Cattaneo, Q = mu P / 2) | rolling (F = mu P / 2)
 };
 
 struct Row {
@@ -68,6 +70,7 @@ struct Row {
   double setup_s = std::numeric_limits<double>::quiet_NaN();
   double solve_s = std::numeric_limits<double>::quiet_NaN();
   int iterations = 0;
+  int outer = 0;         ///< tangential: outer iterations (shift) or marching steps (rolling)
   double certificate = std::numeric_limits<double>::quiet_NaN();
   double p0_error = std::numeric_limits<double>::quiet_NaN();  ///< (max p - p0) / p0
   double rss_mib = std::numeric_limits<double>::quiet_NaN();
@@ -78,7 +81,7 @@ nlohmann::json to_json(const Row& r) {
   return {{"backend", r.backend}, {"n", r.n},         {"status", r.status},
           {"message", r.message}, {"used", r.used},   {"operator", r.op},
           {"setup_s", num(r.setup_s)}, {"solve_s", num(r.solve_s)},
-          {"iterations", r.iterations}, {"certificate", num(r.certificate)},
+          {"iterations", r.iterations}, {"outer", r.outer}, {"certificate", num(r.certificate)},
           {"p0_error", num(r.p0_error)}, {"rss_mib", num(r.rss_mib)}};
 }
 
@@ -96,6 +99,7 @@ Row from_json(const nlohmann::json& j) {
   r.setup_s = num("setup_s");
   r.solve_s = num("solve_s");
   r.iterations = j.at("iterations");
+  r.outer = j.at("outer");
   r.certificate = num("certificate");
   r.p0_error = num("p0_error");
   r.rss_mib = num("rss_mib");
@@ -119,6 +123,52 @@ dc::OperatorKind parse_operator(const std::string& kind) {
   if (kind == "dense") return dc::OperatorKind::dense;
   if (kind == "fft") return dc::OperatorKind::fft;
   return dc::OperatorKind::automatic;
+}
+
+/// Tangential cases on the same sphere, Coulomb mu = 0.3: shift by Q = mu P / 2 (error: rigid
+/// shift vs Mindlin) or steady rolling by F = mu P / 2. Iterations: the last inner solve's.
+void run_tangential(const std::string& problem, int n, const dc::SolverSpec& solver, Row& row, double& setup_s,
+                    double& solve_s) {
+  using clock = std::chrono::steady_clock;
+  constexpr double kMu = 0.3;
+  const dc::MaterialPair materials = steel_on_steel();
+  const dc::hertz::SphereSolution hertz = dc::hertz::sphere(kRadius, kForce, materials.E_star());
+  const double half = 1.2 * hertz.a;
+  dc::ProfileSpec profile;
+  profile.type = dc::ProfileType::sphere;
+  profile.radius = kRadius;
+  const auto t0 = clock::now();
+  const dc::Grid grid = dc::Grid::make(3, n, n, -half, half, -half, half);
+  dc::TangentialProblem tp(grid, materials, dc::profile_heights(profile, grid), dc::FrictionLaw::coulomb(kMu));
+  const auto t1 = clock::now();
+  const dc::NormalSpec normal{dc::Control::force, kForce};
+  const dc::ModeControl force{dc::ModeControl::Kind::resultant, -0.5 * kMu * kForce};
+  dc::TangentialSolution sol;
+  if (problem == "shift") {
+    dc::TangentialLoad load;
+    load.normal = normal;
+    load.modes[0] = force;
+    sol = tp.step(load, solver);
+    row.outer = sol.outer.iterations;
+    const double shift = 3 * kMu * kForce / (16 * hertz.a) * materials.mindlin_compliance() *
+                         (1 - std::pow(0.5, 2.0 / 3.0));
+    row.p0_error = sol.amplitudes[0] / shift - 1.0;
+  } else {
+    dc::RollingLoad load;
+    load.normal = normal;
+    load.modes[0] = force;
+    sol = tp.steady_rolling(load, solver);
+    row.outer = sol.marching_steps;
+  }
+  const auto t2 = clock::now();
+  setup_s = std::chrono::duration<double>(t1 - t0).count();
+  solve_s = std::chrono::duration<double>(t2 - t1).count();
+  row.status = dc::to_string(sol.report.status);
+  row.message = sol.report.message;
+  row.used = sol.report.backend;
+  row.op = sol.report.operator_kind;
+  row.iterations = sol.report.iterations;
+  row.certificate = sol.report.certificate.worst();
 }
 
 /// One (backend, size): set up and solve `repeat` times, keep the best times.
@@ -151,7 +201,16 @@ Row run_case(const std::string& backend, int n, const Options& options) {
     double best_setup = std::numeric_limits<double>::infinity();
     double best_solve = std::numeric_limits<double>::infinity();
     double worst_certificate = 0.0;
-    for (int k = 0; k < options.repeat; ++k) {
+    if (options.problem != "normal") {
+      for (int k = 0; k < options.repeat; ++k) {
+        double setup_s = 0.0, solve_s = 0.0;
+        run_tangential(options.problem, n, solver, row, setup_s, solve_s);
+        best_setup = std::min(best_setup, setup_s);
+        best_solve = std::min(best_solve, solve_s);
+        worst_certificate = std::max(worst_certificate, row.certificate);
+      }
+    }
+    for (int k = 0; k < options.repeat && options.problem == "normal"; ++k) {
       const auto t0 = clock::now();
       const dc::Grid grid = dc::Grid::make(3, n, n, -half, half, -half, half);
       dc::NormalProblem problem(grid, materials, dc::profile_heights(profile, grid),
@@ -263,9 +322,9 @@ std::string format_number(const char* format, double value) {
 }
 
 void print_header() {
-  std::printf("%-8s %9s %8s %9s %10s %7s %11s %10s %9s  %s\n", "backend", "grid", "N",
-              "setup(s)", "solve(s)", "iters", "certificate", "err p0(%)", "RSS(MiB)", "status");
-  std::printf("%s\n", std::string(104, '-').c_str());
+  std::printf("%-8s %9s %8s %9s %10s %7s %6s %11s %10s %9s  %s\n", "backend", "grid", "N",
+              "setup(s)", "solve(s)", "iters", "outer", "certificate", "err ref(%)", "RSS(MiB)", "status");
+  std::printf("%s\n", std::string(111, '-').c_str());
 }
 
 void print_row(const Row& r) {
@@ -275,10 +334,11 @@ void print_row(const Row& r) {
   if (ran && !r.used.empty() && r.used != r.backend) status += " [by " + r.used + "]";
   if (!r.op.empty()) status += " (" + r.op + ")";
   if ((r.status != "converged") && !r.message.empty()) status += ": " + r.message;
-  std::printf("%-8s %9s %8lld %9s %10s %7s %11s %10s %9s  %s\n", r.backend.c_str(), grid.c_str(),
+  const bool finished = ran && r.status != "error" && r.status != "crashed";
+  std::printf("%-8s %9s %8lld %9s %10s %7s %6s %11s %10s %9s  %s\n", r.backend.c_str(), grid.c_str(),
               static_cast<long long>(r.n) * r.n, format_number("%.3f", r.setup_s).c_str(),
-              format_number("%.3f", r.solve_s).c_str(),
-              ran && r.status != "error" && r.status != "crashed" ? std::to_string(r.iterations).c_str() : "-",
+              format_number("%.3f", r.solve_s).c_str(), finished ? std::to_string(r.iterations).c_str() : "-",
+              finished && r.outer > 0 ? std::to_string(r.outer).c_str() : "-",
               format_number("%.1e", r.certificate).c_str(),
               format_number("%+.2f", 100.0 * r.p0_error).c_str(),
               ran ? format_number("%.0f", r.rss_mib).c_str() : "-", status.c_str());
@@ -323,6 +383,11 @@ int main(int argc, char** argv) {
   app.add_option("--operator", options.operator_kind, "Compliance operator")
       ->check(CLI::IsMember({"auto", "dense", "fft"}))
       ->capture_default_str();
+  app.add_option("--problem", options.problem,
+                 "normal (Hertz), shift (Cattaneo, Q = mu P/2: err ref = rigid shift vs Mindlin) or "
+                 "rolling (steady, F = mu P/2; outer = marching steps)")
+      ->check(CLI::IsMember({"normal", "shift", "rolling"}))
+      ->capture_default_str();
   app.add_option("--csv", options.csv, "Also write the table as CSV to this file");
   app.add_flag("--in-process", options.in_process,
                "Run every case in this process (RSS is then the running peak)");
@@ -360,7 +425,7 @@ int main(int argc, char** argv) {
   }
   std::printf("\nsetup: grid, profile, operator (and FFT plans); solve: NormalProblem::solve, "
               "certificate included.\ncertificate: worst residual measured after the solve; "
-              "err p0: peak pressure vs Hertz; RSS: peak resident memory of the case.\n");
+              "err ref: peak pressure vs Hertz (normal) or rigid shift vs Mindlin (shift); RSS: peak resident memory of the case.\n");
   if (!options.csv.empty()) {
     write_csv(options.csv, rows);
     std::printf("CSV written to %s\n", options.csv.c_str());
