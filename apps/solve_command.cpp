@@ -43,7 +43,10 @@ void print_tangential(const Case& c, const nlohmann::json& s) {
   if (s["creepage"].is_array()) {
     std::printf("  %-16s [%.5g, %.5g]", "creepage", s["creepage"][0].get<double>(), s["creepage"][1].get<double>());
     if (!two_d) std::printf(", spin %.5g 1/m", s["spin"].get<double>());
-    std::printf(" (%d marching steps)\n", s["marching_steps"].get<int>());
+    if (s["marching_steps"].get<int>() > 0)
+      std::printf(" (%d marching steps)\n", s["marching_steps"].get<int>());
+    else
+      std::printf(" (steady state by Newton, %d iterations)\n", s["newton_iterations"].get<int>());
   } else {
     std::printf("  %-16s [%.5g, %.5g] m", "rigid shift", s["rigid_shift"][0].get<double>(),
                 s["rigid_shift"][1].get<double>());

@@ -115,6 +115,7 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   s["outer_last_change"] = sol.outer.last_change;
   s["outer_converged"] = sol.outer.converged;
   s["marching_steps"] = rolling ? nlohmann::json(sol.marching_steps) : nlohmann::json();
+  s["newton_iterations"] = rolling ? nlohmann::json(sol.newton_iterations) : nlohmann::json();
   return s;
 }
 

@@ -252,14 +252,29 @@ KernelTable shifted_table(const Grid& grid, const MaterialPair& m, Axis out, Axi
     for (int di = -(grid.nx - 1); di <= grid.nx - 1; ++di) t.at(di, dj) = big.at(di + shift, dj);
   return t;
 }
+
+/// The tangential blocks (xx | xx, xy, yx, yy) with every offset moved by `shift` along x.
+std::vector<KernelTable> tangential_tables(const Grid& grid, const MaterialPair& m, int shift,
+                                           const InfluenceOptions& options) {
+  const std::vector<Axis> axes = grid.dimension == 2 ? std::vector<Axis>{kX} : std::vector<Axis>{kX, kY};
+  std::vector<KernelTable> blocks;
+  for (Axis out : axes)
+    for (Axis in : axes) blocks.push_back(shifted_table(grid, m, out, in, shift, options));
+  return blocks;
+}
 }  // namespace
 
 std::unique_ptr<LinearOperator> HalfSpace::tangential_shifted(int shift, OperatorKind kind) const {
-  std::vector<KernelTable> blocks;
-  const std::vector<Axis> axes = grid_.dimension == 2 ? std::vector<Axis>{kX} : std::vector<Axis>{kX, kY};
-  for (Axis out : axes)
-    for (Axis in : axes) blocks.push_back(shifted_table(grid_, materials_, out, in, shift, options_));
-  const int m = static_cast<int>(axes.size());
+  const int m = tangential_components();
+  return make_convolution_operator(grid_, tangential_tables(grid_, materials_, shift, options_), m, m, kind);
+}
+
+std::unique_ptr<LinearOperator> HalfSpace::tangential_convective(int shift, OperatorKind kind) const {
+  std::vector<KernelTable> blocks = tangential_tables(grid_, materials_, 0, options_);
+  const std::vector<KernelTable> upstream = tangential_tables(grid_, materials_, shift, options_);
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    for (std::size_t i = 0; i < blocks[b].values.size(); ++i) blocks[b].values[i] -= upstream[b].values[i];
+  const int m = tangential_components();
   return make_convolution_operator(grid_, std::move(blocks), m, m, kind);
 }
 

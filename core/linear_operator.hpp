@@ -62,6 +62,10 @@ class HalfSpace {
   std::unique_ptr<LinearOperator> tangential_shifted(int shift, OperatorKind kind = OperatorKind::automatic) const;
   std::unique_ptr<LinearOperator> tangential_from_normal_shifted(int shift,
                                                                  OperatorKind kind = OperatorKind::automatic) const;
+  /// Steady rolling's convective compliance tangential() - tangential_shifted(shift) as one
+  /// operator (one transform per apply): the slip a traction field produces per `shift`
+  /// elements of travel when it is the same upstream and here ((2.19), (4.4)-(4.6)).
+  std::unique_ptr<LinearOperator> tangential_convective(int shift, OperatorKind kind = OperatorKind::automatic) const;
   int tangential_components() const { return grid_.dimension == 2 ? 1 : 2; }
 
  private:

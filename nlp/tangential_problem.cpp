@@ -1,6 +1,7 @@
 #include "tangential_problem.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -9,6 +10,7 @@
 #include "backend_choice.hpp"
 #include "errors.hpp"
 #include "scaled_operator.hpp"
+#include "steady_rolling_solver.hpp"
 
 namespace dc {
 namespace {
@@ -44,6 +46,7 @@ struct TangentialProblem::Impl {
   std::unique_ptr<LinearOperator> Ct;        // B22
   std::unique_ptr<LinearOperator> B21, B32;  // kappa terms (only when coupled)
   std::unique_ptr<LinearOperator> Ct_up, B21_up;  // rolling: upstream displacement
+  std::unique_ptr<LinearOperator> D_conv;          // steady rolling: Ct - Ct_up
   std::unique_ptr<NormalProblem> normal;
   std::vector<double> heights;
 
@@ -225,76 +228,18 @@ struct TangentialProblem::Impl {
     return best;
   }
 
-  /// One step with the outer loop (4.26)-(4.27) / (3.31)-(3.32). `upstream` selects the
-  /// convective (rolling) form of the previous displacement; rigid slips are increments.
-  TangentialSolution solve_step(const NormalSpec& normal_load, const std::array<ModeControl, 3>& modes,
-                                const std::array<double, 3>& given_increment, bool upstream,
-                                const SolverSpec& solver, const ProgressCallback& progress) {
-    const std::size_t n = comps * N;
-    const LinearOperator& ct_prev = upstream ? *Ct_up : *Ct;
-    const LinearOperator* b21_prev = upstream ? B21_up.get() : B21.get();
-    std::vector<double> u_prev;
-    displacement(p_prev, tau_prev, u_prev, ct_prev, b21_prev);
-
-    TangentialSolution sol;
-    std::vector<double> tau = tau_warm.size() == n ? tau_warm : std::vector<double>(n, 0.0);
-    std::vector<double> p_old, tau_old, f(N), W(n), w21;
-    // kappa = 0: p does not depend on tau, so f(p) is final after one pass; else iterate.
-    const int max_outer = coupled ? 100 : 1;
-    const double outer_tol = std::max(1e-9, 10.0 * solver.tol);
-    InnerResult inner;
-    for (int m = 1; m <= max_outer; ++m) {
-      // (4.26): the pressure with the gap shifted by kappa B32 tau of the previous iterate.
-      std::vector<double> h = heights;
-      if (coupled) {
-        std::vector<double> wz;
-        B32->apply(tau, wz);
-        for (std::size_t i = 0; i < N; ++i) h[i] += wz[i];
-      }
-      sol.normal = solve_normal(std::move(h), normal_load, solver);
-      if (sol.normal.report.status == SolveStatus::failed)
-        throw std::runtime_error("normal problem failed: " + sol.normal.report.message);
-      const std::vector<double>& p = sol.normal.pressure;
-      // (3.32): the friction bound from this pressure; noise-level pressures carry none.
-      const double p_cut = 1e-9 * max_abs(p);
-      for (std::size_t e = 0; e < N; ++e) f[e] = p[e] > p_cut ? friction.bound(p[e]) : 0.0;
-      // (4.27): W = kappa B21 p - u_prev.
-      for (std::size_t i = 0; i < n; ++i) W[i] = -u_prev[i];
-      if (coupled) {
-        B21->apply(p, w21);
-        for (std::size_t i = 0; i < n; ++i) W[i] += w21[i];
-      }
-      inner = solve_tangential(W, f, modes, given_increment, solver, progress);
-      tau = inner.tau;
-      tau_warm = tau;
-      const double change = std::max(relative_change(p, p_old), relative_change(tau, tau_old));
-      sol.outer.iterations = m;
-      sol.outer.last_change = m == 1 ? 0.0 : change;
-      p_old = p;
-      tau_old = tau;
-      if (max_outer == 1) break;
-      if (m > 1 && change < outer_tol) break;
-      if (m == max_outer) {
-        sol.outer.converged = false;
-        sol.outer.last_change = change;
-      }
-    }
-    // Results: slip increment ds = W + rigid + Ct tau (3.8), certificate, states.
+  /// Fills the fields, states, resultants and the certificate of a solution from tau, the slip
+  /// ds and the bound f; the status becomes not_converged when the certificate fails.
+  void finish(TangentialSolution& sol, const std::vector<double>& tau, const std::vector<double>& ds,
+              const std::vector<double>& f, const std::array<ModeControl, 3>& modes, const SolverSpec& solver) const {
     sol.tx.assign(N, 0.0);
     sol.ty.assign(N, 0.0);
     sol.sx.assign(N, 0.0);
     sol.sy.assign(N, 0.0);
     sol.bound = f;
     sol.state.assign(N, 0);
-    std::vector<double> ctt;
-    Ct->apply(tau, ctt);
-    std::vector<double> ds(n);
-    for (std::size_t e = 0; e < N; ++e)
-      for (int c = 0; c < comps; ++c) {
-        double rigid = 0.0;
-        for (int k = 0; k < n_modes(); ++k) rigid += inner.increment[k] * mode(k, e, c);
-        ds[c * N + e] = W[c * N + e] + rigid + ctt[c * N + e];
-      }
+    sol.n_stick = sol.n_slip = 0;
+    sol.stick_area = 0.0;
     for (std::size_t e = 0; e < N; ++e) {
       sol.tx[e] = tau[e];
       sol.sx[e] = ds[e];
@@ -316,7 +261,6 @@ struct TangentialProblem::Impl {
     for (std::size_t e = 0; e < N; ++e)
       for (int k = 0; k < n_modes(); ++k)
         for (int c = 0; c < comps; ++c) sol.resultants[k] += mode(k, e, c) * tau[c * N + e] * A;
-    sol.report = inner.report;
     sol.report.certificate = TangentialProblem::certify_friction(grid, sol.tx, sol.ty, sol.sx, sol.sy, f, slip_scale);
     // The normal part of the certificate comes from the normal solve of the last iterate.
     sol.report.certificate.complementarity = sol.normal.report.certificate.complementarity;
@@ -333,10 +277,170 @@ struct TangentialProblem::Impl {
       sol.report.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
     if (!sol.outer.converged)
       sol.report.message += " [outer loop did not converge: last change " + std::to_string(sol.outer.last_change) + "]";
+  }
+
+  /// The outer loop (4.26)-(4.27) / (3.31)-(3.32) around an inner tangential solve: the pressure
+  /// with the gap shifted by kappa B32 tau of the previous iterate, the bound f(p), then
+  /// `inner(p, f, tau)` updates tau (false: it gave up, the loop stops and returns false).
+  /// kappa = 0: p does not depend on tau, so f(p) is final after one pass.
+  template <class Inner>
+  bool outer_loop(TangentialSolution& sol, const NormalSpec& normal_load, const SolverSpec& solver,
+                  std::vector<double>& tau, std::vector<double>& f, Inner&& inner) {
+    std::vector<double> p_old, tau_old;
+    f.assign(N, 0.0);
+    const int max_outer = coupled ? 100 : 1;
+    const double outer_tol = std::max(1e-9, 10.0 * solver.tol);
+    for (int m = 1; m <= max_outer; ++m) {
+      std::vector<double> h = heights;  // (4.26)
+      if (coupled) {
+        std::vector<double> wz;
+        B32->apply(tau, wz);
+        for (std::size_t i = 0; i < N; ++i) h[i] += wz[i];
+      }
+      sol.normal = solve_normal(std::move(h), normal_load, solver);
+      if (sol.normal.report.status == SolveStatus::failed)
+        throw std::runtime_error("normal problem failed: " + sol.normal.report.message);
+      const std::vector<double>& p = sol.normal.pressure;
+      // (3.32): the friction bound from this pressure; noise-level pressures carry none.
+      const double p_cut = 1e-9 * max_abs(p);
+      for (std::size_t e = 0; e < N; ++e) f[e] = p[e] > p_cut ? friction.bound(p[e]) : 0.0;
+      if (!inner(p, f, tau)) return false;
+      tau_warm = tau;
+      const double change = std::max(relative_change(p, p_old), relative_change(tau, tau_old));
+      sol.outer.iterations = m;
+      sol.outer.last_change = m == 1 ? 0.0 : change;
+      p_old = p;
+      tau_old = tau;
+      if (max_outer == 1) break;
+      if (m > 1 && change < outer_tol) break;
+      if (m == max_outer) {
+        sol.outer.converged = false;
+        sol.outer.last_change = change;
+      }
+    }
+    return true;
+  }
+
+  /// One step with the outer loop (4.26)-(4.27) / (3.31)-(3.32). `upstream` selects the
+  /// convective (rolling) form of the previous displacement; rigid slips are increments.
+  TangentialSolution solve_step(const NormalSpec& normal_load, const std::array<ModeControl, 3>& modes,
+                                const std::array<double, 3>& given_increment, bool upstream,
+                                const SolverSpec& solver, const ProgressCallback& progress) {
+    const std::size_t n = comps * N;
+    const LinearOperator& ct_prev = upstream ? *Ct_up : *Ct;
+    const LinearOperator* b21_prev = upstream ? B21_up.get() : B21.get();
+    std::vector<double> u_prev;
+    displacement(p_prev, tau_prev, u_prev, ct_prev, b21_prev);
+
+    TangentialSolution sol;
+    std::vector<double> tau = tau_warm.size() == n ? tau_warm : std::vector<double>(n, 0.0);
+    std::vector<double> f, W(n), w21;
+    InnerResult inner;
+    outer_loop(sol, normal_load, solver, tau, f,
+               [&](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t) {
+                 // (4.27): W = kappa B21 p - u_prev.
+                 for (std::size_t i = 0; i < n; ++i) W[i] = -u_prev[i];
+                 if (coupled) {
+                   B21->apply(p, w21);
+                   for (std::size_t i = 0; i < n; ++i) W[i] += w21[i];
+                 }
+                 inner = solve_tangential(W, bound, modes, given_increment, solver, progress);
+                 t = inner.tau;
+                 return true;
+               });
+    // Results: slip increment ds = W + rigid + Ct tau (3.8), certificate, states.
+    std::vector<double> ds;
+    Ct->apply(tau, ds);
+    for (std::size_t e = 0; e < N; ++e)
+      for (int c = 0; c < comps; ++c) {
+        double rigid = 0.0;
+        for (int k = 0; k < n_modes(); ++k) rigid += inner.increment[k] * mode(k, e, c);
+        ds[c * N + e] += W[c * N + e] + rigid;
+      }
+    sol.report = inner.report;
+    finish(sol, tau, ds, f, modes, solver);
     // Remember the state for the next step.
     tau_prev = tau;
     p_prev = sol.normal.pressure;
     sol.amplitudes = inner.increment;
+    return sol;
+  }
+
+  /// Steady rolling solved directly (steady_rolling_solver.hpp) inside the outer loop; the
+  /// slip per step of travel dx is ds = dx v_rigid + (C - S C) tau (+ kappa (B21 - S B21) p).
+  /// Empty when Newton's method gives up (the caller then marches).
+  std::optional<TangentialSolution> steady_rolling_direct(const RollingLoad& load,
+                                                          const std::array<double, 3>& given_increment,
+                                                          const SolverSpec& solver, const ProgressCallback& progress,
+                                                          std::string& why_not) {
+    if (!D_conv) D_conv = half_space.tangential_convective(1, kind);
+    const std::size_t n = comps * N;
+    SteadyRollingProgram program;
+    program.D = D_conv.get();
+    program.comps = comps;
+    program.area = grid.area();
+    std::vector<int> unknown_modes;
+    for (int k = 0; k < n_modes(); ++k) {
+      if (load.modes[k].kind != ModeControl::Kind::resultant) continue;
+      std::vector<double> m(n);
+      for (std::size_t e = 0; e < N; ++e)
+        for (int c = 0; c < comps; ++c) m[c * N + e] = mode(k, e, c);
+      program.modes.push_back(std::move(m));
+      program.resultants.push_back(load.modes[k].value);
+      unknown_modes.push_back(k);
+    }
+    SolveOptions options = solve_options(solver, progress);
+    options.max_iter = std::min(solver.max_iter, 200);
+    TangentialSolution sol;
+    std::vector<double> tau(n, 0.0), f, w_up, w_here;
+    SteadyRollingOutcome outcome;
+    int newton = 0, applies = 0;
+    const auto start = std::chrono::steady_clock::now();
+    const bool ok = outer_loop(
+        sol, load.normal, solver, tau, f,
+        [&](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t) {
+          program.b.assign(n, 0.0);
+          for (std::size_t e = 0; e < N; ++e)
+            for (int c = 0; c < comps; ++c)
+              for (int k = 0; k < n_modes(); ++k) program.b[c * N + e] += given_increment[k] * mode(k, e, c);
+          if (coupled) {
+            B21->apply(p, w_here);
+            B21_up->apply(p, w_up);
+            for (std::size_t i = 0; i < n; ++i) program.b[i] += w_here[i] - w_up[i];
+          }
+          program.bound = bound;
+          program.tau0 = t;
+          outcome = solve_steady_rolling(program, options);
+          newton += outcome.newton_iterations;
+          applies += outcome.operator_applies;
+          if (!outcome.success) return false;
+          t = outcome.tau;
+          return true;
+        });
+    if (!ok) {
+      why_not = outcome.message;
+      return std::nullopt;
+    }
+    std::array<double, 3> amplitudes = given_increment;
+    for (std::size_t r = 0; r < unknown_modes.size(); ++r) amplitudes[unknown_modes[r]] = outcome.amplitudes[r];
+    std::vector<double> ds;
+    D_conv->apply(tau, ds);
+    for (std::size_t i = 0; i < n; ++i) ds[i] += program.b[i];
+    for (std::size_t r = 0; r < program.modes.size(); ++r)
+      for (std::size_t i = 0; i < n; ++i) ds[i] += outcome.amplitudes[r] * program.modes[r][i];
+    sol.report.requested = solver.backend;
+    sol.report.backend = "native";
+    sol.report.operator_kind = D_conv->kind();
+    sol.report.status = SolveStatus::converged;
+    sol.report.iterations = applies;
+    sol.newton_iterations = newton;
+    sol.report.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    sol.report.message = "steady rolling by Newton: " + std::to_string(newton) + " iterations, " +
+                         std::to_string(applies) + " operator applies";
+    finish(sol, tau, ds, f, load.modes, solver);
+    tau_prev = tau;
+    p_prev = sol.normal.pressure;
+    sol.amplitudes = amplitudes;
     return sol;
   }
 };
@@ -378,6 +482,25 @@ TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, co
   std::array<double, 3> increment{};
   for (int k = 0; k < 3; ++k) {
     if (modes[k].kind == ModeControl::Kind::amplitude) increment[k] = s.grid.dx * modes[k].value;
+  }
+  // auto / native: the steady state directly (Newton); the convex-program backends, or Newton
+  // giving up, march in time.
+  using Method = RollingLoad::Method;
+  std::string direct_failure;
+  const bool newton = load.method == Method::newton ||
+                      (load.method == Method::automatic && (solver.backend == "auto" || solver.backend == "native"));
+  if (newton) {
+    auto direct = s.steady_rolling_direct(load, increment, solver, progress, direct_failure);
+    if (direct || load.method == Method::newton) {
+      if (!direct) {
+        direct.emplace();
+        direct->report.status = SolveStatus::failed;
+        direct->report.message = "steady rolling by Newton failed: " + direct_failure;
+      }
+      for (int k = 0; k < 3; ++k) direct->amplitudes[k] /= s.grid.dx;
+      return *direct;
+    }
+    s.reset();
   }
   const int max_steps = load.max_steps > 0 ? load.max_steps : 10 * s.grid.nx;
   // Marching (the previous traction taken upstream) converges geometrically to the steady
@@ -423,6 +546,10 @@ TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, co
     }
   }
   sol.marching_steps = std::min(steps, max_steps);
+  if (!direct_failure.empty()) {
+    sol.report.fallback_used = true;
+    sol.report.message += " [steady Newton gave up (" + direct_failure + "): marched instead]";
+  }
   // Amplitudes as creepages / spin (per unit rolling distance).
   for (int k = 0; k < 3; ++k) sol.amplitudes[k] /= s.grid.dx;
   if (!steady && sol.report.status == SolveStatus::converged) {

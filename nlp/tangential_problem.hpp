@@ -51,6 +51,9 @@ struct RollingLoad {
   std::array<ModeControl, 3> modes{};  ///< cx (-) | F_x; cy (-) | F_y; spin phi (1/m) | M_z
   double velocity = 1.0;               ///< rolling speed V (m/s), along +x
   int max_steps = 0;                   ///< marching steps; 0: 10 * nx
+  /// automatic: Newton on the steady equations (backends auto/native), marching when it gives up
+  /// or for the convex-program backends; newton / marching: only that method.
+  enum class Method { automatic, newton, marching } method = Method::automatic;
 };
 
 struct OuterLoopReport {
@@ -72,7 +75,8 @@ struct TangentialSolution {
   double stick_area = 0.0;           ///< m^2 (2-D: stick length, m)
   SolverReport report;               ///< the tangential solve; certificate has all residuals
   OuterLoopReport outer;             ///< (4.26)-(4.27) / (3.31)-(3.32)
-  int marching_steps = 0;            ///< rolling: steps to steady state
+  int marching_steps = 0;            ///< rolling: steps to steady state (0: solved by Newton)
+  int newton_iterations = 0;         ///< steady rolling by Newton: its iterations (all outer passes)
 };
 
 /// Set up once (operators, plans), then step: the state (previous relative displacement)
@@ -85,8 +89,9 @@ class TangentialProblem {
   /// One quasi-static step (shift/torsion/loading history).
   TangentialSolution step(const TangentialLoad& load, const SolverSpec& solver,
                           const ProgressCallback& progress = {});
-  /// Steady rolling by marching in time (dt = dx / V) until the traction stops changing;
-  /// proven by the gap function (4.24) of the steady slip.
+  /// Steady rolling: Newton's method on the steady equations (steady_rolling_solver.hpp) or
+  /// marching in time (dt = dx / V) until the traction stops changing; either way proven by the
+  /// friction law and the gap function (4.24) of the steady slip.
   TangentialSolution steady_rolling(const RollingLoad& load, const SolverSpec& solver,
                                     const ProgressCallback& progress = {});
   /// Forget the loading history (back to the unloaded state).

@@ -70,7 +70,7 @@ struct Row {
   double setup_s = std::numeric_limits<double>::quiet_NaN();
   double solve_s = std::numeric_limits<double>::quiet_NaN();
   int iterations = 0;
-  int outer = 0;         ///< tangential: outer iterations (shift) or marching steps (rolling)
+  int outer = 0;         ///< tangential: outer iterations (shift), Newton iterations or marching steps (rolling)
   double certificate = std::numeric_limits<double>::quiet_NaN();
   double p0_error = std::numeric_limits<double>::quiet_NaN();  ///< (max p - p0) / p0
   double rss_mib = std::numeric_limits<double>::quiet_NaN();
@@ -158,7 +158,7 @@ void run_tangential(const std::string& problem, int n, const dc::SolverSpec& sol
     load.normal = normal;
     load.modes[0] = force;
     sol = tp.steady_rolling(load, solver);
-    row.outer = sol.marching_steps;
+    row.outer = sol.marching_steps > 0 ? sol.marching_steps : sol.newton_iterations;
   }
   const auto t2 = clock::now();
   setup_s = std::chrono::duration<double>(t1 - t0).count();
@@ -385,7 +385,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--problem", options.problem,
                  "normal (Hertz), shift (Cattaneo, Q = mu P/2: err ref = rigid shift vs Mindlin) or "
-                 "rolling (steady, F = mu P/2; outer = marching steps)")
+                 "rolling (steady, F = mu P/2; outer = Newton iterations, or marching steps when it marched)")
       ->check(CLI::IsMember({"normal", "shift", "rolling"}))
       ->capture_default_str();
   app.add_option("--csv", options.csv, "Also write the table as CSV to this file");

@@ -1,0 +1,99 @@
+#include "gmres.hpp"
+
+#include <cmath>
+#include <cstddef>
+
+namespace dc {
+namespace {
+
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
+  return s;
+}
+
+}  // namespace
+
+GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, const std::vector<double>& b,
+                  std::vector<double>& x, double rtol, int restart, int max_iter) {
+  const std::size_t n = b.size();
+  GmresResult result;
+  x.resize(n, 0.0);
+  const double b_norm = std::sqrt(dot(b, b));
+  if (b_norm == 0.0) {
+    x.assign(n, 0.0);
+    result.converged = true;
+    return result;
+  }
+  std::vector<std::vector<double>> V(restart + 1, std::vector<double>(n));
+  std::vector<std::vector<double>> H(restart + 1, std::vector<double>(restart, 0.0));
+  std::vector<double> cs(restart), sn(restart), g(restart + 1), z(n), w(n), y(restart);
+  auto preconditioned = [&](const std::vector<double>& v, std::vector<double>& out) {
+    if (precondition) precondition(v, out);
+    else out = v;
+  };
+  while (true) {
+    // r = b - A x
+    apply(x, w);
+    ++result.iterations;
+    for (std::size_t i = 0; i < n; ++i) V[0][i] = b[i] - w[i];
+    double beta = std::sqrt(dot(V[0], V[0]));
+    result.relative_residual = beta / b_norm;
+    if (result.relative_residual <= rtol) {
+      result.converged = true;
+      return result;
+    }
+    if (result.iterations >= max_iter) return result;
+    for (double& v : V[0]) v /= beta;
+    std::fill(g.begin(), g.end(), 0.0);
+    g[0] = beta;
+    int k = 0;
+    for (; k < restart && result.iterations < max_iter; ++k) {
+      preconditioned(V[k], z);
+      apply(z, w);
+      ++result.iterations;
+      for (int i = 0; i <= k; ++i) {  // modified Gram-Schmidt
+        H[i][k] = dot(w, V[i]);
+        for (std::size_t j = 0; j < n; ++j) w[j] -= H[i][k] * V[i][j];
+      }
+      H[k + 1][k] = std::sqrt(dot(w, w));
+      if (H[k + 1][k] > 0.0)
+        for (std::size_t j = 0; j < n; ++j) V[k + 1][j] = w[j] / H[k + 1][k];
+      for (int i = 0; i < k; ++i) {  // previous rotations
+        const double t = cs[i] * H[i][k] + sn[i] * H[i + 1][k];
+        H[i + 1][k] = -sn[i] * H[i][k] + cs[i] * H[i + 1][k];
+        H[i][k] = t;
+      }
+      const double d = std::hypot(H[k][k], H[k + 1][k]);
+      cs[k] = d > 0.0 ? H[k][k] / d : 1.0;
+      sn[k] = d > 0.0 ? H[k + 1][k] / d : 0.0;
+      H[k][k] = d;
+      H[k + 1][k] = 0.0;
+      g[k + 1] = -sn[k] * g[k];
+      g[k] = cs[k] * g[k];
+      result.relative_residual = std::abs(g[k + 1]) / b_norm;
+      if (result.relative_residual <= rtol || H[k][k] == 0.0) {
+        ++k;
+        break;
+      }
+    }
+    // x += M^-1 V y with H y = g (upper triangular, k columns)
+    for (int i = k - 1; i >= 0; --i) {
+      double s = g[i];
+      for (int j = i + 1; j < k; ++j) s -= H[i][j] * y[j];
+      y[i] = H[i][i] != 0.0 ? s / H[i][i] : 0.0;
+    }
+    std::fill(w.begin(), w.end(), 0.0);
+    for (int j = 0; j < k; ++j)
+      for (std::size_t i = 0; i < n; ++i) w[i] += y[j] * V[j][i];
+    preconditioned(w, z);
+    for (std::size_t i = 0; i < n; ++i) x[i] += z[i];
+    if (result.relative_residual <= rtol) {
+      result.converged = true;
+      return result;
+    }
+    if (result.iterations >= max_iter) return result;
+  }
+}
+
+}  // namespace dc
