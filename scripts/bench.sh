@@ -2,7 +2,7 @@
 # Builds (scripts/setup.sh) and times the backends on a Hertz sphere: the normal problem,
 # then the tangential shift (Cattaneo) and steady rolling on the same sphere.
 #   scripts/bench.sh            normal: 32..512 (ipopt up to 128^2, nlopt up to 64^2);
-#                               shift: 32..256; rolling: 32..128 (native and auto)
+#                               shift: 32..256; rolling: 32..256 (native and auto)
 #   scripts/bench.sh --quick    32,64 for each
 # --sizes/--backends override the defaults; other arguments go to dyncontact_bench (e.g. --repeat 3, --force, --csv out/bench.csv).
 set -euo pipefail
@@ -11,7 +11,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 BUILD_DIR="${DYNCONTACT_BUILD_DIR:-build}"
 sizes="32,64,128,256,512"
 shift_sizes="32,64,128,256"
-rolling_sizes="32,64,128"
+rolling_sizes="32,64,128,256"
 backends="native,ipopt,nlopt"
 args=()
 while [[ $# -gt 0 ]]; do
