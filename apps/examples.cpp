@@ -21,6 +21,7 @@ const std::vector<BundledExample>& bundled_examples() {
         {"carter-2d", "Carter: steel cylinder rolling on steel, 100 kN/m, force 0.5 mu P (2-D, rolling)"},
         {"rolling-sphere", "steady rolling of a steel sphere, 100 N, creepage 1e-3 (3-D, rolling)"},
         {"spence-sphere", "Spence: rigid sphere pressed into aluminium in 3 load steps, mu = 0.2 (3-D, history)"},
+        {"cattaneo-carter-2d", "Cattaneo to Carter: a cylinder under 0.5 mu P starts rolling, 5 steps (2-D, rolling history)"},
     };
     for (auto& e : list) {
       e.text = embedded_example_text(e.name);

@@ -58,10 +58,14 @@ void print_tangential(const Case& c, const nlohmann::json& s) {
   if (!s.contains("steps")) return;
   std::printf("  history (%zu steps):\n", s["steps"].size());
   for (const auto& st : s["steps"]) {
-    std::printf("    step %d: normal force %.5g, tangential force [%.5g, %.5g], %d stick, %d slip, %s\n",
+    std::printf("    step %d: normal force %.5g, tangential force [%.5g, %.5g], %d stick, %d slip",
                 st["step"].get<int>(), st["normal_force"].get<double>(), st["tangential_force"][0].get<double>(),
-                st["tangential_force"][1].get<double>(), st["n_stick"].get<int>(), st["n_slip"].get<int>(),
-                st["solver"]["status"].get<std::string>().c_str());
+                st["tangential_force"][1].get<double>(), st["n_stick"].get<int>(), st["n_slip"].get<int>());
+    if (st.contains("distance")) {  // a rolling history
+      std::printf(", rolled %.4g m", st["distance"].get<double>());
+      if (st["creepage"].is_array()) std::printf(", creepage %.5g", st["creepage"][0].get<double>());
+    }
+    std::printf(", %s\n", st["solver"]["status"].get<std::string>().c_str());
   }
 }
 
@@ -141,10 +145,10 @@ void add_solve_command(CLI::App& app, int& exit_code) {
       "area, peak pressure, solver status and certificate, and the Hertz/Boussinesq values when a closed form "
       "exists), fields.csv (x,y,p,tx,ty,sx,sy,state per element; state 0 free, 1 stick, 2 slip - a normal "
       "problem marks every element in contact with 1) and plots (SVG and PNG via gnuplot). A tangential case "
-      "(problem \"tangential\": shift, torsion or steady rolling) adds tangential_force, twisting_moment, "
+      "(problem \"tangential\": shift, torsion, steady or transient rolling) adds tangential_force, twisting_moment, "
       "rigid_shift/rotation or creepage/spin, n_stick, n_slip and stick_area to summary.json, and plots of the "
-      "tractions between -f(p) and f(p); with a loading history (tangential.history) summary.json lists the "
-      "steps and fields_<k>.csv holds each step (fields.csv the last). Any key can be "
+      "tractions between -f(p) and f(p); with a loading history (tangential.history; rolling: steps that roll a "
+      "distance from the state the last one left) summary.json lists the steps and fields_<k>.csv holds each step (fields.csv the last). Any key can be "
       "changed without editing the file: --set grid.nx=128 --set normal.force=200. Exit code 0 converged, "
       "2 bad input, 3 not converged (results are still written), 4 internal error.");
   sub->add_option("case", args->case_path, "case file (JSON)")->required();

@@ -87,7 +87,10 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   s["normal_solver"] = s["solver"];
   s["solver"] = to_json(sol.report);
   const std::string regime = c.tangential.value("regime", "");
-  const bool rolling = regime == "rolling";
+  // A rolling solution is reported by its creepage and spin, except a step of a rolling history
+  // that rolls no distance (TangentialProblem::roll, no marching step): that one is quasi-static
+  // and reports the rigid shift it took.
+  const bool rolling = regime == "rolling" && sol.marching_steps > 0;
   s["regime"] = regime;
   if (c.friction) s["friction"] = friction_json(*c.friction);
   const auto& a = sol.amplitudes;
@@ -98,7 +101,8 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   s["spin"] = rolling ? nlohmann::json(a[2]) : nlohmann::json();
   s["rigid_shift"] = rolling ? nlohmann::json() : pair(a[0], a[1]);
   s["rotation"] = rolling ? nlohmann::json() : nlohmann::json(a[2]);
-  if (rolling) s["velocity"] = c.tangential.value("velocity", 1.0);
+  if (regime == "rolling") s["velocity"] = c.tangential.value("velocity", 1.0);
+  if (regime == "rolling" && has_history(c)) s["distance"] = sol.distance;  // rolled in this step (m)
   int n_stick = 0, n_slip = 0;
   double capacity = 0.0;
   for (std::size_t e = 0; e < f.state.size(); ++e) {
@@ -114,8 +118,8 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   s["outer_iterations"] = sol.outer.iterations;
   s["outer_last_change"] = sol.outer.last_change;
   s["outer_converged"] = sol.outer.converged;
-  s["marching_steps"] = rolling ? nlohmann::json(sol.marching_steps) : nlohmann::json();
-  s["newton_iterations"] = rolling ? nlohmann::json(sol.newton_iterations) : nlohmann::json();
+  s["marching_steps"] = regime == "rolling" ? nlohmann::json(sol.marching_steps) : nlohmann::json();
+  s["newton_iterations"] = regime == "rolling" ? nlohmann::json(sol.newton_iterations) : nlohmann::json();
   return s;
 }
 
@@ -128,11 +132,16 @@ TangentialRun run_tangential(const Case& c, bool progress) {
   }
   run.normal = step_loads(c, run.steps.size());
   nlohmann::json steps = nlohmann::json::array();
+  double rolled = 0.0;
   for (std::size_t k = 0; k < run.steps.size(); ++k) {
     Case step_case = c;
     step_case.normal = run.normal[k];
     run.fields.push_back(tangential_fields(run.steps[k], contact_threshold(c)));
     run.summary = tangential_summary(step_case, run.steps[k], run.fields.back());
+    if (run.summary.contains("distance")) {  // a rolling history: the distance rolled so far
+      rolled += run.steps[k].distance;
+      run.summary["total_distance"] = rolled;
+    }
     nlohmann::json entry = {{"step", k}};
     for (auto it = run.summary.begin(); it != run.summary.end(); ++it)
       if (!case_level_key(it.key())) entry[it.key()] = it.value();

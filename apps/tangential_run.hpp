@@ -36,8 +36,9 @@ StaticFields tangential_fields(const TangentialSolution& solution, double relati
 
 /// The keys of one tangential step (CASES.md): the normal keys of `c` (whose `normal` is the
 /// step's load) plus tangential_force, twisting_moment, creepage, spin, rigid_shift, rotation,
-/// n_stick, n_slip, stick_area, the outer-loop and marching counts; `solver` is the
-/// tangential report (its certificate holds the normal residuals too).
+/// n_stick, n_slip, stick_area, the outer-loop and marching counts (a step of a rolling history
+/// adds its rolled `distance`; one of distance 0 is quasi-static: rigid_shift, no creepage);
+/// `solver` is the tangential report (its certificate holds the normal residuals too).
 nlohmann::json tangential_summary(const Case& c, const TangentialSolution& solution, const StaticFields& fields);
 
 /// A solved static case, whichever problem it was: what `solve` writes and `compare` compares.

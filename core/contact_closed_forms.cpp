@@ -44,7 +44,32 @@ double spence_of_y(double y) {
   return t * (kPi / (2.0 * agm1(t))) / y;
 }
 
+/// sgn(ratio) mu p0 [sqrt(1 - x^2/a^2) - (c/a) sqrt(1 - (x - centre)^2/c^2)] with the second
+/// term on |x - centre| < c only, 0 outside |x| < a: the 2-D stick-slip traction of Cattaneo
+/// (centre 0) and Carter (centre a - c).
+double two_ellipse_traction(double x, double a, double p0, double mu, double force_ratio, double c, double centre) {
+  if (std::abs(x) >= a) return 0.0;
+  double q = root1m(x / a);
+  if (c > 0.0 && std::abs(x - centre) < c) q -= (c / a) * root1m((x - centre) / c);
+  const double sign = force_ratio < 0.0 ? -1.0 : 1.0;
+  return sign * mu * p0 * q;
+}
+
 }  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Cattaneo in 2-D
+// ---------------------------------------------------------------------------------------------
+
+double cattaneo_2d_stick_half_width(double a, double force_ratio) {
+  check_ratio(std::abs(force_ratio), "cattaneo_2d_stick_half_width");
+  return a * std::sqrt(1.0 - std::abs(force_ratio));
+}
+
+double cattaneo_2d_traction(double x, double a, double p0, double mu, double force_ratio) {
+  check_ratio(std::abs(force_ratio), "cattaneo_2d_traction");
+  return two_ellipse_traction(x, a, p0, mu, force_ratio, cattaneo_2d_stick_half_width(a, force_ratio), 0.0);
+}
 
 // ---------------------------------------------------------------------------------------------
 // Cattaneo-Mindlin
@@ -113,13 +138,8 @@ double carter_force_ratio(double a, double R, double mu, double creepage) {
 
 double carter_traction(double x, double a, double p0, double mu, double force_ratio) {
   check_ratio(std::abs(force_ratio), "carter_traction");
-  if (std::abs(x) >= a) return 0.0;
   const double ap = carter_stick_half_width(a, force_ratio);
-  const double d = a - ap;
-  double q = root1m(x / a);
-  if (ap > 0.0 && std::abs(x - d) < ap) q -= (ap / a) * root1m((x - d) / ap);
-  const double sign = force_ratio < 0.0 ? -1.0 : 1.0;
-  return sign * mu * p0 * q;
+  return two_ellipse_traction(x, a, p0, mu, force_ratio, ap, a - ap);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -47,6 +47,23 @@ double mindlin_unloading_shift(double mu, double P, double a, double compliance,
 double mindlin_unloading_traction(double r, double a, double mu_p0, double ratio_max, double ratio);
 
 // ---------------------------------------------------------------------------------------------
+// Cattaneo in 2-D: identical cylinders (plane strain) under constant P, then a monotonic
+// tangential force Q per unit length with |Q| <= mu P, no rolling ([CM]; [J] section 7.2). Exact
+// in plane strain for identical materials (no normal-tangential coupling): the difference of two
+// elliptical tractions gives a uniform tangential displacement on the stick zone, which is
+// centred. The same stick half-length as Carter's rolling contact at the same force, but
+// centred on x = 0 instead of at the leading edge. `force_ratio` = Q / (mu P) in [-1, 1] (signed).
+// ---------------------------------------------------------------------------------------------
+
+/// Half-length of the (centred) stick zone c = a sqrt(1 - |Q|/(mu P)).
+double cattaneo_2d_stick_half_width(double a, double force_ratio);
+
+/// Signed traction on the body at x (sign of Q), p0 the Hertz peak pressure:
+/// tau(x) = sgn(Q) mu p0 [sqrt(1 - x^2/a^2) - (c/a) sqrt(1 - x^2/c^2)], the second term on
+/// |x| < c only; 0 outside |x| < a.
+double cattaneo_2d_traction(double x, double a, double p0, double mu, double force_ratio);
+
+// ---------------------------------------------------------------------------------------------
 // Carter: 2-D steady rolling of identical cylinders (plane strain), Coulomb mu, tangential
 // force F per unit length with |F| <= mu P ([C]; [J] section 8.3; the paper's (5.1)-(5.6)).
 // Rolling direction +x: the contact moves towards +x, material enters it at the LEADING edge

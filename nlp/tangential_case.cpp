@@ -1,5 +1,6 @@
 // The "tangential" block of a case (CASES.md) turned into load steps and solved.
 #include <cmath>
+#include <functional>
 #include <set>
 
 #include "errors.hpp"
@@ -74,6 +75,32 @@ void check_keys(const json& v, const std::string& prefix, const std::set<std::st
       throw InputError(prefix + it.key(), "unknown key");
 }
 
+/// The steps of tangential.history, in order, each an object with keys from `allowed` only and
+/// read by `read(step, "tangential.history[k].", load)` into the previous step's load (the first
+/// into `load`), so a step keeps what it does not set. All are read before any is solved.
+template <class Load>
+std::vector<Load> read_history(const json& t, const std::set<std::string>& allowed, Load load,
+                               const std::function<void(const json&, const std::string&, Load&)>& read) {
+  if (!t["history"].is_array() || t["history"].empty())
+    throw InputError("tangential.history", "must be a non-empty array of steps");
+  std::vector<Load> out;
+  for (std::size_t k = 0; k < t["history"].size(); ++k) {
+    const json& s = t["history"][k];
+    const std::string prefix = "tangential.history[" + std::to_string(k) + "].";
+    if (!s.is_object()) throw InputError(prefix.substr(0, prefix.size() - 1), "each step must be an object");
+    check_keys(s, prefix, allowed);
+    read(s, prefix, load);
+    out.push_back(load);
+  }
+  return out;
+}
+
+/// One step of a rolling history: the load, and the distance rolled under it.
+struct RollingStep {
+  RollingLoad load;
+  double distance = 0.0;
+};
+
 }  // namespace
 
 std::vector<TangentialSolution> solve_tangential_case(const Case& c, const ProgressCallback& progress) {
@@ -87,7 +114,7 @@ std::vector<TangentialSolution> solve_tangential_case(const Case& c, const Progr
     throw InputError("tangential.regime", "unknown regime '" + regime + "' (shift, torsion, rolling)");
   const bool rolling = regime == "rolling";
   check_keys(t, "tangential.",
-             rolling ? std::set<std::string>{"regime", "force", "creepage", "spin", "velocity", "max_steps"}
+             rolling ? std::set<std::string>{"regime", "force", "creepage", "spin", "velocity", "max_steps", "history"}
                      : std::set<std::string>{"regime", "force", "shift", "angle", "moment", "history"});
 
   OperatorKind kind = OperatorKind::automatic;
@@ -102,11 +129,28 @@ std::vector<TangentialSolution> solve_tangential_case(const Case& c, const Progr
     read_modes(t, "tangential.", true, c.dimension, load.modes);
     if (t.contains("velocity")) load.velocity = number_at(t["velocity"], "tangential.velocity");
     if (t.contains("max_steps")) {
+      if (t.contains("history"))
+        throw InputError("tangential.max_steps", "steady rolling only: a rolling history rolls each step's distance");
       if (!t["max_steps"].is_number_integer() || t["max_steps"].get<int>() < 1)
         throw InputError("tangential.max_steps", "must be a positive integer");
       load.max_steps = t["max_steps"].get<int>();
     }
-    out.push_back(problem.steady_rolling(load, c.solver, progress));
+    if (!t.contains("history")) {
+      out.push_back(problem.steady_rolling(load, c.solver, progress));
+      return out;
+    }
+    // Transient rolling (project extension): each step rolls its distance from the state the
+    // previous step left (memory kept); distance 0 is a quasi-static step (e.g. Cattaneo's).
+    const auto steps = read_history<RollingStep>(
+        t, {"force", "creepage", "spin", "moment", "normal", "distance"}, {load, 0.0},
+        [&](const json& s, const std::string& prefix, RollingStep& step) {
+          if (s.contains("normal")) step.load.normal = normal_at(s["normal"], prefix + "normal");
+          read_modes(s, prefix, true, c.dimension, step.load.modes);
+          if (!s.contains("distance")) throw InputError(prefix + "distance", "required in a rolling step (m)");
+          step.distance = number_at(s["distance"], prefix + "distance");
+          if (step.distance < 0.0) throw InputError(prefix + "distance", "must be >= 0 (m)");
+        });
+    for (const RollingStep& step : steps) out.push_back(problem.roll(step.load, step.distance, c.solver, progress));
     return out;
   }
   TangentialLoad load;
@@ -116,17 +160,13 @@ std::vector<TangentialSolution> solve_tangential_case(const Case& c, const Progr
     out.push_back(problem.step(load, c.solver, progress));
     return out;
   }
-  if (!t["history"].is_array() || t["history"].empty())
-    throw InputError("tangential.history", "must be a non-empty array of steps");
-  for (std::size_t k = 0; k < t["history"].size(); ++k) {
-    const json& s = t["history"][k];
-    const std::string prefix = "tangential.history[" + std::to_string(k) + "].";
-    if (!s.is_object()) throw InputError(prefix.substr(0, prefix.size() - 1), "each step must be an object");
-    check_keys(s, prefix, {"force", "shift", "angle", "moment", "normal"});
-    if (s.contains("normal")) load.normal = normal_at(s["normal"], prefix + "normal");
-    read_modes(s, prefix, false, c.dimension, load.modes);
-    out.push_back(problem.step(load, c.solver, progress));
-  }
+  const auto steps = read_history<TangentialLoad>(
+      t, {"force", "shift", "angle", "moment", "normal"}, load,
+      [&](const json& s, const std::string& prefix, TangentialLoad& step) {
+        if (s.contains("normal")) step.normal = normal_at(s["normal"], prefix + "normal");
+        read_modes(s, prefix, false, c.dimension, step.modes);
+      });
+  for (const TangentialLoad& step : steps) out.push_back(problem.step(step, c.solver, progress));
   return out;
 }
 

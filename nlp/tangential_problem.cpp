@@ -374,6 +374,7 @@ struct TangentialProblem::Impl {
                                                           const SolverSpec& solver, const ProgressCallback& progress,
                                                           std::string& why_not) {
     if (!D_conv) D_conv = half_space.tangential_convective(1, kind);
+    if (coupled && !B21_up) B21_up = half_space.tangential_from_normal_shifted(1, kind);
     const std::size_t n = comps * N;
     SteadyRollingProgram program;
     program.D = D_conv.get();
@@ -443,6 +444,49 @@ struct TangentialProblem::Impl {
     sol.amplitudes = amplitudes;
     return sol;
   }
+
+  struct March {
+    TangentialSolution sol;  ///< the last step; amplitudes = rigid-mode increments of that step
+    int steps = 0;           ///< marching steps done
+    bool steady = false;     ///< stopped because a step changed tau by less than steady_tol
+    int first_unconverged = 0;  ///< the first step that was not certified (1-based), 0: none
+  };
+
+  /// Rolling in +x from the current state: up to `max_steps` marching steps of dx (dt = dx / V).
+  /// Each step is one program (3.8)/(4.4)-(4.6): the convective term dt (V . grad)(u+ - u-) of
+  /// (2.14) is the difference between the displacement here and the previous one taken at the
+  /// upstream material point (B* of (4.6) through Ct_up, the kappa term of (4.5) through B21_up).
+  /// Stops after a step that changes tau by less than `steady_tol` (0: never), or fails. The
+  /// total rigid slip accumulates in amplitude_prev.
+  March march(const RollingLoad& load, int max_steps, double steady_tol, const SolverSpec& solver,
+              const ProgressCallback& progress) {
+    if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
+    // Rolling in +x: the material now at x was at x + dx one step (dt = dx / V) earlier.
+    if (!Ct_up) {
+      Ct_up = half_space.tangential_shifted(1, kind);
+      if (coupled) B21_up = half_space.tangential_from_normal_shifted(1, kind);
+    }
+    // Per step the rigid slip is v dt = dx (creepage - phi y, eta + phi x): increments dx * mode.
+    std::array<double, 3> increment{};
+    for (int k = 0; k < 3; ++k)
+      if (load.modes[k].kind == ModeControl::Kind::amplitude) increment[k] = grid.dx * load.modes[k].value;
+    March m;
+    for (m.steps = 1; m.steps <= max_steps; ++m.steps) {
+      const std::vector<double> input = tau_prev;
+      m.sol = solve_step(load.normal, load.modes, increment, true, solver, {});
+      if (m.sol.report.status != SolveStatus::converged && m.first_unconverged == 0) m.first_unconverged = m.steps;
+      if (m.sol.report.status == SolveStatus::failed) break;
+      for (int k = 0; k < 3; ++k) amplitude_prev[k] += m.sol.amplitudes[k];
+      const double change = relative_change(tau_prev, input);
+      if (progress) progress({m.steps, 0.0, change});
+      if (steady_tol > 0.0 && m.steps > 1 && change < steady_tol) {
+        m.steady = true;
+        break;
+      }
+    }
+    m.steps = std::min(m.steps, max_steps);
+    return m;
+  }
 };
 
 TangentialProblem::TangentialProblem(const Grid& grid, const MaterialPair& materials, std::vector<double> heights,
@@ -470,26 +514,19 @@ TangentialSolution TangentialProblem::step(const TangentialLoad& load, const Sol
 TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, const SolverSpec& solver,
                                                      const ProgressCallback& progress) {
   Impl& s = *impl_;
-  if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
-  // Rolling in +x: the material now at x was at x + dx one step (dt = dx / V) earlier.
-  if (!s.Ct_up) {
-    s.Ct_up = s.half_space.tangential_shifted(1, s.kind);
-    if (s.coupled) s.B21_up = s.half_space.tangential_from_normal_shifted(1, s.kind);
-  }
   s.reset();
-  // Per step the rigid slip is v dt = dx (creepage - phi y, eta + phi x): increments dx * mode.
-  std::array<ModeControl, 3> modes = load.modes;
-  std::array<double, 3> increment{};
-  for (int k = 0; k < 3; ++k) {
-    if (modes[k].kind == ModeControl::Kind::amplitude) increment[k] = s.grid.dx * modes[k].value;
-  }
+  if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
   // auto / native: the steady state directly (Newton); the convex-program backends, or Newton
-  // giving up, march in time.
+  // giving up, march in time. Per step of travel dx the rigid slip is dx (creepage - phi y,
+  // eta + phi x): increments dx * mode.
   using Method = RollingLoad::Method;
   std::string direct_failure;
   const bool newton = load.method == Method::newton ||
                       (load.method == Method::automatic && (solver.backend == "auto" || solver.backend == "native"));
   if (newton) {
+    std::array<double, 3> increment{};
+    for (int k = 0; k < 3; ++k)
+      if (load.modes[k].kind == ModeControl::Kind::amplitude) increment[k] = s.grid.dx * load.modes[k].value;
     auto direct = s.steady_rolling_direct(load, increment, solver, progress, direct_failure);
     if (direct || load.method == Method::newton) {
       if (!direct) {
@@ -507,20 +544,10 @@ TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, co
   // state; stop when a step changes tau by less than the certificate tolerance, then prove the
   // steady state with the certificate of the steady slip ds = dx v + (C - S C) tau (2.19).
   const double steady_tol = std::max(0.01 * solver.certificate_tol, 10.0 * solver.tol);
-  TangentialSolution sol;
-  int steps = 0;
-  bool steady = false;
-  for (steps = 1; steps <= max_steps; ++steps) {
-    const std::vector<double> input = s.tau_prev;
-    sol = s.solve_step(load.normal, modes, increment, true, solver, {});
-    if (sol.report.status == SolveStatus::failed) break;
-    const double change = relative_change(s.tau_prev, input);
-    if (progress) progress({steps, 0.0, change});
-    if (steps > 1 && change < steady_tol) {
-      steady = true;
-      break;
-    }
-  }
+  Impl::March march = s.march(load, max_steps, steady_tol, solver, progress);
+  TangentialSolution& sol = march.sol;
+  const int steps = march.steps;
+  const bool steady = march.steady;
   if (sol.report.status != SolveStatus::failed) {
     // Steady slip with the same tau upstream and here (no lag): certificate of (2.19).
     std::vector<double> u_here, u_up;
@@ -556,6 +583,41 @@ TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, co
     sol.report.status = SolveStatus::not_converged;
     sol.report.message += " [rolling did not reach a steady state in " + std::to_string(max_steps) + " steps]";
   }
+  return sol;
+}
+
+TangentialSolution TangentialProblem::roll(const RollingLoad& load, double distance, const SolverSpec& solver,
+                                           const ProgressCallback& progress) {
+  Impl& s = *impl_;
+  if (!std::isfinite(distance) || distance < 0.0)
+    throw InputError("tangential.distance", "the rolling distance must be a finite length >= 0 (m)");
+  if (distance == 0.0) {
+    // No travel, no convective term: the quasi-static step (2.16) of the same controls; a
+    // creepage applies no rigid slip over zero distance, a prescribed force is carried by a shift.
+    if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
+    TangentialSolution sol = s.solve_step(load.normal, load.modes, {0.0, 0.0, 0.0}, false, solver, progress);
+    for (int k = 0; k < 3; ++k) s.amplitude_prev[k] += sol.amplitudes[k];
+    return sol;  // amplitudes: the rigid shift (m, m, rad) of this step; marching_steps = 0
+  }
+  // At least one marching step; otherwise the nearest whole number of elements.
+  const double steps = std::max(1.0, std::round(distance / s.grid.dx));
+  if (steps > 1e8) throw InputError("tangential.distance", "over 1e8 marching steps of one element each");
+  const int n = static_cast<int>(steps);
+  Impl::March march = s.march(load, n, 0.0, solver, progress);
+  TangentialSolution& sol = march.sol;
+  sol.marching_steps = march.steps;
+  sol.distance = march.steps * s.grid.dx;
+  // The path matters in a transient: one uncertified step leaves the result uncertified.
+  if (march.first_unconverged > 0 && sol.report.status == SolveStatus::converged) {
+    sol.report.status = SolveStatus::not_converged;
+    sol.report.message += " [marching step " + std::to_string(march.first_unconverged) + " of " +
+                          std::to_string(n) + " was not converged]";
+  }
+  if (sol.report.status == SolveStatus::failed)
+    sol.report.message += " [rolling stopped after " + std::to_string(march.steps) + " of " + std::to_string(n) +
+                          " marching steps]";
+  // Amplitudes as creepages / spin of the last step (per unit rolling distance).
+  for (int k = 0; k < 3; ++k) sol.amplitudes[k] /= s.grid.dx;
   return sol;
 }
 

@@ -50,9 +50,9 @@ struct RollingLoad {
   NormalSpec normal;
   std::array<ModeControl, 3> modes{};  ///< cx (-) | F_x; cy (-) | F_y; spin phi (1/m) | M_z
   double velocity = 1.0;               ///< rolling speed V (m/s), along +x
-  int max_steps = 0;                   ///< marching steps; 0: 10 * nx
-  /// automatic: Newton on the steady equations (backends auto/native), marching when it gives up
-  /// or for the convex-program backends; newton / marching: only that method.
+  int max_steps = 0;                   ///< steady_rolling() marching: at most this many steps; 0: 10 * nx (roll(): unused)
+  /// steady_rolling(): automatic: Newton on the steady equations (backends auto/native), marching
+  /// when it gives up or for the convex-program backends; newton / marching: only that method.
   enum class Method { automatic, newton, marching } method = Method::automatic;
 };
 
@@ -75,8 +75,9 @@ struct TangentialSolution {
   double stick_area = 0.0;           ///< m^2 (2-D: stick length, m)
   SolverReport report;               ///< the tangential solve; certificate has all residuals
   OuterLoopReport outer;             ///< (4.26)-(4.27) / (3.31)-(3.32)
-  int marching_steps = 0;            ///< rolling: steps to steady state (0: solved by Newton)
+  int marching_steps = 0;            ///< rolling: marching steps of dx (steady: to the steady state; 0: by Newton)
   int newton_iterations = 0;         ///< steady rolling by Newton: its iterations (all outer passes)
+  double distance = 0.0;             ///< roll(): distance rolled, marching_steps * dx (m)
 };
 
 /// Set up once (operators, plans), then step: the state (previous relative displacement)
@@ -94,6 +95,17 @@ class TangentialProblem {
   /// friction law and the gap function (4.24) of the steady slip.
   TangentialSolution steady_rolling(const RollingLoad& load, const SolverSpec& solver,
                                     const ProgressCallback& progress = {});
+  /// Transient rolling: marches in +x from the CURRENT state (memory kept, no reset) over
+  /// `distance` (m, >= 0): n = round(distance / dx) marching steps of dt = dx / V, at least one
+  /// when distance > 0, each the convective step of steady_rolling() ((2.14), (3.8), (4.4)-(4.6)).
+  /// Returns the state after the last step, amplitudes as creepages / spin of that step,
+  /// marching_steps = n, distance = n dx. distance = 0 is one quasi-static step of the same
+  /// controls instead (no convection, marching_steps = 0, amplitudes the rigid shift (m, m, rad)
+  /// of that step): a prescribed force is then Cattaneo's shift, a creepage applies no slip.
+  /// The total rigid slip accumulates in the state (a later step() shift counts from it).
+  /// Throws InputError("tangential.distance") when distance < 0 or not finite.
+  TangentialSolution roll(const RollingLoad& load, double distance, const SolverSpec& solver,
+                          const ProgressCallback& progress = {});
   /// Forget the loading history (back to the unloaded state).
   void reset();
 

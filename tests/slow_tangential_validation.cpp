@@ -12,22 +12,16 @@
 #include "hertz.hpp"
 #include "profile.hpp"
 #include "tangential_problem.hpp"
+#include "tangential_support.hpp"
 
 namespace dc {
 namespace {
 
 namespace cf = closed_form;
 
-SolverSpec native_solver() {
-  SolverSpec s;
-  s.backend = "native";
-  s.fallback = false;
-  s.tol = 1e-10;
-  s.max_iter = 2000;
-  return s;
-}
+SolverSpec native_solver() { return test::native_tangential_solver(); }
 
-ModeControl amplitude(double v) { return {ModeControl::Kind::amplitude, v}; }
+using test::amplitude;
 
 TEST(SlowTangentialValidation, KalkerLinearCreepCoefficients64) {
   const double nu = 0.25;

@@ -64,12 +64,13 @@ class CliTangential : public dc::test::CliTest {
     return file;
   }
 
-  /// The cattaneo-sphere case with `edit` must be rejected with exit 2 and a message naming `key`.
-  void expect_rejected(const std::function<void(json&)>& edit, const std::string& key,
-                       const std::string& phrase = "") const {
-    const std::string file = case_file("cattaneo-sphere", [&](json& d) {
+  /// Example `base` (on an 8-element grid) with `edit` must be rejected with exit 2 and a message
+  /// naming `key`.
+  void expect_rejected(const std::function<void(json&)>& edit, const std::string& key, const std::string& phrase = "",
+                       const std::string& base = "cattaneo-sphere") const {
+    const std::string file = case_file(base, [&](json& d) {
       d["grid"]["nx"] = 8;
-      d["grid"]["ny"] = 8;
+      if (d["dimension"] == 3) d["grid"]["ny"] = 8;
       edit(d);
     });
     const Result r = run("solve " + file + " --out rejected -q");
@@ -83,7 +84,7 @@ class CliTangential : public dc::test::CliTest {
 };
 
 const char* const kTangentialExamples[] = {"cattaneo-sphere", "torsion-sphere", "carter-2d", "rolling-sphere",
-                                           "spence-sphere"};
+                                           "spence-sphere",   "cattaneo-carter-2d"};
 
 TEST_F(CliTangential, ExamplesMatchTheFilesAndValidate) {
   const Result list = run("example --list");
@@ -210,6 +211,104 @@ TEST_F(CliTangential, LoadingHistoryWritesEveryStep) {
   // Dissimilar materials (kappa != 0): the indentation alone makes part of the contact slip.
   EXPECT_GT(s["n_slip"].get<int>(), 0);
   EXPECT_GT(s["n_stick"].get<int>(), 0);
+}
+
+/// Hertz half-width a of the carter-2d / cattaneo-carter-2d cylinder (R = 20 mm, 100 kN/m, steel).
+double carter_example_half_width() {
+  const double E = 2.1e11, nu = 0.3, R = 0.02, P = 1.0e5;
+  const double E_star = E / (2.0 * (1.0 - nu * nu));
+  return std::sqrt(4.0 * P * R / (std::numbers::pi * E_star));
+}
+
+TEST_F(CliTangential, RollingHistoryWritesEveryStep) {
+  // The bundled Cattaneo-to-Carter history (no travel, then 0.5a, 0.5a, 1a, 1a at F = -mu P/2),
+  // on the native backend (Ipopt takes seconds for its 126 marching steps).
+  const std::string file = case_file("cattaneo-carter-2d", [](json& d) { d["solver"]["backend"] = "native"; });
+  const Result r = run("solve " + file + " --out rolling");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("history (5 steps)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("rolled"), std::string::npos) << r.out;
+  const fs::path out = dir_ / "rolling";
+  const json s = json::parse(slurp(out / "summary.json"));
+  ASSERT_TRUE(s.contains("steps"));
+  ASSERT_EQ(s["steps"].size(), 5u);
+  EXPECT_EQ(s["all_steps_converged"], true);
+  const double a = carter_example_half_width(), dx = s["grid"]["dx"].get<double>();
+  const json history = example("cattaneo-carter-2d")["tangential"]["history"];
+  double total = 0.0;
+  for (std::size_t k = 0; k < 5; ++k) {
+    SCOPED_TRACE(k);
+    const json& st = s["steps"][k];
+    EXPECT_EQ(st["solver"]["status"], "converged");
+    EXPECT_NEAR(st["tangential_force"][0].get<double>(), -15000.0, 1e-6 * 15000.0);
+    EXPECT_NEAR(st["normal_force"].get<double>(), 1e5, 1e-6 * 1e5);
+    // The distance rolled is the nearest whole number of elements.
+    const double asked = history[k]["distance"].get<double>();
+    EXPECT_NEAR(st["distance"].get<double>(), asked, 0.5 * dx);
+    total += st["distance"].get<double>();
+    EXPECT_NEAR(st["total_distance"].get<double>(), total, 1e-12);
+    EXPECT_EQ(st["marching_steps"].get<int>(), static_cast<int>(std::lround(asked / dx)));
+    EXPECT_EQ(st["fields"], "fields_" + std::to_string(k) + ".csv");
+    EXPECT_TRUE(fs::exists(out / ("fields_" + std::to_string(k) + ".csv")));
+    EXPECT_EQ(st["n_stick"].get<int>() + st["n_slip"].get<int>(), st["n_contact"].get<int>());
+    if (k == 0) {
+      // No travel: Cattaneo's shift (towards +x under a braking force), no creepage.
+      EXPECT_TRUE(st["creepage"].is_null());
+      EXPECT_GT(st["rigid_shift"][0].get<double>(), 0.0);
+    } else {
+      EXPECT_TRUE(st["rigid_shift"].is_null());
+      EXPECT_GT(st["creepage"][0].get<double>(), 0.0);
+    }
+  }
+  EXPECT_NEAR(total, 3 * a, 2 * dx);
+  // After 3a Carter's creepage, within the 3 % CarterRollingCreepage allows on this grid.
+  const double carter = 0.3 * a / 0.02 * (1.0 - std::sqrt(0.5));
+  EXPECT_NEAR(s["creepage"][0].get<double>(), carter, 0.03 * carter);
+  EXPECT_LT(s["steps"][1]["creepage"][0].get<double>(), s["steps"][4]["creepage"][0].get<double>());
+  EXPECT_EQ(slurp(out / "fields.csv"), slurp(out / "fields_4.csv"));
+}
+
+TEST_F(CliTangential, RollingHistoryStepsTheNormalLoad) {
+  // A step's "normal" holds from that step on; each step reports its own load and Hertz reference.
+  const std::string file = case_file("cattaneo-carter-2d", [](json& d) {
+    d["solver"]["backend"] = "native";
+    d["grid"]["nx"] = 40;
+    d["tangential"]["history"] = json::parse(R"([{"force": [-15000.0], "distance": 0.0},
+        {"normal": {"force": 8.0e4}, "distance": 5e-5}, {"distance": 5e-5}])");
+  });
+  const Result r = run("solve " + file + " --out stepped -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json s = json::parse(slurp(dir_ / "stepped" / "summary.json"));
+  ASSERT_EQ(s["steps"].size(), 3u);
+  const double loads[] = {1e5, 8e4, 8e4};
+  for (std::size_t k = 0; k < 3; ++k) {
+    SCOPED_TRACE(k);
+    const json& st = s["steps"][k];
+    EXPECT_NEAR(st["normal_force"].get<double>(), loads[k], 1e-6 * loads[k]);
+    EXPECT_NEAR(st["hertz"]["normal_force"].get<double>(), loads[k], 1e-9 * loads[k]);
+    EXPECT_NEAR(st["tangential_force"][0].get<double>(), -15000.0, 1e-6 * 15000.0);
+    EXPECT_EQ(st["solver"]["status"], "converged");
+  }
+  EXPECT_LT(s["steps"][1]["hertz"]["contact_area"].get<double>(), s["steps"][0]["hertz"]["contact_area"].get<double>());
+  EXPECT_NEAR(s["normal_force"].get<double>(), 8e4, 1e-6 * 8e4);
+}
+
+TEST_F(CliTangential, BadRollingHistoryInputsNameTheKey) {
+  const std::string base = "cattaneo-carter-2d";
+  expect_rejected([](json& d) { d["tangential"]["history"][1].erase("distance"); }, "tangential.history[1].distance",
+                  "required", base);
+  expect_rejected([](json& d) { d["tangential"]["history"][2]["distance"] = -1e-5; },
+                  "tangential.history[2].distance", ">= 0", base);
+  expect_rejected([](json& d) { d["tangential"]["history"][2]["distance"] = "far"; },
+                  "tangential.history[2].distance", "must be a number", base);
+  expect_rejected([](json& d) { d["tangential"]["history"][1]["shift"] = 1e-6; }, "tangential.history[1].shift",
+                  "unknown key", base);
+  expect_rejected([](json& d) { d["tangential"]["history"][3]["creepage"] = "x"; },
+                  "tangential.history[3].creepage", "", base);
+  expect_rejected([](json& d) { d["tangential"]["max_steps"] = 100; }, "tangential.max_steps", "steady rolling only",
+                  base);
+  expect_rejected([](json& d) { d["tangential"]["history"] = json::array(); }, "tangential.history", "non-empty",
+                  base);
 }
 
 TEST_F(CliTangential, BadTangentialInputsNameTheKey) {

@@ -125,6 +125,42 @@ TEST(CarterClosedForm, StickZoneSitsAtTheLeadingEdge) {
   EXPECT_NEAR(carter_traction(d, a, p0, mu, f), -mu * p0 * (std::sqrt(1 - d * d) - ap), 1e-14);
 }
 
+TEST(Cattaneo2dClosedForm, CentredStickZoneResultantAndCarterShift) {
+  const double a = 1e-3, mu = 0.25, P = 2e5;
+  const double p0 = 2 * P / (kPi * a);
+  // Q = 0: full stick, no traction; |Q| = mu P: full slip, -mu p on the body for Q < 0.
+  EXPECT_DOUBLE_EQ(cattaneo_2d_stick_half_width(a, 0.0), a);
+  EXPECT_DOUBLE_EQ(cattaneo_2d_stick_half_width(a, -1.0), 0.0);
+  for (double x : {-0.9 * a, 0.0, 0.5 * a}) {
+    EXPECT_NEAR(cattaneo_2d_traction(x, a, p0, mu, 0.0), 0.0, 1e-9 * p0);
+    EXPECT_NEAR(cattaneo_2d_traction(x, a, p0, mu, -1.0), -mu * p0 * std::sqrt(1 - x * x / (a * a)), 1e-9 * p0);
+  }
+  EXPECT_EQ(cattaneo_2d_traction(1.01 * a, a, p0, mu, 0.5), 0.0);
+  EXPECT_THROW(cattaneo_2d_traction(0.0, a, p0, mu, 1.5), std::domain_error);
+  for (double f : {-0.5, 0.3, -0.9}) {
+    // Resultant Q, even in x (centred stick zone), full slip |tau| = mu p outside |x| < c.
+    const double Q = simpson([&](double x) { return cattaneo_2d_traction(x, a, p0, mu, f); }, -a, a);
+    EXPECT_NEAR(Q / (mu * P), f, 1e-6);
+    const double c = cattaneo_2d_stick_half_width(a, f);
+    EXPECT_NEAR(c, a * std::sqrt(1 - std::abs(f)), 1e-15);
+    for (double x : {0.1 * a, 0.5 * a, 0.95 * a}) {
+      EXPECT_DOUBLE_EQ(cattaneo_2d_traction(x, a, p0, mu, f), cattaneo_2d_traction(-x, a, p0, mu, f));
+      if (x > c) {
+        EXPECT_NEAR(std::abs(cattaneo_2d_traction(x, a, p0, mu, f)), mu * p0 * std::sqrt(1 - x * x / (a * a)),
+                    1e-9 * p0);
+      }
+    }
+    // The same stick half-length as Carter at that force; the stick term mu p0 (c/a)
+    // sqrt(1 - (x/c)^2) taken off the full-slip traction sits at x here, at x + (a - c) in Carter's.
+    EXPECT_DOUBLE_EQ(c, carter_stick_half_width(a, f));
+    const double sign = f < 0 ? -1.0 : 1.0, x = 0.3 * c, d = a - c;
+    const double term = sign * mu * p0 * (c / a) * std::sqrt(1 - 0.3 * 0.3);
+    auto slip = [&](double s) { return sign * mu * p0 * std::sqrt(1 - s * s / (a * a)); };
+    EXPECT_NEAR(slip(x) - cattaneo_2d_traction(x, a, p0, mu, f), term, 1e-9 * p0);
+    EXPECT_NEAR(slip(x + d) - carter_traction(x + d, a, p0, mu, f), term, 1e-9 * p0);
+  }
+}
+
 TEST(LubkinClosedForm, StiffnessAndSlipMoment) {
   const auto steel = Elastic::from_E_nu(2.1e11, 0.3);
   const double a = 1e-3;

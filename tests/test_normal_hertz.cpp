@@ -8,6 +8,7 @@
 #include "hertz.hpp"
 #include "normal_problem.hpp"
 #include "profile.hpp"
+#include "solver_support.hpp"
 
 namespace dc {
 namespace {
@@ -18,14 +19,7 @@ MaterialPair steel_on_aluminium() {
   return {Elastic::from_E_nu(2.1e11, 0.3), Elastic::from_E_nu(7.0e10, 0.33)};
 }
 
-SolverSpec native_solver() {
-  SolverSpec s;
-  s.backend = "native";
-  s.fallback = false;
-  s.tol = 1e-10;
-  s.max_iter = 5000;
-  return s;
-}
+SolverSpec native_solver() { return test::native_solver_spec(5000); }
 
 struct HertzErrors {
   double approach, radius, peak;

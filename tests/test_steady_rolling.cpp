@@ -16,13 +16,15 @@
 #include "gmres.hpp"
 #include "hertz.hpp"
 #include "profile.hpp"
-#include "tangential_fixtures.hpp"
+#include "tangential_support.hpp"
 #include "tangential_problem.hpp"
 
 namespace dc {
 namespace {
 
-using namespace dc::testing;
+using namespace dc::test;
+
+SolverSpec native_solver() { return native_tangential_solver(); }
 namespace cf = closed_form;
 
 TEST(Gmres, SolvesANonSymmetricSystemAcrossRestarts) {

@@ -19,6 +19,7 @@
 #include "linear_operator.hpp"
 #include "profile.hpp"
 #include "tangential_problem.hpp"
+#include "tangential_support.hpp"
 
 namespace dc {
 namespace {
@@ -26,36 +27,12 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 namespace cf = closed_form;
 
-SolverSpec native_solver() {
-  SolverSpec s;
-  s.backend = "native";
-  s.fallback = false;
-  s.tol = 1e-10;
-  s.max_iter = 2000;
-  return s;
-}
+SolverSpec native_solver() { return test::native_tangential_solver(); }
 
-MaterialPair steel_on_steel() { return {Elastic::from_E_nu(2.1e11, 0.3), Elastic::from_E_nu(2.1e11, 0.3)}; }
-
-ModeControl amplitude(double v) { return {ModeControl::Kind::amplitude, v}; }
-ModeControl resultant(double v) { return {ModeControl::Kind::resultant, v}; }
-
-struct SphereSetup {
-  Grid grid;
-  std::vector<double> heights;
-  hertz::SphereSolution hz;
-};
-
-/// n x n grid over +-extent * a_Hertz (centred on the origin: torsion is about the grid origin).
-SphereSetup sphere_setup(int n, double extent, const MaterialPair& m, double R, double P) {
-  const auto hz = hertz::sphere(R, P, m.E_star());
-  const double L = extent * hz.a;
-  const Grid g = Grid::make(3, n, n, -L, L, -L, L);
-  ProfileSpec prof;
-  prof.type = ProfileType::sphere;
-  prof.radius = R;
-  return {g, profile_heights(prof, g), hz};
-}
+using test::amplitude;
+using test::resultant;
+using test::sphere_setup;
+using test::steel_on_steel;
 
 /// Loaded area (elements with a friction bound) of a solution.
 double contact_area(const TangentialSolution& s, const Grid& g) {
@@ -64,11 +41,7 @@ double contact_area(const TangentialSolution& s, const Grid& g) {
   return area;
 }
 
-void expect_certified(const TangentialSolution& s) {
-  EXPECT_EQ(s.report.status, SolveStatus::converged) << s.report.message;
-  EXPECT_LT(s.report.certificate.friction_law, 1e-6);
-  EXPECT_LT(s.report.certificate.gap_function, 1e-5);
-}
+using test::expect_certified;
 
 // ---------------------------------------------------------------------------------------------
 // Cattaneo-Mindlin

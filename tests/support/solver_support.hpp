@@ -1,0 +1,17 @@
+#pragma once
+// Solver settings the validation tests run with.
+#include "case_model.hpp"
+
+namespace dc::test {
+
+/// The native backend alone (no fallback), tol 1e-10, at most `max_iter` iterations.
+inline SolverSpec native_solver_spec(int max_iter) {
+  SolverSpec s;
+  s.backend = "native";
+  s.fallback = false;
+  s.tol = 1e-10;
+  s.max_iter = max_iter;
+  return s;
+}
+
+}  // namespace dc::test
