@@ -90,7 +90,7 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   // A rolling solution is reported by its creepage and spin, except a step of a rolling history
   // that rolls no distance (TangentialProblem::roll, no marching step): that one is quasi-static
   // and reports the rigid shift it took.
-  const bool rolling = regime == "rolling" && sol.marching_steps > 0;
+  const bool rolling = sol.rolling;
   s["regime"] = regime;
   if (c.friction) s["friction"] = friction_json(*c.friction);
   const auto& a = sol.amplitudes;

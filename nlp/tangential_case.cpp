@@ -114,7 +114,7 @@ std::vector<TangentialSolution> solve_tangential_case(const Case& c, const Progr
     throw InputError("tangential.regime", "unknown regime '" + regime + "' (shift, torsion, rolling)");
   const bool rolling = regime == "rolling";
   check_keys(t, "tangential.",
-             rolling ? std::set<std::string>{"regime", "force", "creepage", "spin", "velocity", "max_steps", "history"}
+             rolling ? std::set<std::string>{"regime", "force", "creepage", "spin", "moment", "velocity", "max_steps", "history"}
                      : std::set<std::string>{"regime", "force", "shift", "angle", "moment", "history"});
 
   OperatorKind kind = OperatorKind::automatic;

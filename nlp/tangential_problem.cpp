@@ -470,10 +470,14 @@ struct TangentialProblem::Impl {
     std::array<double, 3> increment{};
     for (int k = 0; k < 3; ++k)
       if (load.modes[k].kind == ModeControl::Kind::amplitude) increment[k] = grid.dx * load.modes[k].value;
+    // auto: every step is one warm-started program, where the native solver is much the
+    // fastest at any size (the others remain its fallbacks).
+    SolverSpec step_solver = solver;
+    if (step_solver.backend == "auto") step_solver.backend = "native";
     March m;
     for (m.steps = 1; m.steps <= max_steps; ++m.steps) {
       const std::vector<double> input = tau_prev;
-      m.sol = solve_step(load.normal, load.modes, increment, true, solver, {});
+      m.sol = solve_step(load.normal, load.modes, increment, true, step_solver, {});
       if (m.sol.report.status != SolveStatus::converged && m.first_unconverged == 0) m.first_unconverged = m.steps;
       if (m.sol.report.status == SolveStatus::failed) break;
       for (int k = 0; k < 3; ++k) amplitude_prev[k] += m.sol.amplitudes[k];
@@ -535,6 +539,7 @@ TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, co
         direct->report.message = "steady rolling by Newton failed: " + direct_failure;
       }
       for (int k = 0; k < 3; ++k) direct->amplitudes[k] /= s.grid.dx;
+      direct->rolling = true;
       return *direct;
     }
     s.reset();
@@ -573,6 +578,7 @@ TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, co
     }
   }
   sol.marching_steps = std::min(steps, max_steps);
+  sol.rolling = true;
   if (!direct_failure.empty()) {
     sol.report.fallback_used = true;
     sol.report.message += " [steady Newton gave up (" + direct_failure + "): marched instead]";
@@ -606,6 +612,7 @@ TangentialSolution TangentialProblem::roll(const RollingLoad& load, double dista
   Impl::March march = s.march(load, n, 0.0, solver, progress);
   TangentialSolution& sol = march.sol;
   sol.marching_steps = march.steps;
+  sol.rolling = true;
   sol.distance = march.steps * s.grid.dx;
   // The path matters in a transient: one uncertified step leaves the result uncertified.
   if (march.first_unconverged > 0 && sol.report.status == SolveStatus::converged) {

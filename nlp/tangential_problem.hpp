@@ -77,6 +77,7 @@ struct TangentialSolution {
   OuterLoopReport outer;             ///< (4.26)-(4.27) / (3.31)-(3.32)
   int marching_steps = 0;            ///< rolling: marching steps of dx (steady: to the steady state; 0: by Newton)
   int newton_iterations = 0;         ///< steady rolling by Newton: its iterations (all outer passes)
+  bool rolling = false;              ///< amplitudes are creepages / spin (steady or transient rolling), not shifts
   double distance = 0.0;             ///< roll(): distance rolled, marching_steps * dx (m)
 };
 
