@@ -141,6 +141,36 @@ TEST(SteadyRolling, BeyondSaturationTheWholeContactSlides) {
   EXPECT_NEAR(sol.resultants[1], 0.0, 1e-9 * mu * P);
 }
 
+TEST(SteadyRolling, ForceControlUpToSaturation3d) {
+  // Combined longitudinal and lateral force up to 0.99 mu P on a sphere: certified, the
+  // resultant met, the creepage growing with the force and pointing against it (the force on
+  // the body opposes the creepage), the stick area shrinking.
+  const auto m = steel_on_steel();
+  const double R = 0.01, P = 100.0, mu = 0.3;
+  const SphereSetup s = sphere_setup(24, 1.2, m, R, P);
+  TangentialProblem problem(s.grid, m, s.heights, FrictionLaw::coulomb(mu));
+  const double cx = 0.8, cy = 0.6;  // direction of the force on the body: -(cx, cy)
+  double previous_creepage = 0.0, previous_stick = 1e300;
+  for (double ratio : {0.3, 0.7, 0.9, 0.99}) {
+    const double F = ratio * mu * P;
+    const TangentialSolution sol = problem.steady_rolling(
+        rolling(P, {resultant(-cx * F), resultant(-cy * F), amplitude(0.0)}, RollingLoad::Method::newton),
+        native_solver());
+    expect_certified(sol);
+    EXPECT_NEAR(sol.resultants[0], -cx * F, 1e-8 * mu * P);
+    EXPECT_NEAR(sol.resultants[1], -cy * F, 1e-8 * mu * P);
+    const double creepage = std::hypot(sol.amplitudes[0], sol.amplitudes[1]);
+    std::printf("[ 3-D F/mu P = %.2f ] creepage (%.4e, %.4e), stick area %.3e m^2, %d Newton iterations\n", ratio,
+                sol.amplitudes[0], sol.amplitudes[1], sol.stick_area, sol.newton_iterations);
+    EXPECT_GT(sol.amplitudes[0], 0.0);
+    EXPECT_GT(sol.amplitudes[1], 0.0);
+    EXPECT_GT(creepage, previous_creepage);
+    EXPECT_LT(sol.stick_area, previous_stick);
+    previous_creepage = creepage;
+    previous_stick = sol.stick_area;
+  }
+}
+
 TEST(SteadyRolling, CarterCreepLawUpToSaturationUnderForceControl2d) {
   // Force control from F = 0.2 to 0.995 mu P: the creepage follows Carter's law
   // xi = (mu a / R)(1 - sqrt(1 - |F|/(mu P))) within 0.5 % on 200 strips over +-1.2 a, and
