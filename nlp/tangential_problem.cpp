@@ -120,6 +120,42 @@ struct TangentialProblem::Impl {
     SolverReport report;
   };
 
+  /// The largest resultant of mode k that friction can carry: sum_e f_e |m_k(e)| A.
+  double resultant_capacity(int k, const std::vector<double>& f) const {
+    double capacity = 0.0;
+    for (std::size_t e = 0; e < N; ++e) {
+      double m2 = 0.0;
+      for (int c = 0; c < comps; ++c) m2 += mode(k, e, c) * mode(k, e, c);
+      capacity += f[e] * std::sqrt(m2) * grid.area();
+    }
+    return capacity;
+  }
+
+  /// Prescribed resultants must stay below what friction can carry, each alone and the force
+  /// (F_x, F_y) together; reaching it is gross sliding (no quasi-static or steady solution).
+  void check_resultants(const std::vector<double>& f, const std::array<ModeControl, 3>& modes) const {
+    static const char* names[] = {"tangential.force[0]", "tangential.force[1]", "tangential.moment"};
+    auto sliding = [](const char* key, double value, double capacity) {
+      throw InputError(key, "the prescribed resultant " + std::to_string(value) + " reaches the friction limit " +
+                                std::to_string(capacity) + ": gross sliding, no quasi-static or steady solution");
+    };
+    if (std::none_of(modes.begin(), modes.begin() + n_modes(),
+                     [](const ModeControl& m) { return m.kind == ModeControl::Kind::resultant; }))
+      return;
+    double total = 0.0;
+    for (std::size_t e = 0; e < N; ++e) total += f[e] * grid.area();
+    if (!(total > 0.0)) throw InputError("tangential", "no friction can be transmitted: the contact carries no load");
+    for (int k = 0; k < n_modes(); ++k) {
+      if (modes[k].kind != ModeControl::Kind::resultant) continue;
+      const double capacity = resultant_capacity(k, f);
+      if (std::abs(modes[k].value) >= capacity * (1.0 - 1e-12)) sliding(names[k], modes[k].value, capacity);
+    }
+    if (n_modes() == 3 && modes[0].kind == ModeControl::Kind::resultant && modes[1].kind == ModeControl::Kind::resultant) {
+      const double F = std::hypot(modes[0].value, modes[1].value);
+      if (F >= total * (1.0 - 1e-12)) sliding("tangential.force", F, total);
+    }
+  }
+
   /// The convex program of one step: min 1/2 tau'Ct tau + W'tau over |tau| <= f, with the
   /// resultant-controlled modes as equality rows; W excludes the resultant-controlled modes.
   InnerResult solve_tangential(const std::vector<double>& W, const std::vector<double>& f,
@@ -152,24 +188,13 @@ struct TangentialProblem::Impl {
         qp.disks.push_back({static_cast<int>(e), static_cast<int>(N + e), r});
       }
     }
+    check_resultants(f, modes);
     std::vector<int> row_mode;
     std::vector<double> row_scale;
     for (int k = 0; k < n_modes(); ++k) {
       if (modes[k].kind != ModeControl::Kind::resultant) continue;
       // Row sum_e mode_k . tau A = R_k, scaled by the largest resultant friction can carry.
-      double capacity = 0.0;
-      for (std::size_t e = 0; e < N; ++e) {
-        double m2 = 0.0;
-        for (int c = 0; c < comps; ++c) m2 += mode(k, e, c) * mode(k, e, c);
-        capacity += f[e] * std::sqrt(m2) * A;
-      }
-      if (!(capacity > 0.0)) throw InputError("tangential", "no friction can be transmitted: the contact carries no load");
-      if (std::abs(modes[k].value) >= capacity * (1.0 - 1e-12)) {
-        static const char* names[] = {"tangential.force[0]", "tangential.force[1]", "tangential.moment"};
-        throw InputError(names[k], "the prescribed resultant " + std::to_string(modes[k].value) +
-                                       " reaches the friction limit " + std::to_string(capacity) +
-                                       ": gross sliding, no quasi-static solution");
-      }
+      const double capacity = resultant_capacity(k, f);
       LinearEquality eq;
       eq.a.assign(n, 0.0);
       for (std::size_t e = 0; e < N; ++e)
@@ -409,6 +434,7 @@ struct TangentialProblem::Impl {
             B21_up->apply(p, w_up);
             for (std::size_t i = 0; i < n; ++i) program.b[i] += w_here[i] - w_up[i];
           }
+          check_resultants(bound, load.modes);
           program.bound = bound;
           program.tau0 = t;
           outcome = solve_steady_rolling(program, options);

@@ -332,6 +332,14 @@ TEST_F(CliTangential, BadTangentialInputsNameTheKey) {
   expect_rejected([](json& d) { d.erase("friction"); }, "friction");
   expect_rejected([](json& d) { d["friction"]["mu"] = -0.3; }, "friction.mu");
   expect_rejected([](json& d) { d["tangential"]["force"] = {-40.0, 0.0}; }, "tangential.force[0]", "gross sliding");
+  // Each component below mu P = 30 N, together above it.
+  expect_rejected([](json& d) { d["tangential"]["force"] = {-25.0, -20.0}; }, "tangential.force", "gross sliding");
+  expect_rejected(
+      [](json& d) {
+        d["tangential"].erase("creepage");
+        d["tangential"]["force"] = {-25.0, -20.0};
+      },
+      "tangential.force", "gross sliding", "rolling-sphere");
   expect_rejected([](json& d) { d["tangential"]["regime"] = "skid"; }, "tangential.regime");
 }
 
