@@ -4,12 +4,6 @@
 
 namespace dc::dynamics {
 
-Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
-  Eigen::Matrix3d s;
-  s << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-  return s;
-}
-
 Eigen::Quaterniond exp_map(const Eigen::Vector3d& phi) {
   const double angle = phi.norm();
   const double half = 0.5 * angle;

@@ -1,14 +1,10 @@
 #pragma once
-// Rotations on the unit-quaternion manifold: exponential / logarithm maps and the inverse of the
-// exponential's differential, used to advance the orientation (the paper's direction cosines
-// alpha in (3.10)) without leaving the manifold.
+// Rotations on the unit-quaternion manifold: exponential and logarithm maps, used to advance the
+// orientation (the paper's direction cosines alpha in (3.10)) without leaving the manifold.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 namespace dc::dynamics {
-
-/// [a]x, the cross-product matrix: skew(a) * b == a.cross(b).
-Eigen::Matrix3d skew(const Eigen::Vector3d& a);
 
 /// exp(phi): the unit quaternion of a rotation by |phi| about phi/|phi| (Taylor near 0).
 Eigen::Quaterniond exp_map(const Eigen::Vector3d& phi);
