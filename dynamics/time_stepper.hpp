@@ -1,0 +1,64 @@
+#pragma once
+// Implicit time stepping of the Newton-Euler equations (2.20)-(2.21) in the form of (3.9)-(3.10):
+//   m dV/dt = F,   d(I_world Omega)/dt = M   (world frame: the gyroscopic term Omega x I Omega of
+//   (2.21) is the rate of change of I_world = Q I_body Q^T),
+//   dR/dt = V,     dq/dt: q_{K+1} = exp(theta) q_K on the unit-quaternion manifold,
+// with F, M a callback of the END-of-step kinematics. Each step solves for the six unknowns
+// (V_{K+1}, Omega_{K+1}) by Newton (newton6.hpp); see docs/dynamics.md.
+#include "newton6.hpp"
+#include "rigid_body.hpp"
+#include "wrench.hpp"
+
+namespace dc::dynamics {
+
+/// bdf1: the paper's backward differences (3.1)-(3.2), first order, L-stable.
+/// bdf2: second-order backward differences (variable step), started by one bdf1 step. Chosen over
+///   the implicit midpoint rule because it stays in the paper's family and damps stiff modes
+///   (amplification -> 0 as dt/tau -> infinity) where the midpoint rule rings (-> -1): the creep
+///   law's slip relaxes ~1000x faster than the motion (DESIGN.md).
+enum class Scheme { bdf1, bdf2 };
+
+const char* to_string(Scheme scheme);
+
+struct StepperOptions {
+  Scheme scheme = Scheme::bdf2;
+  /// Tolerance on the step's residual in velocity units: |(dV, rho dOmega)| with rho the
+  /// gyration radius, relative to max(|V|, rho |Omega|, first correction).
+  NewtonOptions newton;
+};
+
+struct StepReport {
+  NewtonStatus status = NewtonStatus::max_iterations;
+  Scheme scheme_used = Scheme::bdf1;  ///< bdf1 on the start step of bdf2
+  int iterations = 0;                 ///< Newton updates in this step
+  double residual = 0.0;              ///< final |residual| (m/s)
+  int wrench_evaluations = 0;         ///< calls of the callback in this step
+  bool converged() const { return status == NewtonStatus::converged; }
+};
+
+class RigidBodyStepper {
+ public:
+  explicit RigidBodyStepper(RigidBody body, StepperOptions options = {});
+
+  /// Advances `state` by dt > 0 ("dt" InputError otherwise). On non-convergence the state is left
+  /// unchanged and the report says why. bdf2 uses the state before the last step as its history
+  /// when `state` is exactly the one this stepper produced last; otherwise it restarts with bdf1.
+  [[nodiscard]] StepReport step(RigidBodyState& state, double dt, const WrenchFunction& wrench);
+
+  /// Forgets the history (the next bdf2 step is a bdf1 start step).
+  void reset() { has_history_ = false; }
+
+  const RigidBody& body() const { return body_; }
+  const StepperOptions& options() const { return options_; }
+
+ private:
+  bool continues_history(const RigidBodyState& state) const;
+
+  RigidBody body_;
+  StepperOptions options_;
+  bool has_history_ = false;
+  RigidBodyState previous_;  ///< state at t_{K-1}
+  RigidBodyState last_;      ///< state at t_K as this stepper returned it
+};
+
+}  // namespace dc::dynamics
