@@ -9,6 +9,7 @@
 
 #include "analytic_reference.hpp"
 #include "cli_common.hpp"
+#include "paper_cylinder_run.hpp"
 #include "commands.hpp"
 
 namespace dc::cli {
@@ -101,7 +102,8 @@ int run_validate(const ValidateArgs& args) {
     if (2.0 * ref->semi_axis_x / g.dx < 6.0 || (!two_d && 2.0 * ref->semi_axis_y / g.dy < 6.0))
       std::fprintf(stderr, "warning: grid: fewer than 6 elements across the contact; refine the grid\n");
   }
-  if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential)
+  if (c.problem == ProblemKind::paper_cylinder) validate_paper_cylinder(c);
+  else if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential)
     std::printf("note: the solver for problem '%s' is not implemented in this build yet\n", to_string(c.problem));
   std::printf("valid\n");
   return kExitOk;

@@ -34,7 +34,7 @@ double force_ratio(double s) {
 
 double force_ratio_slope(double s) { return std::abs(s) >= 1.0 ? 0.0 : 2.0 * (1.0 - std::abs(s)); }
 
-Run simulate(const Parameters& p, double dt, Scheme scheme, const TractionLaw& law) {
+void check(const Parameters& p) {
   require(p.eta > 0.0, "eta", "must be positive (M R^2 / I; \"inf\" for no rotational inertia)");
   require(p.epsilon > 0.0 && std::isfinite(p.epsilon), "epsilon", "must be positive and finite (l / R)");
   require(p.v_bar0 >= 0.0 && std::isfinite(p.v_bar0), "v_bar0", "must be >= 0 (a magnitude)");
@@ -42,6 +42,10 @@ Run simulate(const Parameters& p, double dt, Scheme scheme, const TractionLaw& l
   require(std::isfinite(p.gamma_bar), "gamma_bar", "must be finite");
   require(std::isfinite(p.M0_bar), "M0_bar", "must be finite");
   require(std::isfinite(p.T_bar), "T_bar", "must be finite");
+}
+
+Run simulate(const Parameters& p, double dt, Scheme scheme, const TractionLaw& law) {
+  check(p);
   if (!(dt > 0.0) || !std::isfinite(dt)) throw InputError("time.dt", "must be positive");
   const double c = std::isinf(p.eta) ? 0.0 : 1.0 / (1.0 + p.eta);  // c eps is the slip's "mass"
   const double ce = c * p.epsilon;

@@ -70,6 +70,9 @@ struct Run {
   std::string message;          ///< why the run stopped early (ok = false)
 };
 
+/// Throws InputError (key "dimensionless.<name>") for parameters out of range.
+void check(const Parameters& p);
+
 /// Integrates from t^ = 0 to t_bar_end with steps dt_bar. Throws InputError (key
 /// "dimensionless.<name>") for parameters out of range.
 Run simulate(const Parameters& p, double dt_bar, Scheme scheme, const TractionLaw& law = {});

@@ -1,0 +1,110 @@
+// `dyncontact solve` / `validate` on the paper's Section 5 cylinder (problem "paper_cylinder"):
+// the bundled sweep, the contract's summary and timeseries columns, gross sliding where the
+// derived quasi-static limit puts it, the numerical traction (tangential solver) against the
+// closed form, and bad inputs naming the key.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace dc::test {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+class CliPaperCylinder : public CliTest {
+ protected:
+  /// The bundled example with `edit` applied, no plots; returns the file name.
+  std::string case_file(const std::function<void(json&)>& edit = {}) const {
+    json doc = json::parse(slurp(fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / "paper-cylinder.json"));
+    doc["output"] = {{"plots", false}};
+    if (edit) edit(doc);
+    std::ofstream(dir_ / "case.json") << doc.dump(2);
+    return "case.json";
+  }
+  void expect_rejected(const std::function<void(json&)>& edit, const std::string& key) const {
+    const std::string file = case_file(edit);
+    for (const std::string& command : {"validate " + file, "solve " + file + " --out rejected -q"}) {
+      const CliResult r = run(command);
+      EXPECT_EQ(r.code, 2) << command << r.err;
+      EXPECT_NE(r.err.find("error: " + key + ":"), std::string::npos) << command << "stderr: " << r.err;
+    }
+  }
+};
+
+TEST_F(CliPaperCylinder, SweepOfTheMomentRateReachesGrossSlidingWhereTheQuasiStaticLimitSays) {
+  const CliResult r = run("solve " + case_file() + " --out pc -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json s = json::parse(slurp(dir_ / "pc" / "summary.json"));
+  EXPECT_EQ(s["problem"], "paper_cylinder");
+  ASSERT_EQ(s["runs"].size(), 3u);
+  for (const char* key : {"steps", "final", "timeseries"}) EXPECT_TRUE(s.contains(key)) << key;
+  // eta = 2, M0_bar = 0.2: F_bar = (2/3)(0.2 + gamma t) reaches 1 at t* = 1.3/gamma; eps = 1e-3
+  // and dt = 0.002 put the onset within 0.02 of it.
+  const double gammas[] = {0.25, 0.5, 1.0};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const json& run_k = s["runs"][k];
+    EXPECT_EQ(run_k["status"], "completed");
+    const double t_star = 1.3 / gammas[k];
+    if (t_star < 3.0) {
+      ASSERT_TRUE(run_k["sliding_onset_t_bar"].is_number());
+      EXPECT_NEAR(run_k["sliding_onset_t_bar"].get<double>(), t_star, 0.02);
+      EXPECT_EQ(run_k["final"]["F_bar"].get<double>(), 1.0);
+    } else {
+      EXPECT_TRUE(run_k["sliding_onset_t_bar"].is_null());
+      EXPECT_NEAR(run_k["final"]["F_bar"].get<double>(), run_k["quasi_static_final"]["F_bar"].get<double>(), 1e-3);
+      EXPECT_NEAR(run_k["final"]["v_bar"].get<double>(), run_k["quasi_static_final"]["v_bar"].get<double>(), 1e-3);
+    }
+  }
+  std::ifstream ts(dir_ / "pc" / s["runs"][0]["timeseries"].get<std::string>());
+  std::string header;
+  std::getline(ts, header);
+  EXPECT_EQ(header, "t,x,y,z,vx,vy,vz,wx,wy,wz,Fx,Fy,Fz,Mx,My,Mz,creepage,stick_fraction,t_bar,F_bar,l_bar,v_bar");
+  int rows = 0;
+  for (std::string line; std::getline(ts, line);) ++rows;
+  EXPECT_EQ(rows, s["runs"][0]["steps"].get<int>() + 1);
+}
+
+TEST_F(CliPaperCylinder, NumericalTractionMatchesCarterPoritsky) {
+  // The creep law tabulated from the tangential solver's steady rolling (200 strips) against
+  // the closed form: the final F_bar and v_bar of an unsaturated run within 1e-3.
+  auto edit = [](json& d) {
+    d.erase("sweep");
+    d["dimensionless"]["gamma_bar"] = 0.25;
+  };
+  const std::string closed = case_file(edit);
+  ASSERT_EQ(run("solve " + closed + " --out closed -q").code, 0);
+  const std::string numerical = case_file([&](json& d) {
+    edit(d);
+    d["traction_model"] = "numerical";
+  });
+  const CliResult r = run("solve " + numerical + " --out numerical -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json a = json::parse(slurp(dir_ / "closed" / "summary.json"));
+  const json b = json::parse(slurp(dir_ / "numerical" / "summary.json"));
+  EXPECT_EQ(b["traction_model"], "numerical");
+  EXPECT_NEAR(b["final"]["F_bar"].get<double>(), a["final"]["F_bar"].get<double>(), 1e-3);
+  EXPECT_NEAR(b["final"]["v_bar"].get<double>(), a["final"]["v_bar"].get<double>(), 1e-3);
+}
+
+TEST_F(CliPaperCylinder, BadInputsNameTheKey) {
+  expect_rejected([](json& d) { d["dimensionless"]["gama_bar"] = 0.5; }, "dimensionless.gama_bar");
+  expect_rejected([](json& d) { d["dimensionless"]["eta"] = -1.0; }, "dimensionless.eta");
+  expect_rejected([](json& d) { d["dimensionless"]["epsilon"] = 0.0; }, "dimensionless.epsilon");
+  expect_rejected([](json& d) { d.erase("dimensionless"); }, "dimensionless");
+  expect_rejected([](json& d) { d["time"]["scheme"] = "rk4"; }, "time.scheme");
+  expect_rejected([](json& d) { d["time"]["dt"] = -0.1; }, "time.dt");
+  expect_rejected([](json& d) { d["sweep"] = {{"loads.moment", {1, 2}}}; }, "sweep.loads.moment");
+  expect_rejected([](json& d) { d["sweep"] = {{"dimensionless.eta", {1, -2}}}; }, "dimensionless.eta");
+}
+
+}  // namespace
+}  // namespace dc::test
