@@ -37,22 +37,24 @@ double force_ratio_slope(double s) { return std::abs(s) >= 1.0 ? 0.0 : 2.0 * (1.
 void check(const Parameters& p) {
   require(p.eta > 0.0, "eta", "must be positive (M R^2 / I; \"inf\" for no rotational inertia)");
   require(p.epsilon > 0.0 && std::isfinite(p.epsilon), "epsilon", "must be positive and finite (l / R)");
+  require(p.mu > 0.0 && std::isfinite(p.mu), "mu", "the friction coefficient must be positive");
   require(p.v_bar0 >= 0.0 && std::isfinite(p.v_bar0), "v_bar0", "must be >= 0 (a magnitude)");
   require(p.t_bar_end > 0.0 && std::isfinite(p.t_bar_end), "t_bar_end", "must be positive");
   require(std::isfinite(p.gamma_bar), "gamma_bar", "must be finite");
   require(std::isfinite(p.M0_bar), "M0_bar", "must be finite");
   require(std::isfinite(p.T_bar), "T_bar", "must be finite");
+  require(std::isnan(p.w0) || std::isfinite(p.w0), "v_bar0", "the initial slip must be finite");
 }
 
 Run simulate(const Parameters& p, double dt, Scheme scheme, const TractionLaw& law) {
   check(p);
   if (!(dt > 0.0) || !std::isfinite(dt)) throw InputError("time.dt", "must be positive");
   const double c = std::isinf(p.eta) ? 0.0 : 1.0 / (1.0 + p.eta);  // c eps is the slip's "mass"
-  const double ce = c * p.epsilon;
+  const double ce = c * p.mu * p.epsilon;
   const int steps = static_cast<int>(std::ceil(p.t_bar_end / dt - 1e-9));
 
   Run run;
-  double u0 = 1.0, w0 = -p.v_bar0, u_old = u0, w_old = w0;  // y_n, y_{n-1}
+  double u0 = 1.0, w0 = std::isnan(p.w0) ? -p.v_bar0 : p.w0, u_old = u0, w_old = w0;  // y_n, y_{n-1}
   if (c == 0.0) {
     // No rotational inertia: the slip is algebraic from the start, phi(w/u) = -M^(0).
     if (std::abs(p.M0_bar) >= 1.0) {

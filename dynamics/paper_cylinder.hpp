@@ -15,8 +15,8 @@
 // invert (5.3) (square root for square, and the sign): we use the inversion above.
 // The motion, from (5.7) and (5.9) divided by mu P (c = 1/(1 + eta), c = 0 for eta = inf):
 //   du/dt^        = -phi(w/u) + T^
-//   c eps dw/dt^  = -phi(w/u) + c T^ - (1 - c) M^(t^),   M^(t^) = M0^ + gamma^ t^.
-// With eps ~ 1e-3 the slip relaxes ~1/eps faster than the motion: the second equation is stiff
+//   c mu eps dw/dt^ = -phi(w/u) + c T^ - (1 - c) M^(t^),   M^(t^) = M0^ + gamma^ t^
+// (M dv/dt = mu eps mu P dw/dt^ since v = mu eps V0 w). With mu eps ~ 1e-3 the slip relaxes ~1/(mu eps) faster than the motion: the second equation is stiff
 // (for eta = inf it is algebraic, (5.8) with I = 0), so the steps are implicit (backward
 // differences, BDF1 as in the paper or BDF2) with Newton on (u, w) in every step.
 //
@@ -48,7 +48,9 @@ struct Parameters {
   double M0_bar = 0.0;     ///< initial driving moment
   double eta = 2.0;        ///< M R^2 / I (infinity allowed)
   double epsilon = 1e-3;   ///< l / R
+  double mu = 1.0;         ///< friction coefficient: the slip relaxes on the scale mu eps
   double v_bar0 = 0.0;     ///< initial |v|/(mu eps V0); the slip starts as a driven one (w = -v_bar0)
+  double w0 = std::numeric_limits<double>::quiet_NaN();  ///< signed initial v/(mu eps V0); NaN: -v_bar0
   double T_bar = 0.0;      ///< horizontal force on the axis, T_ex/(mu P)
   double t_bar_end = 1.0;
 };

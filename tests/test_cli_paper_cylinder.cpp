@@ -8,6 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <numbers>
+#include <sstream>
+#include <vector>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -95,6 +98,65 @@ TEST_F(CliPaperCylinder, NumericalTractionMatchesCarterPoritsky) {
   EXPECT_NEAR(b["final"]["v_bar"].get<double>(), a["final"]["v_bar"].get<double>(), 1e-3);
 }
 
+/// Rows of a timeseries.csv (numbers; empty cells as NaN).
+std::vector<std::vector<double>> read_rows(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) row.push_back(cell.empty() ? NAN : std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST_F(CliPaperCylinder, DimensionalInputsAreThePapersScalesAndBalanceMomentum) {
+  const fs::path example = fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / "paper-cylinder-si.json";
+  const json d = json::parse(slurp(example));
+  const CliResult r = run("solve " + shell_quote(example.string()) + " --out si -q --set output.plots=false");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json s = json::parse(slurp(dir_ / "si" / "summary.json"));
+  EXPECT_EQ(s["inputs"], "dimensional");
+  // The paper's scales from the inputs (Hertz half-width of a steel pair in plane strain).
+  const double M = d["body"]["mass"], R = d["body"]["radius"], I = d["body"]["inertia"][1];
+  const double P = -d["loads"]["force"]["z"]["value"].get<double>(), mu = d["friction"]["mu"];
+  const double M0 = d["loads"]["moment"]["y"]["value"], gamma = d["loads"]["moment"]["y"]["rate"];
+  const double V0 = d["body"]["initial"]["velocity"][0], E = 2.1e11, nu = 0.3;
+  const double a = std::sqrt(4.0 * P * R * 2.0 * (1.0 - nu * nu) / (std::numbers::pi * E));
+  const json& dl = s["run"]["dimensionless"];
+  EXPECT_NEAR(dl["epsilon"].get<double>(), a / R, 1e-12 * a / R);
+  EXPECT_NEAR(dl["eta"].get<double>(), M * R * R / I, 1e-12);
+  EXPECT_NEAR(dl["gamma_bar"].get<double>(), gamma * M * V0 / (mu * P * mu * P * R), 1e-12);
+  EXPECT_NEAR(dl["M0_bar"].get<double>(), M0 / (mu * P * R), 1e-12);
+  // The same run from those dimensionless inputs gives the same dimensionless history.
+  const std::string twin = case_file([&](json& c) {
+    c.erase("sweep");
+    c["dimensionless"] = {{"gamma_bar", dl["gamma_bar"]}, {"M0_bar", dl["M0_bar"]}, {"eta", dl["eta"]},
+                          {"epsilon", dl["epsilon"]}, {"mu", dl["mu"]}, {"v_bar0", 0.0}, {"t_bar_end", dl["t_bar_end"]}};
+    c["time"] = {{"dt", s["run"]["dt_bar"]}, {"scheme", "bdf1"}};
+  });
+  ASSERT_EQ(run("solve " + twin + " --out twin -q").code, 0);
+  const json t = json::parse(slurp(dir_ / "twin" / "summary.json"));
+  for (const char* k : {"F_bar", "l_bar", "v_bar"})
+    EXPECT_NEAR(s["final"][k].get<double>(), t["final"][k].get<double>(), 1e-9 * (1.0 + t["final"][k].get<double>())) << k;
+  // BDF1 steps (5.7)-(5.8) with the end-of-step wrench: M dV = dt F_x and I dOmega = dt (M_y +
+  // M_ex) summed over the steps hold to the Newton tolerance.
+  const auto rows = read_rows(dir_ / "si" / "timeseries.csv");
+  ASSERT_GT(rows.size(), 100u);
+  double impulse = 0.0, angular = 0.0;
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    const double dt = rows[k][0] - rows[k - 1][0];
+    impulse += dt * rows[k][10];
+    angular += dt * (rows[k][14] + M0 + gamma * rows[k][0]);
+  }
+  EXPECT_NEAR(M * (rows.back()[4] - rows.front()[4]), impulse, 1e-8 * std::abs(impulse));
+  EXPECT_NEAR(I * (rows.back()[8] - rows.front()[8]), angular, 1e-8 * std::abs(angular));
+  EXPECT_NEAR(s["final"]["time"].get<double>(), d["time"]["t_end"].get<double>(), d["time"]["dt"].get<double>());
+}
+
 TEST_F(CliPaperCylinder, BadInputsNameTheKey) {
   expect_rejected([](json& d) { d["dimensionless"]["gama_bar"] = 0.5; }, "dimensionless.gama_bar");
   expect_rejected([](json& d) { d["dimensionless"]["eta"] = -1.0; }, "dimensionless.eta");
@@ -104,6 +166,19 @@ TEST_F(CliPaperCylinder, BadInputsNameTheKey) {
   expect_rejected([](json& d) { d["time"]["dt"] = -0.1; }, "time.dt");
   expect_rejected([](json& d) { d["sweep"] = {{"loads.moment", {1, 2}}}; }, "sweep.loads.moment");
   expect_rejected([](json& d) { d["sweep"] = {{"dimensionless.eta", {1, -2}}}; }, "dimensionless.eta");
+  auto si = [](const std::function<void(json&)>& edit) {
+    return [edit](json& d) {
+      d = json::parse(slurp(fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / "paper-cylinder-si.json"));
+      d["output"] = {{"plots", false}};
+      edit(d);
+    };
+  };
+  expect_rejected(si([](json& d) { d["body"]["mass"] = -1.0; }), "body.mass");
+  expect_rejected(si([](json& d) { d["body"]["initial"]["velocity"] = {0, 0, 0}; }), "body.initial.velocity[0]");
+  expect_rejected(si([](json& d) { d["loads"]["force"]["z"]["value"] = 100.0; }), "loads.force.z.value");
+  expect_rejected(si([](json& d) { d["loads"]["force"]["z"]["rate"] = 1.0; }), "loads.force.z.rate");
+  expect_rejected(si([](json& d) { d["time"].erase("t_end"); }), "time.t_end");
+  expect_rejected(si([](json& d) { d.erase("friction"); }), "friction");
 }
 
 }  // namespace
