@@ -22,6 +22,8 @@ const std::vector<BundledExample>& bundled_examples() {
         {"rolling-sphere", "steady rolling of a steel sphere, 100 N, creepage 1e-3 (3-D, rolling)"},
         {"spence-sphere", "Spence: rigid sphere pressed into aluminium in 3 load steps, mu = 0.2 (3-D, history)"},
         {"cattaneo-carter-2d", "Cattaneo to Carter: a cylinder under 0.5 mu P starts rolling, 5 steps (2-D, rolling history)"},
+        {"paper-cylinder", "the paper's Section 5: cylinder under a growing driving moment, sweep of its rate (Figs 4-6)"},
+        {"paper-cylinder-si", "the paper's Section 5 cylinder in SI units: steel, R = 0.5 m, 10 m/s, until it slides"},
     };
     for (auto& e : list) {
       e.text = embedded_example_text(e.name);

@@ -86,6 +86,25 @@ TEST_F(Cli, ExamplesMatchTheFilesAndValidate) {
   EXPECT_NE(r.err.find("error: example:"), std::string::npos) << r.err;
 }
 
+TEST_F(Cli, EveryExampleFileIsBundledAndValid) {
+  const Result list = run("example --list");
+  ASSERT_EQ(list.code, 0);
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(DYNCONTACT_SOURCE_DIR) / "examples")) {
+    if (entry.path().extension() != ".json") continue;
+    ++files;
+    const std::string name = entry.path().stem().string();
+    SCOPED_TRACE(name);
+    EXPECT_NE(list.out.find(name + " "), std::string::npos) << "not in `example --list`";
+    const Result e = run("example " + name);
+    ASSERT_EQ(e.code, 0) << e.err;
+    EXPECT_EQ(e.out, slurp(entry.path()));
+    const Result v = run("validate " + quote(entry.path().string()));
+    EXPECT_EQ(v.code, 0) << v.err;
+  }
+  EXPECT_GE(files, 12);
+}
+
 TEST_F(Cli, ValidateDescribesTheCase) {
   const Result r = run("validate " + case_file([](json&) {}));
   EXPECT_EQ(r.code, 0) << r.err;
