@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "errors.hpp"
+#include "json_block.hpp"
 #include "hertz.hpp"
 
 namespace dc {
@@ -21,127 +22,8 @@ namespace {
 
 using json = nlohmann::json;
 
-std::string join(const std::string& prefix, const std::string& key) {
-  return prefix.empty() ? key : prefix + "." + key;
-}
-
-std::string describe(const json& j) { return j.type_name(); }
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
-
-/// A JSON object at `path` with typed, key-checked accessors.
-class Obj {
- public:
-  Obj(const json& j, std::string path) : j_(j), path_(std::move(path)) {
-    if (!j.is_object())
-      throw InputError(path_.empty() ? "case" : path_, "expected an object, got " + describe(j));
-  }
-
-  /// Rejects every key not in `keys` (naming the allowed ones).
-  void allow(std::initializer_list<const char*> keys) const {
-    for (auto it = j_.begin(); it != j_.end(); ++it) {
-      bool ok = false;
-      for (const char* k : keys) ok = ok || it.key() == k;
-      if (!ok) {
-        std::string list;
-        for (const char* k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
-        throw InputError(key(it.key()), "unknown key (allowed here: " + list + ")");
-      }
-    }
-  }
-
-  bool has(const char* k) const { return j_.contains(k); }
-  std::string key(const std::string& k) const { return join(path_, k); }
-  const std::string& path() const { return path_; }
-
-  const json& at(const char* k) const {
-    if (!j_.contains(k)) throw InputError(key(k), "missing required key");
-    return j_.at(k);
-  }
-
-  double number(const char* k) const {
-    const json& v = at(k);
-    if (!v.is_number()) throw InputError(key(k), "expected a number, got " + describe(v));
-    const double d = v.get<double>();
-    if (!std::isfinite(d)) throw InputError(key(k), "must be finite");
-    return d;
-  }
-  double number_or(const char* k, double fallback) const { return has(k) ? number(k) : fallback; }
-
-  int integer(const char* k) const {
-    const json& v = at(k);
-    if (!v.is_number()) throw InputError(key(k), "expected an integer, got " + describe(v));
-    const double d = v.get<double>();
-    if (d != std::floor(d) || std::abs(d) > 1e9)
-      throw InputError(key(k), "expected an integer, got " + fmt(d));
-    return static_cast<int>(d);
-  }
-  int integer_or(const char* k, int fallback) const { return has(k) ? integer(k) : fallback; }
-
-  bool boolean(const char* k) const {
-    const json& v = at(k);
-    if (!v.is_boolean()) throw InputError(key(k), "expected true or false, got " + describe(v));
-    return v.get<bool>();
-  }
-  bool boolean_or(const char* k, bool fallback) const { return has(k) ? boolean(k) : fallback; }
-
-  std::string string(const char* k) const {
-    const json& v = at(k);
-    if (!v.is_string()) throw InputError(key(k), "expected a string, got " + describe(v));
-    return v.get<std::string>();
-  }
-  std::string string_or(const char* k, const std::string& fallback) const {
-    return has(k) ? string(k) : fallback;
-  }
-
-  std::string choice(const char* k, const std::string& fallback,
-                     std::initializer_list<const char*> options) const {
-    const std::string v = string_or(k, fallback);
-    std::string list;
-    for (const char* o : options) {
-      if (v == o) return v;
-      list += (list.empty() ? "" : ", ") + std::string(o);
-    }
-    throw InputError(key(k), "unknown value '" + v + "' (expected one of: " + list + ")");
-  }
-
-  std::vector<double> numbers(const char* k) const {
-    const json& v = at(k);
-    if (!v.is_array()) throw InputError(key(k), "expected an array of numbers, got " + describe(v));
-    std::vector<double> out;
-    for (const auto& e : v) {
-      if (!e.is_number() || !std::isfinite(e.get<double>()))
-        throw InputError(key(k), "expected an array of numbers, found " + describe(e));
-      out.push_back(e.get<double>());
-    }
-    return out;
-  }
-
-  double positive(const char* k) const {
-    const double v = number(k);
-    if (!(v > 0.0)) throw InputError(key(k), "must be positive, got " + fmt(v));
-    return v;
-  }
-  double non_negative(const char* k) const {
-    const double v = number(k);
-    if (v < 0.0) throw InputError(key(k), "must be non-negative, got " + fmt(v));
-    return v;
-  }
-
- private:
-  const json& j_;
-  std::string path_;
-};
-
-// ---------------------------------------------------------------- materials
-
 Elastic parse_elastic(const json& j, const std::string& path) {
-  Obj o(j, path);
+  JsonBlock o(j, path);
   o.allow({"E", "G", "nu", "rigid"});
   if (o.boolean_or("rigid", false)) {
     for (const char* k : {"E", "G", "nu"})
@@ -157,7 +39,7 @@ Elastic parse_elastic(const json& j, const std::string& path) {
 }
 
 MaterialPair parse_materials(const json& j) {
-  Obj o(j, "materials");
+  JsonBlock o(j, "materials");
   o.allow({"body", "base"});
   MaterialPair m;
   m.body = parse_elastic(o.at("body"), "materials.body");
@@ -234,7 +116,7 @@ void read_table(ProfileSpec& p, const std::string& file_key, const std::string& 
 }
 
 ProfileSpec parse_profile(const json& j, int dimension, const std::string& base_dir) {
-  Obj o(j, "profile");
+  JsonBlock o(j, "profile");
   const std::string type = o.string("type");
   ProfileSpec p;
   const bool three_d = dimension == 3;
@@ -295,7 +177,7 @@ ProfileSpec parse_profile(const json& j, int dimension, const std::string& base_
 // ---------------------------------------------------------------- normal, friction, solver, output
 
 NormalSpec parse_normal(const json& j) {
-  Obj o(j, "normal");
+  JsonBlock o(j, "normal");
   o.allow({"force", "approach"});
   NormalSpec n;
   if (o.has("force") && o.has("approach"))
@@ -313,7 +195,7 @@ NormalSpec parse_normal(const json& j) {
 }
 
 FrictionSpec parse_friction(const json& j) {
-  Obj o(j, "friction");
+  JsonBlock o(j, "friction");
   FrictionSpec f;
   f.law = o.choice("law", "", {"coulomb", "tresca", "table"});
   if (f.law == "coulomb") {
@@ -343,7 +225,7 @@ FrictionSpec parse_friction(const json& j) {
 }
 
 SolverSpec parse_solver(const json& j) {
-  Obj o(j, "solver");
+  JsonBlock o(j, "solver");
   o.allow({"backend", "tol", "certificate_tol", "max_iter", "fallback", "accept_unconverged", "hessian",
            "operator"});
   SolverSpec s;
@@ -360,7 +242,7 @@ SolverSpec parse_solver(const json& j) {
 }
 
 OutputSpec parse_output(const json& j) {
-  Obj o(j, "output");
+  JsonBlock o(j, "output");
   o.allow({"dir", "fields", "plots"});
   OutputSpec out;
   out.dir = o.string_or("dir", "");
@@ -421,7 +303,7 @@ void hertz_semi_axes(const Case& c, bool has_normal, double& ax, double& ay) {
   ay = s.b;
 }
 
-std::vector<double> bounds(const Obj& o, const char* k) {
+std::vector<double> bounds(const JsonBlock& o, const char* k) {
   const auto v = o.numbers(k);
   if (v.size() != 2) throw InputError(o.key(k), "expected [min, max]");
   if (!(v[1] > v[0])) throw InputError(o.key(k), "expected [min, max] with min < max");
@@ -429,7 +311,7 @@ std::vector<double> bounds(const Obj& o, const char* k) {
 }
 
 Grid parse_grid(const json& j, const Case& c, bool has_normal) {
-  Obj o(j, "grid");
+  JsonBlock o(j, "grid");
   const bool three_d = c.dimension == 3;
   o.allow({"nx", "ny", "x", "y", "extent"});
   const int nx = o.integer("nx");
@@ -503,7 +385,7 @@ void check_contact_in_grid(const Case& c) {
   }
 }
 
-ProblemKind parse_problem(const Obj& top) {
+ProblemKind parse_problem(const JsonBlock& top) {
   const std::string kind = top.string("problem");
   if (kind == "normal") return ProblemKind::normal;
   if (kind == "tangential") return ProblemKind::tangential;
@@ -620,7 +502,7 @@ void apply_override(nlohmann::json& document, const std::string& assignment) {
 }
 
 Case build_case(const nlohmann::json& document, const std::string& base_dir) {
-  Obj top(document, "");
+  JsonBlock top(document, "");
   top.allow({"schema", "name", "description", "problem", "dimension", "materials", "profile", "grid", "normal",
              "friction", "tangential", "fe_body", "body", "loads", "time", "traction_model", "dimensionless",
              "solver", "sweep", "output"});
