@@ -6,7 +6,6 @@
 #include <iostream>
 #include <limits>
 #include <memory>
-#include <set>
 #include <sstream>
 #include <vector>
 
@@ -25,41 +24,20 @@ namespace {
 using nlohmann::json;
 namespace pc = paper_cylinder;
 
-double number(const json& v, const std::string& key) {
-  if (!v.is_number()) throw InputError(key, "must be a number");
-  const double x = v.get<double>();
-  if (!std::isfinite(x)) throw InputError(key, "must be finite");
-  return x;
-}
-
-void check_keys(const json& v, const std::string& block, const std::set<std::string>& allowed) {
-  for (auto it = v.begin(); it != v.end(); ++it)
-    if (!allowed.count(it.key())) throw InputError(block + "." + it.key(), "unknown key");
-}
-
-pc::Parameters parameters_of(const json& doc) {
-  if (!doc.contains("dimensionless"))
-    throw InputError("dimensionless",
-                     "required: the paper's dimensionless inputs, or the dimensional blocks body, loads, time");
-  const json& d = doc.at("dimensionless");
-  if (!d.is_object()) throw InputError("dimensionless", "expected an object");
-  check_keys(d, "dimensionless", {"gamma_bar", "M0_bar", "eta", "epsilon", "v_bar0", "t_bar_end", "T_bar", "mu"});
+/// The dimensionless inputs as given, on the model's defaults.
+pc::Parameters parameters_of(const PaperCylinderSpec& s) {
   pc::Parameters p;
-  auto get = [&](const char* k, double& out) {
-    if (d.contains(k)) out = number(d.at(k), std::string("dimensionless.") + k);
+  auto set = [](const std::optional<double>& v, double& out) {
+    if (v) out = *v;
   };
-  get("gamma_bar", p.gamma_bar);
-  get("M0_bar", p.M0_bar);
-  get("epsilon", p.epsilon);
-  get("v_bar0", p.v_bar0);
-  get("t_bar_end", p.t_bar_end);
-  get("T_bar", p.T_bar);
-  get("mu", p.mu);
-  if (d.contains("eta")) {
-    const json& e = d.at("eta");
-    if (e.is_string() && e.get<std::string>() == "inf") p.eta = std::numeric_limits<double>::infinity();
-    else p.eta = number(e, "dimensionless.eta");
-  }
+  set(s.gamma_bar, p.gamma_bar);
+  set(s.M0_bar, p.M0_bar);
+  set(s.eta, p.eta);
+  set(s.epsilon, p.epsilon);
+  set(s.v_bar0, p.v_bar0);
+  set(s.t_bar_end, p.t_bar_end);
+  set(s.T_bar, p.T_bar);
+  set(s.mu, p.mu);
   return p;
 }
 
@@ -73,59 +51,15 @@ struct Units {
   double x0 = 0.0, z0 = 0.0;
 };
 
-const json& member(const json& v, const std::string& key, const std::string& name) {
-  if (!v.is_object() || !v.contains(name)) throw InputError(key.empty() ? name : key + "." + name, "missing required key");
-  return v.at(name);
-}
-
-/// {"value": v, "rate": r} (rate optional) at `key`.
-std::pair<double, double> value_rate(const json& v, const std::string& key) {
-  if (!v.is_object()) throw InputError(key, "expected {\"value\": ..., \"rate\": ...}");
-  check_keys(v, key, {"value", "rate"});
-  return {v.contains("value") ? number(v.at("value"), key + ".value") : 0.0,
-          v.contains("rate") ? number(v.at("rate"), key + ".rate") : 0.0};
-}
-
 /// Dimensional inputs (body, loads, materials, friction, time; per unit length in 2-D) turned
 /// into the paper's dimensionless ones. The contact half-width is Hertz's for the pair,
 /// a = (4 P R / (pi E*))^(1/2) ((5.4) is that for a rigid cylinder: E* = E/(1 - nu^2)).
-pc::Parameters dimensional_parameters(const Case& c, const json& doc, Units& u, double& dt_bar) {
-  const json& body = member(doc, "", "body");
-  check_keys(body, "body", {"mass", "inertia", "radius", "initial"});
-  const double M = number(member(body, "body", "mass"), "body.mass");
-  const double R = number(member(body, "body", "radius"), "body.radius");
-  const json& inertia = member(body, "body", "inertia");
-  const double I = inertia.is_array() && inertia.size() == 3 ? number(inertia[1], "body.inertia[1]")
-                                                             : number(inertia, "body.inertia");
-  if (!(M > 0.0)) throw InputError("body.mass", "must be positive");
-  if (!(R > 0.0)) throw InputError("body.radius", "must be positive");
-  if (!(I > 0.0)) throw InputError("body.inertia", "the moment of inertia about the axis (y) must be positive");
-  const json& init = member(body, "body", "initial");
-  check_keys(init, "body.initial", {"position", "velocity", "omega"});
-  auto vec = [&](const char* k, int i) {
-    if (!init.contains(k)) return 0.0;
-    const json& a = init.at(k);
-    if (!a.is_array() || a.size() != 3) throw InputError(std::string("body.initial.") + k, "must be [x, y, z]");
-    return number(a[i], std::string("body.initial.") + k + "[" + std::to_string(i) + "]");
-  };
-  const double V0 = vec("velocity", 0), W0 = vec("omega", 1);
-  if (!(V0 > 0.0)) throw InputError("body.initial.velocity[0]", "the cylinder must be rolling in +x (V0 > 0)");
-  const json& loads = member(doc, "", "loads");
-  check_keys(loads, "loads", {"force", "moment"});
-  const json& force = member(loads, "loads", "force");
-  check_keys(force, "loads.force", {"x", "z"});
-  const auto [Pz, Pz_rate] = value_rate(member(force, "loads.force", "z"), "loads.force.z");
-  const auto [T, T_rate] = force.contains("x") ? value_rate(force.at("x"), "loads.force.x") : std::pair{0.0, 0.0};
-  const json& moment = member(loads, "loads", "moment");
-  check_keys(moment, "loads.moment", {"y"});
-  const auto [M0, gamma] = value_rate(member(moment, "loads.moment", "y"), "loads.moment.y");
-  if (Pz_rate != 0.0) throw InputError("loads.force.z.rate", "the paper's model keeps the normal load constant");
-  if (T_rate != 0.0) throw InputError("loads.force.x.rate", "the paper's model takes a constant T_ex");
-  const double P = -Pz;
-  if (!(P > 0.0)) throw InputError("loads.force.z.value", "must press the cylinder onto the half-plane (< 0)");
-  if (!c.friction || c.friction->law != "coulomb")
-    throw InputError("friction", "the paper's model needs Coulomb friction {\"law\": \"coulomb\", \"mu\": ...}");
-  if (!doc.contains("materials")) throw InputError("materials", "missing required key");
+pc::Parameters dimensional_parameters(const Case& c, Units& u, double& dt_bar) {
+  const PaperCylinderBody& b = c.paper_cylinder->body;
+  const double M = b.mass, R = b.radius, I = b.inertia_y;
+  const double V0 = b.velocity[0], W0 = b.omega[1];
+  const double P = -b.force_z.value, T = b.force_x.value;
+  const double M0 = b.moment_y.value, gamma = b.moment_y.rate;
   const double mu = c.friction->mu;
   const double a = hertz::cylinder2d(R, P, c.materials.E_star()).a;
   pc::Parameters p;
@@ -144,16 +78,10 @@ pc::Parameters dimensional_parameters(const Case& c, const json& doc, Units& u, 
   u.moment = mu * P * R;
   u.radius = R;
   u.mu = mu;
-  u.x0 = vec("position", 0);
-  u.z0 = init.contains("position") ? vec("position", 2) : R;
-  const json& time = member(doc, "", "time");
-  check_keys(time, "time", {"dt", "t_end", "scheme"});
-  const double t_end = number(member(time, "time", "t_end"), "time.t_end");
-  const double dt = number(member(time, "time", "dt"), "time.dt");
-  if (!(t_end > 0.0)) throw InputError("time.t_end", "must be positive");
-  if (!(dt > 0.0)) throw InputError("time.dt", "must be positive");
-  p.t_bar_end = t_end / u.time;
-  dt_bar = dt / u.time;
+  u.x0 = b.position[0];
+  u.z0 = b.has_position ? b.position[2] : R;
+  p.t_bar_end = b.t_end / u.time;
+  dt_bar = b.dt / u.time;
   return p;
 }
 
@@ -161,27 +89,6 @@ struct TimeSpec {
   double dt = 0.0;
   pc::Scheme scheme = pc::Scheme::bdf1;
 };
-
-pc::Scheme scheme_of(const json& doc) {
-  if (!doc.contains("time") || !doc.at("time").contains("scheme")) return pc::Scheme::bdf1;
-  const json& v = doc.at("time").at("scheme");
-  const std::string s = v.is_string() ? v.get<std::string>() : "";
-  if (s != "bdf1" && s != "bdf2") throw InputError("time.scheme", "must be \"bdf1\" or \"bdf2\"");
-  return s == "bdf2" ? pc::Scheme::bdf2 : pc::Scheme::bdf1;
-}
-
-/// Dimensionless inputs: time.dt is a step of t^ (default t_bar_end / 1000).
-TimeSpec time_of(const json& doc, const pc::Parameters& p) {
-  TimeSpec t;
-  t.dt = p.t_bar_end / 1000.0;
-  t.scheme = scheme_of(doc);
-  if (!doc.contains("time")) return t;
-  const json& b = doc.at("time");
-  check_keys(b, "time", {"dt", "scheme"});
-  if (b.contains("dt")) t.dt = number(b.at("dt"), "time.dt");
-  if (!(t.dt > 0.0)) throw InputError("time.dt", "must be positive (a step of t_bar for dimensionless inputs)");
-  return t;
-}
 
 /// One run's inputs: dimensionless, or dimensional converted (the units say which).
 struct Setup {
@@ -191,21 +98,23 @@ struct Setup {
   TimeSpec time;
 };
 
-Setup setup_of(const Case& c, const json& doc) {
+Setup setup_of(const Case& c) {
+  const PaperCylinderSpec& spec = *c.paper_cylinder;
   Setup s;
-  if (doc.contains("dimensionless") || !doc.contains("body")) {
-    s.p = parameters_of(doc);
-    s.time = time_of(doc, s.p);
+  s.time.scheme = spec.bdf2 ? pc::Scheme::bdf2 : pc::Scheme::bdf1;
+  if (!spec.dimensional) {
+    s.p = parameters_of(spec);
+    // dimensionless: time.dt is a step of t^ (default t_bar_end / 1000).
+    s.time.dt = spec.dt ? *spec.dt : s.p.t_bar_end / 1000.0;
     // mu sets the slip's relaxation (mu eps); dimensionless.mu (project extension), else
     // friction.mu, else 1 (said in the summary).
-    const bool in_block = doc.at("dimensionless").contains("mu");
+    const bool in_block = spec.mu.has_value();
     if (!in_block && c.friction && c.friction->law == "coulomb") s.p.mu = c.friction->mu;
     s.mu_given = in_block || (c.friction && c.friction->law == "coulomb");
     s.units.mu = s.mu_given ? s.p.mu : 0.0;
   } else {
-    s.p = dimensional_parameters(c, doc, s.units, s.time.dt);
+    s.p = dimensional_parameters(c, s.units, s.time.dt);
     s.mu_given = true;
-    s.time.scheme = scheme_of(doc);
   }
   pc::check(s.p);
   return s;
@@ -215,14 +124,14 @@ Setup setup_of(const Case& c, const json& doc) {
 /// cylinder (the case's materials, profile radius, normal force, friction and grid.nx when
 /// given; steel, R = 0.05 m, 1e5 N/m, mu = 0.3, 200 strips otherwise) at creepage
 /// xi = s mu a / R, tabulated on |s| <= 1 and interpolated linearly.
-pc::TractionLaw numerical_law(const Case& c, const json& doc) {
-  const MaterialPair m = doc.contains("materials") ? c.materials
+pc::TractionLaw numerical_law(const Case& c) {
+  const MaterialPair m = c.has_block("materials") ? c.materials
                                                    : MaterialPair{Elastic::from_E_nu(2.1e11, 0.3),
                                                                   Elastic::from_E_nu(2.1e11, 0.3)};
-  const double R = doc.contains("profile") && c.profile.radius > 0.0 ? c.profile.radius : 0.05;
-  const double P = doc.contains("normal") && c.normal.control == Control::force ? c.normal.value : 1e5;
+  const double R = c.has_block("profile") && c.profile.radius > 0.0 ? c.profile.radius : 0.05;
+  const double P = c.has_block("normal") && c.normal.control == Control::force ? c.normal.value : 1e5;
   const double mu = c.friction && c.friction->law == "coulomb" ? c.friction->mu : 0.3;
-  const int nx = doc.contains("grid") && doc["grid"].contains("nx") ? c.grid.nx : 200;
+  const int nx = c.has_block("grid") ? c.grid.nx : 200;
   const auto hz = hertz::cylinder2d(R, P, m.E_star());
   const Grid g = Grid::make(2, nx, 1, -1.2 * hz.a, 1.2 * hz.a, 0, 0);
   ProfileSpec prof;
@@ -265,37 +174,6 @@ pc::TractionLaw numerical_law(const Case& c, const json& doc) {
     return ((*table)[k + 1] - (*table)[k]) * K;
   };
   return law;
-}
-
-/// One sweep value (or none): the document with it applied, and its case.
-struct RunSpec {
-  std::string label;  ///< e.g. "gamma_bar = 0.5" (empty without a sweep)
-  json value;
-  json doc;
-};
-
-std::vector<RunSpec> sweep_runs(const json& doc) {
-  if (!doc.contains("sweep")) return {{"", json(), doc}};
-  const json& sw = doc.at("sweep");
-  if (sw.size() != 1) throw InputError("sweep", "give exactly one key to sweep, e.g. {\"dimensionless.gamma_bar\": [...]}");
-  const std::string key = sw.begin().key();
-  const json& values = sw.begin().value();
-  if (!values.is_array() || values.empty()) throw InputError("sweep." + key, "must be a non-empty array of values");
-  const bool dimensionless = doc.contains("dimensionless") || !doc.contains("body");
-  if (dimensionless && key.rfind("dimensionless.", 0) != 0)
-    throw InputError("sweep." + key, "with dimensionless inputs, sweep a dimensionless.* key");
-  std::vector<RunSpec> runs;
-  for (const json& v : values) {
-    RunSpec r;
-    r.doc = doc;
-    r.doc.erase("sweep");
-    apply_override(r.doc, key + "=" + v.dump());
-    r.value = v;
-    const std::string shown = dimensionless ? key.substr(std::string("dimensionless.").size()) : key;
-    r.label = shown + " = " + (v.is_string() ? v.get<std::string>() : v.dump());
-    runs.push_back(std::move(r));
-  }
-  return runs;
 }
 
 std::string fmt(double v) {
@@ -343,16 +221,15 @@ json final_of(const pc::Run& run, const pc::Parameters& p, const Units& u) {
 }  // namespace
 
 void validate_paper_cylinder(const Case& c) {
-  (void)setup_of(c, c.source);
-  for (const RunSpec& r : sweep_runs(c.source)) (void)setup_of(build_case(r.doc), r.doc);
+  (void)setup_of(c);
+  for (const SweepPoint& r : sweep_points(c)) (void)setup_of(r.run);
 }
 
 int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
   validate_paper_cylinder(c);
-  const json& doc = c.source;
-  const std::string model = doc.value("traction_model", std::string("carter_poritsky"));
-  const std::vector<RunSpec> specs = sweep_runs(doc);
-  const Setup first = setup_of(c, doc);
+  const std::string model = c.paper_cylinder->traction_model;
+  const std::vector<SweepPoint> specs = sweep_points(c);
+  const Setup first = setup_of(c);
 
   namespace fs = std::filesystem;
   json summary = {{"name", c.name},
@@ -364,10 +241,10 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
   std::vector<std::string> files, labels;
   bool all_ok = true;
   for (std::size_t k = 0; k < specs.size(); ++k) {
-    const Case run_case = build_case(specs[k].doc);
-    const Setup setup = setup_of(run_case, specs[k].doc);
+    const Case& run_case = specs[k].run;
+    const Setup setup = setup_of(run_case);
     const pc::Parameters& p = setup.p;
-    const pc::TractionLaw law = model == "numerical" ? numerical_law(run_case, specs[k].doc) : pc::TractionLaw{};
+    const pc::TractionLaw law = model == "numerical" ? numerical_law(run_case) : pc::TractionLaw{};
     const pc::Run run = pc::simulate(p, setup.time.dt, setup.time.scheme, law);
     const std::string file = specs.size() == 1 ? "timeseries.csv" : "timeseries_" + std::to_string(k) + ".csv";
     write_timeseries((fs::path(dir) / file).string(), run, p, setup.units, law);

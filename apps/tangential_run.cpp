@@ -10,26 +10,6 @@
 namespace dc::cli {
 namespace {
 
-/// The normal load of each step: the case's, replaced by a history step's "normal" from that
-/// step on (the block was validated by solve_tangential_case).
-std::vector<NormalSpec> step_loads(const Case& c, std::size_t n_steps) {
-  std::vector<NormalSpec> out(n_steps, c.normal);
-  const nlohmann::json& t = c.tangential;
-  if (!t.is_object() || !t.contains("history") || !t["history"].is_array()) return out;
-  NormalSpec n = c.normal;
-  for (std::size_t k = 0; k < n_steps && k < t["history"].size(); ++k) {
-    const nlohmann::json& s = t["history"][k];
-    if (s.is_object() && s.contains("normal") && s["normal"].is_object()) {
-      const nlohmann::json& v = s["normal"];
-      const bool force = v.contains("force");
-      n.control = force ? Control::force : Control::approach;
-      n.value = v.value(force ? "force" : "approach", n.value);
-    }
-    out[k] = n;
-  }
-  return out;
-}
-
 /// A solver leaves round-off pressures outside the contact; those within the certificate
 /// tolerance of the peak count as free (as in run_normal).
 double contact_threshold(const Case& c) { return std::max(c.solver.certificate_tol, 1e-12); }
@@ -54,7 +34,7 @@ bool case_level_key(const std::string& key) {
   return std::any_of(std::begin(keys), std::end(keys), [&](const char* k) { return key == k; });
 }
 
-bool has_history(const Case& c) { return c.tangential.is_object() && c.tangential.contains("history"); }
+bool has_history(const Case& c) { return c.tangential && c.tangential->has_history; }
 
 }  // namespace
 
@@ -86,7 +66,7 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   nlohmann::json s = normal_summary(c, sol.normal, f);
   s["normal_solver"] = s["solver"];
   s["solver"] = to_json(sol.report);
-  const std::string regime = c.tangential.value("regime", "");
+  const std::string regime = c.tangential ? to_string(c.tangential->regime) : "";
   // A rolling solution is reported by its creepage and spin, except a step of a rolling history
   // that rolls no distance (TangentialProblem::roll, no marching step): that one is quasi-static
   // and reports the rigid shift it took.
@@ -101,7 +81,7 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   s["spin"] = rolling ? nlohmann::json(a[2]) : nlohmann::json();
   s["rigid_shift"] = rolling ? nlohmann::json() : pair(a[0], a[1]);
   s["rotation"] = rolling ? nlohmann::json() : nlohmann::json(a[2]);
-  if (regime == "rolling") s["velocity"] = c.tangential.value("velocity", 1.0);
+  if (regime == "rolling") s["velocity"] = c.tangential->rolling.velocity;
   if (regime == "rolling" && has_history(c)) s["distance"] = sol.distance;  // rolled in this step (m)
   int n_stick = 0, n_slip = 0;
   double capacity = 0.0;
@@ -130,7 +110,8 @@ TangentialRun run_tangential(const Case& c, bool progress) {
     run.steps = solve_tangential_case(c, reporter.callback());
     reporter.finish();
   }
-  run.normal = step_loads(c, run.steps.size());
+  run.normal = c.tangential->step_normals();
+  run.normal.resize(run.steps.size(), c.normal);
   nlohmann::json steps = nlohmann::json::array();
   double rolled = 0.0;
   for (std::size_t k = 0; k < run.steps.size(); ++k) {

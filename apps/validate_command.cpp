@@ -54,15 +54,15 @@ int run_validate(const ValidateArgs& args) {
   const bool two_d = c.dimension == 2;
   std::printf("case '%s': problem %s, %s\n", c.name.c_str(), to_string(c.problem),
               two_d ? "2-D (plane strain, per unit length)" : "3-D");
-  if (c.source.contains("description")) std::printf("  %s\n", c.source["description"].get<std::string>().c_str());
+  if (!c.description.empty()) std::printf("  %s\n", c.description.c_str());
   const bool static_problem = c.problem == ProblemKind::normal || c.problem == ProblemKind::tangential;
-  if (static_problem || c.source.contains("materials")) {
+  if (static_problem || c.has_block("materials")) {
     std::printf("  body:     %s\n  base:     %s\n  E*:       %.4g Pa\n", material_text(c.materials.body).c_str(),
                 material_text(c.materials.base).c_str(), c.materials.E_star());
   }
-  if (static_problem || c.source.contains("profile"))
+  if (static_problem || c.has_block("profile"))
     std::printf("  profile:  %s\n", profile_text(c.profile, c.dimension).c_str());
-  if (static_problem || c.source.contains("normal")) {
+  if (static_problem || c.has_block("normal")) {
     if (c.normal.control == Control::force)
       std::printf("  normal:   force %.4g %s\n", c.normal.value, two_d ? "N/m" : "N");
     else
@@ -75,7 +75,7 @@ int run_validate(const ValidateArgs& args) {
     else std::printf("  friction: table of %zu points\n", f.pressure.size());
   }
   const Grid& g = c.grid;
-  if (static_problem || c.source.contains("grid")) {
+  if (static_problem || c.has_block("grid")) {
     if (two_d)
       std::printf("  grid:     %d strips, x in [%.4g, %.4g] m, dx = %.4g m\n", g.nx, g.x0, g.x_max(), g.dx);
     else

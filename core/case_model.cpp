@@ -15,6 +15,7 @@
 
 #include "errors.hpp"
 #include "json_block.hpp"
+#include "json_parse.hpp"
 #include "hertz.hpp"
 
 namespace dc {
@@ -175,24 +176,6 @@ ProfileSpec parse_profile(const json& j, int dimension, const std::string& base_
 }
 
 // ---------------------------------------------------------------- normal, friction, solver, output
-
-NormalSpec parse_normal(const json& j) {
-  JsonBlock o(j, "normal");
-  o.allow({"force", "approach"});
-  NormalSpec n;
-  if (o.has("force") && o.has("approach"))
-    throw InputError("normal.approach", "give either force or approach, not both");
-  if (o.has("force")) {
-    n.control = Control::force;
-    n.value = o.positive("force");
-  } else if (o.has("approach")) {
-    n.control = Control::approach;
-    n.value = o.positive("approach");
-  } else {
-    throw InputError("normal.force", "missing required key (give force or approach)");
-  }
-  return n;
-}
 
 FrictionSpec parse_friction(const json& j) {
   JsonBlock o(j, "friction");
@@ -402,11 +385,29 @@ bool all_digits(const std::string& s) {
 
 }  // namespace
 
+NormalSpec read_normal(const json& j, const std::string& path) {
+  JsonBlock o(j, path);
+  o.allow({"force", "approach"});
+  NormalSpec n;
+  if (o.has("force") && o.has("approach"))
+    throw InputError(o.key("approach"), "give either force or approach, not both");
+  if (o.has("force")) {
+    n.control = Control::force;
+    n.value = o.positive("force");
+  } else if (o.has("approach")) {
+    n.control = Control::approach;
+    n.value = o.positive("approach");
+  } else {
+    throw InputError(o.key("force"), "missing required key (give force or approach)");
+  }
+  return n;
+}
+
 // ---------------------------------------------------------------- public API
 
 nlohmann::json parse_case_text(const std::string& text, const std::string& origin) {
   try {
-    return json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+    return parse_json_checked(text, origin);
   } catch (const json::parse_error& e) {
     std::size_t pos = e.byte == 0 ? 0 : e.byte - 1;  // 0-based index of the offending character
     pos = std::min(pos, text.size());
@@ -472,8 +473,8 @@ void apply_override(nlohmann::json& document, const std::string& assignment) {
   }
   json value;
   try {
-    value = json::parse(text);
-  } catch (const json::exception&) {
+    value = parse_json_checked(text, "--set " + path, path, /*ignore_comments=*/false);
+  } catch (const json::parse_error&) {
     value = text;  // not JSON: a plain string (e.g. --set solver.backend=ipopt)
   }
   if (document.is_null()) document = json::object();
@@ -501,6 +502,54 @@ void apply_override(nlohmann::json& document, const std::string& assignment) {
   }
 }
 
+namespace {
+
+/// Which problems use each optional top-level block (the keys every problem takes - schema,
+/// name, description, problem, dimension, solver, output - are not listed). A block given to
+/// a problem that does not use it is an error naming it. `dynamic` and `finite` take every
+/// block until their readers list theirs here.
+struct BlockUse {
+  const char* block;
+  std::vector<ProblemKind> problems;
+};
+const std::vector<BlockUse>& block_uses() {
+  using P = ProblemKind;
+  static const std::vector<BlockUse> uses = {
+      {"materials", {P::normal, P::tangential, P::paper_cylinder}},
+      {"profile", {P::normal, P::tangential, P::paper_cylinder}},
+      {"grid", {P::normal, P::tangential, P::paper_cylinder}},
+      {"normal", {P::normal, P::tangential, P::paper_cylinder}},
+      {"friction", {P::tangential, P::paper_cylinder}},
+      {"tangential", {P::tangential}},
+      {"body", {P::paper_cylinder}},
+      {"loads", {P::paper_cylinder}},
+      {"time", {P::paper_cylinder}},
+      {"traction_model", {P::paper_cylinder}},
+      {"dimensionless", {P::paper_cylinder}},
+      {"sweep", {P::paper_cylinder}},
+      {"fe_body", {}},
+  };
+  return uses;
+}
+
+void reject_unused_blocks(const JsonBlock& top, ProblemKind problem) {
+  if (problem == ProblemKind::dynamic || problem == ProblemKind::finite) return;
+  for (const BlockUse& use : block_uses()) {
+    if (!top.has(use.block)) continue;
+    if (std::find(use.problems.begin(), use.problems.end(), problem) != use.problems.end()) continue;
+    std::string users;
+    for (ProblemKind p : use.problems) users += std::string(users.empty() ? "" : ", ") + to_string(p);
+    throw InputError(use.block, std::string("not used by problem '") + to_string(problem) + "' (remove it" +
+                                    (users.empty() ? "" : "; it belongs to problem " + users) + ")");
+  }
+}
+
+}  // namespace
+
+bool Case::has_block(const std::string& block) const {
+  return std::find(blocks.begin(), blocks.end(), block) != blocks.end();
+}
+
 Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   JsonBlock top(document, "");
   top.allow({"schema", "name", "description", "problem", "dimension", "materials", "profile", "grid", "normal",
@@ -508,13 +557,14 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
              "solver", "sweep", "output"});
   Case c;
   c.source = document;
+  for (auto it = document.begin(); it != document.end(); ++it) c.blocks.push_back(it.key());
   c.schema = top.string_or("schema", c.schema);
   if (c.schema != "dyncontact/1")
     throw InputError("schema", "unsupported schema '" + c.schema + "' (this version reads dyncontact/1)");
   c.name = top.string_or("name", "case");
   if (c.name.empty() || c.name == "." || c.name == ".." || c.name.find_first_of("/\\") != std::string::npos)
     throw InputError("name", "must be a non-empty name without '/' (it names the output folder)");
-  if (top.has("description")) (void)top.string("description");
+  c.description = top.string_or("description", "");
   c.problem = parse_problem(top);
   c.dimension = top.integer_or("dimension", 3);
   if (c.dimension != 2 && c.dimension != 3)
@@ -527,13 +577,12 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   const bool has_profile = required("profile");
   if (has_profile) c.profile = parse_profile(top.at("profile"), c.dimension, base_dir);
   const bool has_normal = required("normal");
-  if (has_normal) c.normal = parse_normal(top.at("normal"));
+  if (has_normal) c.normal = read_normal(top.at("normal"), "normal");
   if (top.has("friction") || c.problem == ProblemKind::tangential)
     c.friction = parse_friction(top.at("friction"));
   if (top.has("tangential") || c.problem == ProblemKind::tangential) {
-    const json& t = top.at("tangential");
-    if (!t.is_object()) throw InputError("tangential", "expected an object, got " + describe(t));
-    c.tangential = t;
+    if (!top.has("tangential")) throw InputError("tangential", "required for a tangential problem (an object)");
+    c.tangential = read_tangential(top.at("tangential"), c.dimension, c.normal);
   }
   if (top.has("solver")) c.solver = parse_solver(top.at("solver"));
   if (top.has("output")) c.output = parse_output(top.at("output"));
@@ -542,12 +591,15 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
     c.grid = parse_grid(top.at("grid"), c, has_normal);
     check_contact_in_grid(c);
   }
+  if (c.problem == ProblemKind::paper_cylinder) c.paper_cylinder = read_paper_cylinder(document, c);
 
-  // Blocks of the dynamic and finite problems: shape only, validated by their solvers.
+  // Blocks of the dynamic and finite problems: shape only, until their readers are here.
   for (const char* k : {"fe_body", "body", "loads", "time", "dimensionless", "sweep"})
     if (top.has(k) && !top.at(k).is_object())
       throw InputError(k, "expected an object, got " + describe(top.at(k)));
   if (top.has("traction_model")) (void)top.choice("traction_model", "numerical", {"numerical", "carter_poritsky"});
+  // Last, so a bad value in a block names its key before the block is found unused.
+  reject_unused_blocks(top, c.problem);
   return c;
 }
 

@@ -7,19 +7,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "case_paper_cylinder.hpp"
+#include "case_tangential.hpp"
 #include "grid.hpp"
 #include "material.hpp"
+#include "normal_spec.hpp"
 #include "profile.hpp"
 
 namespace dc {
 
 enum class ProblemKind { normal, tangential, dynamic, paper_cylinder, finite };
-enum class Control { force, approach };
-
-struct NormalSpec {
-  Control control = Control::force;
-  double value = 0.0;  ///< force (N; 2-D N/m) or approach (m)
-};
 
 struct FrictionSpec {
   std::string law = "coulomb";  ///< coulomb | tresca | table
@@ -45,9 +42,21 @@ struct OutputSpec {
   bool plots = true;
 };
 
+// Reading a block (the pattern every block follows; core/case_model.cpp):
+//  - a typed spec `<Block>Spec` and `<Block>Spec read_<block>(const json&, ...)` in
+//    core/case_<block>.{hpp,cpp}, reading only through JsonBlock (json_block.hpp): allow() the
+//    keys, typed getters, InputError(key path, reason) for every bad value;
+//  - the spec held here as std::optional<<Block>Spec> (set when the block was read);
+//  - build_case() calls the reader, and kBlockUses (case_model.cpp) lists the problems that
+//    use the block: in any other problem the block is an error naming it.
+// Solvers (nlp/, dynamics/) and the command line take these specs, never JSON.
+// Blocks still to come this way: "dynamic" problems (body, loads, time, normal_model,
+// contact_model) and "fe_body".
+
 struct Case {
   std::string schema = "dyncontact/1";
   std::string name;
+  std::string description;
   ProblemKind problem = ProblemKind::normal;
   int dimension = 3;
   MaterialPair materials;
@@ -55,11 +64,27 @@ struct Case {
   Grid grid;
   NormalSpec normal;
   std::optional<FrictionSpec> friction;
-  nlohmann::json tangential;  ///< tangential block, validated by the tangential problem
+  std::optional<TangentialSpec> tangential;        ///< problem tangential
+  std::optional<PaperCylinderSpec> paper_cylinder;  ///< problem paper_cylinder
   SolverSpec solver;
   OutputSpec output;
-  nlohmann::json source;      ///< the (overridden) JSON the case was read from
+  std::vector<std::string> blocks;  ///< the top-level keys the case file gave
+  nlohmann::json source;            ///< the (overridden) JSON the case was read from (sweeps re-read it)
+
+  /// Whether the case file gave the top-level key `block`.
+  bool has_block(const std::string& block) const;
 };
+
+/// One run of a sweep: its label ("gamma_bar = 0.5"), the swept value and its case.
+struct SweepPoint {
+  std::string label;  ///< empty without a sweep
+  nlohmann::json value;
+  Case run;
+};
+
+/// The runs of a case's sweep (paper_cylinder), each its own validated case; without a sweep
+/// the case itself.
+std::vector<SweepPoint> sweep_points(const Case& c);
 
 /// Parses JSON text; `origin` (file name) is used in messages, malformed JSON reports its line.
 nlohmann::json parse_case_text(const std::string& text, const std::string& origin);

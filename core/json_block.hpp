@@ -5,6 +5,7 @@
 #include <initializer_list>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -31,6 +32,14 @@ inline std::string fmt(double v) {
   return s.str();
 }
 
+/// A finite number at `key` (InputError "must be a number" / "must be finite" otherwise).
+inline double finite_number(const json& v, const std::string& key) {
+  if (!v.is_number()) throw InputError(key, "must be a number, got " + describe(v));
+  const double d = v.get<double>();
+  if (!std::isfinite(d)) throw InputError(key, "must be finite");
+  return d;
+}
+
 /// A JSON object at `path` with typed, key-checked accessors.
 class JsonBlock {
  public:
@@ -40,7 +49,8 @@ class JsonBlock {
   }
 
   /// Rejects every key not in `keys` (naming the allowed ones).
-  void allow(std::initializer_list<const char*> keys) const {
+  void allow(std::initializer_list<const char*> keys) const { allow(std::vector<const char*>(keys)); }
+  void allow(const std::vector<const char*>& keys) const {
     for (auto it = j_.begin(); it != j_.end(); ++it) {
       bool ok = false;
       for (const char* k : keys) ok = ok || it.key() == k;
@@ -56,18 +66,16 @@ class JsonBlock {
   std::string key(const std::string& k) const { return join(path_, k); }
   const std::string& path() const { return path_; }
 
+  /// The object at `k` as a block (path "path.k").
+  JsonBlock child(const char* k) const { return JsonBlock(at(k), key(k)); }
+  const json& raw() const { return j_; }
+
   const json& at(const char* k) const {
     if (!j_.contains(k)) throw InputError(key(k), "missing required key");
     return j_.at(k);
   }
 
-  double number(const char* k) const {
-    const json& v = at(k);
-    if (!v.is_number()) throw InputError(key(k), "expected a number, got " + describe(v));
-    const double d = v.get<double>();
-    if (!std::isfinite(d)) throw InputError(key(k), "must be finite");
-    return d;
-  }
+  double number(const char* k) const { return finite_number(at(k), key(k)); }
   double number_or(const char* k, double fallback) const { return has(k) ? number(k) : fallback; }
 
   int integer(const char* k) const {
@@ -112,9 +120,8 @@ class JsonBlock {
     if (!v.is_array()) throw InputError(key(k), "expected an array of numbers, got " + describe(v));
     std::vector<double> out;
     for (const auto& e : v) {
-      if (!e.is_number() || !std::isfinite(e.get<double>()))
-        throw InputError(key(k), "expected an array of numbers, found " + describe(e));
-      out.push_back(e.get<double>());
+      if (!e.is_number()) throw InputError(key(k), "expected an array of numbers, found " + describe(e));
+      out.push_back(finite_number(e, key(k)));
     }
     return out;
   }

@@ -90,7 +90,6 @@ TEST(CaseModel, DefaultsAndSolverBlock) {
   doc["solver"] = json::parse(R"({"backend": "native", "tol": 1e-8, "certificate_tol": 1e-5, "max_iter": 50,
     "fallback": false, "accept_unconverged": true, "hessian": "limited-memory", "operator": "fft"})");
   doc["output"] = json::parse(R"({"dir": "somewhere", "fields": false, "plots": false})");
-  doc["friction"] = json::parse(R"({"law": "coulomb", "mu": 0.3})");
   const Case c = build_case(doc);
   EXPECT_EQ(c.solver.backend, "native");
   EXPECT_DOUBLE_EQ(c.solver.tol, 1e-8);
@@ -103,8 +102,6 @@ TEST(CaseModel, DefaultsAndSolverBlock) {
   EXPECT_EQ(c.output.dir, "somewhere");
   EXPECT_FALSE(c.output.fields);
   EXPECT_FALSE(c.output.plots);
-  ASSERT_TRUE(c.friction.has_value());
-  EXPECT_DOUBLE_EQ(c.friction->mu, 0.3);
 
   const Case d = build_case(sphere_case());
   EXPECT_EQ(d.solver.backend, "auto");
@@ -239,13 +236,16 @@ TEST(CaseModel, FrictionLaws) {
   expect_bad(d, "friction={\"law\": \"table\", \"pressure\": [1e6, 0], \"bound\": [0, 1]}", "friction.pressure");
   expect_bad(d, "friction={\"law\": \"table\", \"pressure\": [0, 1e6], \"bound\": [0, -1]}", "friction.bound");
 
-  json table = sphere_case();
+  json shift = sphere_case();
+  apply_override(shift, "problem=tangential");
+  apply_override(shift, "tangential={\"regime\": \"shift\", \"force\": [1, 0]}");
+  json table = shift;
   apply_override(table, "friction={\"law\": \"table\", \"pressure\": [0, 1e6, 2e6], \"bound\": [0, 3e5, 4e5]}");
   const Case c = build_case(table);
   ASSERT_TRUE(c.friction);
   EXPECT_EQ(c.friction->law, "table");
   EXPECT_EQ(c.friction->bound_table.size(), 3u);
-  json tresca = sphere_case();
+  json tresca = shift;
   apply_override(tresca, "friction={\"law\": \"tresca\", \"bound\": 1e6}");
   EXPECT_DOUBLE_EQ(build_case(tresca).friction->bound, 1e6);
 }
@@ -270,7 +270,10 @@ TEST(CaseModel, TangentialProblemNeedsFrictionAndBlock) {
   apply_override(t, "tangential={\"regime\": \"shift\", \"force\": [20, 0]}");
   const Case c = build_case(t);
   EXPECT_EQ(c.problem, ProblemKind::tangential);
-  EXPECT_EQ(c.tangential["force"][0], 20);
+  ASSERT_TRUE(c.tangential.has_value());
+  EXPECT_EQ(c.tangential->regime, TangentialRegime::shift);
+  EXPECT_EQ(c.tangential->load.modes[0].kind, ModeControl::Kind::resultant);
+  EXPECT_EQ(c.tangential->load.modes[0].value, 20.0);
 }
 
 TEST(CaseModel, LooselyParsedProblemKinds) {

@@ -1,0 +1,158 @@
+// The paper_cylinder blocks (CASES.md, docs/paper_cylinder.md) read into PaperCylinderSpec,
+// and the expansion of its sweep into one case per value.
+#include "case_paper_cylinder.hpp"
+
+#include <limits>
+
+#include "case_model.hpp"
+#include "errors.hpp"
+#include "json_block.hpp"
+
+namespace dc {
+namespace {
+
+void read_dimensionless(const JsonBlock& d, PaperCylinderSpec& s) {
+  d.allow({"gamma_bar", "M0_bar", "eta", "epsilon", "v_bar0", "t_bar_end", "T_bar", "mu"});
+  auto get = [&](const char* k, std::optional<double>& out) {
+    if (d.has(k)) out = d.number(k);
+  };
+  get("gamma_bar", s.gamma_bar);
+  get("M0_bar", s.M0_bar);
+  get("epsilon", s.epsilon);
+  get("v_bar0", s.v_bar0);
+  get("t_bar_end", s.t_bar_end);
+  get("T_bar", s.T_bar);
+  get("mu", s.mu);
+  if (d.has("eta")) {
+    const json& e = d.at("eta");
+    if (e.is_string() && e.get<std::string>() == "inf") s.eta = std::numeric_limits<double>::infinity();
+    else s.eta = d.number("eta");
+  }
+}
+
+ValueRate value_rate(const JsonBlock& parent, const char* k) {
+  const JsonBlock v = parent.child(k);
+  v.allow({"value", "rate"});
+  return {v.number_or("value", 0.0), v.number_or("rate", 0.0)};
+}
+
+/// body, loads, time of the dimensional inputs; the model's own limits on the derived
+/// parameters are checked where they are converted (apps/paper_cylinder_run).
+void read_dimensional(const JsonBlock& top, const Case& c, PaperCylinderSpec& s) {
+  PaperCylinderBody& b = s.body;
+  const JsonBlock body = top.child("body");
+  body.allow({"mass", "inertia", "radius", "initial"});
+  b.mass = body.number("mass");
+  b.radius = body.number("radius");
+  const json& inertia = body.at("inertia");
+  b.inertia_y = inertia.is_array() && inertia.size() == 3 ? finite_number(inertia[1], "body.inertia[1]")
+                                                          : body.number("inertia");
+  if (!(b.mass > 0.0)) throw InputError("body.mass", "must be positive");
+  if (!(b.radius > 0.0)) throw InputError("body.radius", "must be positive");
+  if (!(b.inertia_y > 0.0))
+    throw InputError("body.inertia", "the moment of inertia about the axis (y) must be positive");
+  const JsonBlock init = body.child("initial");
+  init.allow({"position", "velocity", "omega"});
+  auto vec = [&](const char* k, std::array<double, 3>& out) {
+    if (!init.has(k)) return;
+    const auto v = init.numbers(k);
+    if (v.size() != 3) throw InputError(init.key(k), "must be [x, y, z]");
+    out = {v[0], v[1], v[2]};
+  };
+  vec("position", b.position);
+  vec("velocity", b.velocity);
+  vec("omega", b.omega);
+  b.has_position = init.has("position");
+  if (!(b.velocity[0] > 0.0))
+    throw InputError("body.initial.velocity[0]", "the cylinder must be rolling in +x (V0 > 0)");
+
+  const JsonBlock loads = top.child("loads");
+  loads.allow({"force", "moment"});
+  const JsonBlock force = loads.child("force");
+  force.allow({"x", "z"});
+  b.force_z = value_rate(force, "z");
+  if (force.has("x")) b.force_x = value_rate(force, "x");
+  const JsonBlock moment = loads.child("moment");
+  moment.allow({"y"});
+  b.moment_y = value_rate(moment, "y");
+  if (b.force_z.rate != 0.0) throw InputError("loads.force.z.rate", "the paper's model keeps the normal load constant");
+  if (b.force_x.rate != 0.0) throw InputError("loads.force.x.rate", "the paper's model takes a constant T_ex");
+  if (!(-b.force_z.value > 0.0))
+    throw InputError("loads.force.z.value", "must press the cylinder onto the half-plane (< 0)");
+  if (!c.friction || c.friction->law != "coulomb")
+    throw InputError("friction", "the paper's model needs Coulomb friction {\"law\": \"coulomb\", \"mu\": ...}");
+  if (!top.has("materials")) throw InputError("materials", "missing required key");
+
+  const JsonBlock time = top.child("time");
+  time.allow({"dt", "t_end", "scheme"});
+  b.t_end = time.number("t_end");
+  b.dt = time.number("dt");
+  if (!(b.t_end > 0.0)) throw InputError("time.t_end", "must be positive");
+  if (!(b.dt > 0.0)) throw InputError("time.dt", "must be positive");
+}
+
+bool scheme_is_bdf2(const JsonBlock& top) {
+  if (!top.has("time") || !top.at("time").is_object() || !top.at("time").contains("scheme")) return false;
+  const json& v = top.at("time").at("scheme");
+  const std::string s = v.is_string() ? v.get<std::string>() : "";
+  if (s != "bdf1" && s != "bdf2") throw InputError("time.scheme", "must be \"bdf1\" or \"bdf2\"");
+  return s == "bdf2";
+}
+
+}  // namespace
+
+PaperCylinderSpec read_paper_cylinder(const json& document, const Case& c) {
+  const JsonBlock top(document, "");
+  PaperCylinderSpec s;
+  s.dimensional = !top.has("dimensionless") && top.has("body");
+  s.bdf2 = scheme_is_bdf2(top);
+  if (s.dimensional) {
+    read_dimensional(top, c, s);
+  } else {
+    if (!top.has("dimensionless"))
+      throw InputError("dimensionless",
+                       "required: the paper's dimensionless inputs, or the dimensional blocks body, loads, time");
+    for (const char* k : {"body", "loads"})
+      if (top.has(k))
+        throw InputError(k, "not used with dimensionless inputs (give either \"dimensionless\" or body, loads, time)");
+    read_dimensionless(top.child("dimensionless"), s);
+    if (top.has("time")) {
+      const JsonBlock time = top.child("time");
+      time.allow({"dt", "scheme"});
+      if (time.has("dt")) {
+        s.dt = time.number("dt");
+        if (!(*s.dt > 0.0))
+          throw InputError("time.dt", "must be positive (a step of t_bar for dimensionless inputs)");
+      }
+    }
+  }
+  s.traction_model = top.choice("traction_model", s.traction_model, {"numerical", "carter_poritsky"});
+  if (top.has("sweep")) {
+    const JsonBlock sw = top.child("sweep");
+    if (sw.raw().size() != 1)
+      throw InputError("sweep", "give exactly one key to sweep, e.g. {\"dimensionless.gamma_bar\": [...]}");
+    s.sweep_key = sw.raw().begin().key();
+    s.sweep_values = sw.raw().begin().value();
+    if (!s.sweep_values.is_array() || s.sweep_values.empty())
+      throw InputError("sweep." + s.sweep_key, "must be a non-empty array of values");
+    if (!s.dimensional && s.sweep_key.rfind("dimensionless.", 0) != 0)
+      throw InputError("sweep." + s.sweep_key, "with dimensionless inputs, sweep a dimensionless.* key");
+  }
+  return s;
+}
+
+std::vector<SweepPoint> sweep_points(const Case& c) {
+  if (!c.paper_cylinder || c.paper_cylinder->sweep_key.empty()) return {{"", json(), c}};
+  const PaperCylinderSpec& s = *c.paper_cylinder;
+  std::vector<SweepPoint> out;
+  for (const json& v : s.sweep_values) {
+    json doc = c.source;
+    doc.erase("sweep");
+    apply_override(doc, s.sweep_key + "=" + v.dump());
+    const std::string shown = s.dimensional ? s.sweep_key : s.sweep_key.substr(std::string("dimensionless.").size());
+    out.push_back({shown + " = " + (v.is_string() ? v.get<std::string>() : v.dump()), v, build_case(doc)});
+  }
+  return out;
+}
+
+}  // namespace dc
