@@ -5,6 +5,8 @@
 #include <system_error>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "cli_common.hpp"
 #include "errors.hpp"
 
@@ -46,6 +48,13 @@ void write_text_file(const std::string& path, const std::string& text) {
   out << text;
   out.close();
   if (!out) throw InputError(path, "write failed");
+}
+
+const CLI::Validator& non_empty_folder() {
+  static const CLI::Validator v(
+      [](const std::string& s) { return s.empty() ? std::string("an empty folder name (omit --out for out/<name>)") : std::string(); },
+      "FOLDER");
+  return v;
 }
 
 void not_implemented(ProblemKind kind) {

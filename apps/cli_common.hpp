@@ -6,6 +6,10 @@
 
 #include "case_model.hpp"
 
+namespace CLI {
+class Validator;
+}
+
 namespace dc::cli {
 
 inline constexpr int kExitOk = 0;
@@ -23,6 +27,9 @@ std::string prepare_output_dir(const Case& c, const std::string& cli_out);
 
 /// Writes `text` to `path` (throws InputError naming the file when that fails).
 void write_text_file(const std::string& path, const std::string& text);
+
+/// --out: a folder name, not empty.
+const CLI::Validator& non_empty_folder();
 
 /// Message for the problem kinds that have no solver in this build.
 [[noreturn]] void not_implemented(ProblemKind kind);

@@ -185,7 +185,8 @@ void add_compare_command(CLI::App& app, int& exit_code) {
   sub->add_option("case", args->case_path, "case file (JSON)")->required();
   sub->add_option("--backends", args->backends, "comma-separated backends (default ipopt,nlopt,native)")
       ->delimiter(',');
-  sub->add_option("-o,--out", args->out, "output folder (default: output.dir of the case, else out/<name>)");
+  sub->add_option("-o,--out", args->out, "output folder (default: output.dir of the case, else out/<name>)")
+      ->check(non_empty_folder());
   sub->add_option("-s,--set", args->sets, "override a case key: path=value (repeatable)")->allow_extra_args(false);
   sub->add_flag("-q,--quiet", args->quiet, "no progress line");
   sub->callback([args, &exit_code] { exit_code = run_compare(*args); });

@@ -32,6 +32,20 @@ int main(int argc, char** argv) {
     add_compare_command(app, exit_code);
     add_validate_command(app, exit_code);
     add_example_command(app, exit_code);
+    // A first argument that is neither an option nor a subcommand: say so (CLI11 would only
+    // say that a subcommand is required).
+    auto is_subcommand = [&app](const std::string& name) {
+      try {
+        return app.get_subcommand(name) != nullptr;
+      } catch (const CLI::OptionNotFound&) {
+        return false;
+      }
+    };
+    if (argc > 1 && argv[1][0] != '-' && !is_subcommand(argv[1])) {
+      std::cerr << "error: unknown subcommand '" << argv[1]
+                << "' (expected solve, compare, validate or example; see dyncontact --help)\n";
+      return kExitBadInput;
+    }
     try {
       app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

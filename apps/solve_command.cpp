@@ -13,6 +13,7 @@
 #include "commands.hpp"
 #include "fields_writer.hpp"
 #include "plot_writer.hpp"
+#include "result_limits.hpp"
 #include "summary_writer.hpp"
 #include "tangential_run.hpp"
 
@@ -102,6 +103,8 @@ int run_solve(const SolveArgs& args) {
     files["plots"] = plots;
   }
   s["files"] = files;
+  const std::vector<ResultLimit> limits = result_limits(c, measured_contact_size(c, s));
+  s["limits"] = limits_json(limits);
   const std::string summary_path = write_summary(dir, s);
 
   const SolverReport& r = run.report;
@@ -120,9 +123,13 @@ int run_solve(const SolveArgs& args) {
     std::printf("wrote %s\n", summary_path.c_str());
     std::fflush(stdout);
   }
-  if (s.value("contact_touches_boundary", false))
-    std::cerr << "warning: grid: the contact reaches the edge of the grid; the result is truncated "
-                 "(enlarge grid.extent or grid.x/grid.y)\n";
+  bool known_wrong = false;
+  for (const ResultLimit& l : limits) {
+    std::cerr << (l.error ? "error: " : "warning: ") << l.key << ": " << l.message
+              << (l.error ? " (results written to " + dir + " for inspection)" : "") << '\n';
+    known_wrong = known_wrong || l.error;
+  }
+  if (known_wrong) return kExitBadInput;
   if (!run.converged) {
     const std::string what = std::string(to_string(r.status)) + (r.message.empty() ? "" : ": " + r.message);
     if (c.solver.accept_unconverged) {
@@ -154,7 +161,8 @@ void add_solve_command(CLI::App& app, int& exit_code) {
       "changed without editing the file: --set grid.nx=128 --set normal.force=200. Exit code 0 converged, "
       "2 bad input, 3 not converged (results are still written), 4 internal error.");
   sub->add_option("case", args->case_path, "case file (JSON)")->required();
-  sub->add_option("-o,--out", args->out, "output folder (default: output.dir of the case, else out/<name>)");
+  sub->add_option("-o,--out", args->out, "output folder (default: output.dir of the case, else out/<name>)")
+      ->check(non_empty_folder());
   sub->add_option("-b,--backend", args->backend, "solver backend: auto, ipopt, nlopt or native (sets solver.backend)");
   sub->add_option("-s,--set", args->sets, "override a case key: path=value, e.g. materials.body.E=2e11 (repeatable)")
       ->allow_extra_args(false);

@@ -26,7 +26,10 @@ ContactMeasures contact_measures(const Grid& grid, const StaticFields& fields) {
     for (int i = 0; i < grid.nx; ++i) {
       const std::size_t e = grid.index(i, j);
       if (e < fields.p.size() && std::isfinite(fields.p[e])) m.max_pressure = std::max(m.max_pressure, fields.p[e]);
+      const bool on_edge = i == 0 || i == grid.nx - 1 || (grid.dimension == 3 && (j == 0 || j == grid.ny - 1));
+      m.n_edge += on_edge;
       if (e >= fields.state.size() || fields.state[e] == kFree) continue;
+      m.n_edge_contact += on_edge;
       ++m.n_contact;
       const double xl = grid.x0 + i * grid.dx, yl = grid.y0 + j * grid.dy;
       if (first) {
@@ -44,6 +47,10 @@ ContactMeasures contact_measures(const Grid& grid, const StaticFields& fields) {
         m.touches_boundary = true;
     }
   m.contact_area = m.n_contact * grid.area();
+  if (m.n_contact > 0) {
+    m.n_across_x = static_cast<int>(std::lround((m.x_max - m.x_min) / grid.dx));
+    m.n_across_y = grid.dimension == 3 ? static_cast<int>(std::lround((m.y_max - m.y_min) / grid.dy)) : 0;
+  }
   return m;
 }
 
@@ -64,6 +71,10 @@ void add_contact_measures(nlohmann::json& s, const Grid& grid, const StaticField
   }
   s["contact_pressure_threshold"] = fields.contact_threshold;
   s["contact_touches_boundary"] = m.touches_boundary;
+  // The fraction of the grid's edge elements in contact (0: the contact lies inside the grid).
+  s["contact_edge_fraction"] = m.n_edge > 0 ? static_cast<double>(m.n_edge_contact) / m.n_edge : 0.0;
+  s["elements_across_contact"] =
+      grid.dimension == 3 ? nlohmann::json::array({m.n_across_x, m.n_across_y}) : nlohmann::json(m.n_across_x);
 }
 
 }  // namespace dc::cli

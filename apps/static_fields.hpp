@@ -32,6 +32,8 @@ struct ContactMeasures {
   double max_pressure = 0.0;
   double x_min = 0.0, x_max = 0.0, y_min = 0.0, y_max = 0.0;  ///< element edges of the contact region
   bool touches_boundary = false;  ///< a contact element lies on the grid's edge
+  int n_edge = 0, n_edge_contact = 0;  ///< elements on the grid's edge; of those, in contact
+  int n_across_x = 0, n_across_y = 0;  ///< elements across the contact region along x, y
 };
 
 ContactMeasures contact_measures(const Grid& grid, const StaticFields& fields);

@@ -8,6 +8,8 @@
 #include <CLI/CLI.hpp>
 
 #include "analytic_reference.hpp"
+#include "errors.hpp"
+#include "result_limits.hpp"
 #include "cli_common.hpp"
 #include "paper_cylinder_run.hpp"
 #include "commands.hpp"
@@ -98,7 +100,19 @@ int run_validate(const ValidateArgs& args) {
                   ref->max_pressure, ref->force, ref->approach.value_or(NAN));
     const bool beyond = ref->semi_axis_x > std::min(-g.x0, g.x_max()) ||
                         (!two_d && ref->semi_axis_y > std::min(-g.y0, g.y_max()));
-    if (beyond) std::fprintf(stderr, "warning: grid: the %s contact reaches beyond the grid\n", label);
+    ContactSize size;
+    size.half_width_x = ref->semi_axis_x;
+    size.half_width_y = ref->semi_axis_y;
+    size.edge_fraction = beyond ? 1.0 : 0.0;
+    size.across_x = static_cast<int>(2.0 * ref->semi_axis_x / g.dx);
+    size.across_y = two_d ? size.across_x : static_cast<int>(2.0 * ref->semi_axis_y / g.dy);
+    for (ResultLimit l : result_limits(c, size)) {
+      if (l.key == "grid" && beyond)  // an estimate: the share of the edge is not known before solving
+        l.message = std::string("the ") + label + " contact reaches beyond the grid: " +
+                    l.message.substr(l.message.find(": ") + 2);
+      if (l.error) throw InputError(l.key, l.message);
+      std::fprintf(stderr, "warning: %s: %s\n", l.key.c_str(), l.message.c_str());
+    }
     if (2.0 * ref->semi_axis_x / g.dx < 6.0 || (!two_d && 2.0 * ref->semi_axis_y / g.dy < 6.0))
       std::fprintf(stderr, "warning: grid: fewer than 6 elements across the contact; refine the grid\n");
   }

@@ -41,7 +41,8 @@ Elastic parse_elastic(const json& j, const std::string& path) {
 
 MaterialPair parse_materials(const json& j) {
   JsonBlock o(j, "materials");
-  o.allow({"body", "base"});
+  o.allow({"body", "base", "allow_large_strain"});
+  (void)o.boolean_or("allow_large_strain", false);  // read into Case by build_case
   MaterialPair m;
   m.body = parse_elastic(o.at("body"), "materials.body");
   m.base = parse_elastic(o.at("base"), "materials.base");
@@ -296,13 +297,22 @@ std::vector<double> bounds(const JsonBlock& o, const char* k) {
 Grid parse_grid(const json& j, const Case& c, bool has_normal) {
   JsonBlock o(j, "grid");
   const bool three_d = c.dimension == 3;
-  o.allow({"nx", "ny", "x", "y", "extent"});
+  o.allow({"nx", "ny", "x", "y", "extent", "allow_edge_contact"});
+  (void)o.boolean_or("allow_edge_contact", false);  // read into Case by build_case
   const int nx = o.integer("nx");
   if (nx < 1) throw InputError("grid.nx", "must be at least 1, got " + std::to_string(nx));
+  // One element across cannot represent a pressure distribution (a 1 x 1 grid puts the whole
+  // load on one uniform element: the peak comes out about 3 times too low).
+  if (nx == 1)
+    throw InputError("grid.nx", "one element across cannot resolve the contact pressure; use at least 2 (about "
+                                "8 or more across the contact for a usable peak pressure)");
   int ny = 1;
   if (three_d) {
     ny = o.integer("ny");
     if (ny < 1) throw InputError("grid.ny", "must be at least 1, got " + std::to_string(ny));
+    if (ny == 1)
+      throw InputError("grid.ny", "one element across cannot resolve the contact pressure in 3-D; use at least 2 "
+                                  "(or dimension 2 for a plane-strain line contact)");
   } else if (o.has("ny")) {
     ny = o.integer("ny");
     if (ny != 1) throw InputError("grid.ny", "must be 1 (or omitted) in 2-D, got " + std::to_string(ny));
@@ -573,7 +583,10 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   // Blocks the static problems need; the other kinds take them when present.
   const bool static_problem = c.problem == ProblemKind::normal || c.problem == ProblemKind::tangential;
   auto required = [&](const char* k) { return static_problem || top.has(k); };
-  if (required("materials")) c.materials = parse_materials(top.at("materials"));
+  if (required("materials")) {
+    c.materials = parse_materials(top.at("materials"));
+    c.allow_large_strain = JsonBlock(top.at("materials"), "materials").boolean_or("allow_large_strain", false);
+  }
   const bool has_profile = required("profile");
   if (has_profile) c.profile = parse_profile(top.at("profile"), c.dimension, base_dir);
   const bool has_normal = required("normal");
@@ -589,6 +602,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   if (required("grid")) {
     if (!has_profile) throw InputError("profile", "missing required key (the grid needs a profile)");
     c.grid = parse_grid(top.at("grid"), c, has_normal);
+    c.allow_edge_contact = JsonBlock(top.at("grid"), "grid").boolean_or("allow_edge_contact", false);
     check_contact_in_grid(c);
   }
   if (c.problem == ProblemKind::paper_cylinder) c.paper_cylinder = read_paper_cylinder(document, c);

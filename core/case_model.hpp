@@ -62,6 +62,8 @@ struct Case {
   MaterialPair materials;
   ProfileSpec profile;
   Grid grid;
+  bool allow_edge_contact = false;  ///< grid.allow_edge_contact: a contact truncated by the grid edge is accepted
+  bool allow_large_strain = false;  ///< materials.allow_large_strain: a contact as large as the body is accepted
   NormalSpec normal;
   std::optional<FrictionSpec> friction;
   std::optional<TangentialSpec> tangential;        ///< problem tangential

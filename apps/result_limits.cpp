@@ -1,0 +1,110 @@
+#include "result_limits.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace dc::cli {
+namespace {
+
+/// Whether the profile's contact is unbounded along y (3-D cylinder without a length,
+/// quadratic with b = 0): it reaches the grid's y edges by construction.
+bool unbounded_profile(const Case& c) {
+  const ProfileSpec& p = c.profile;
+  if (c.dimension != 3) return false;
+  return (p.type == ProfileType::cylinder && p.length == 0.0) ||
+         (p.type == ProfileType::quadratic && (p.a == 0.0 || p.b == 0.0));
+}
+
+/// Radii of curvature along x and y (0: none, e.g. a flat punch or a table).
+void curvature_radii(const Case& c, double& rx, double& ry) {
+  rx = ry = 0.0;
+  const ProfileSpec& p = c.profile;
+  if (p.type == ProfileType::flat_punch || p.type == ProfileType::table) return;
+  double A = 0.0, B = 0.0;
+  p.quadratic_coefficients(A, B);  // h = A x^2 + B y^2: R = 1 / (2 A)
+  if (A > 0.0) rx = 0.5 / A;
+  if (B > 0.0 && c.dimension == 3) ry = 0.5 / B;
+}
+
+std::string format(const char* f, double a, double b = 0.0) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, f, a, b);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<ResultLimit> result_limits(const Case& c, const ContactSize& size) {
+  std::vector<ResultLimit> out;
+  if (size.edge_fraction > 0.0) {
+    ResultLimit l{"grid", "", false};
+    l.message = format("the contact reaches the edge of the grid (%.3g %% of the edge elements are in contact): the "
+                       "pressure is truncated there and the results are wrong; enlarge grid.extent or grid.x",
+                       100.0 * size.edge_fraction) +
+                (c.dimension == 3 ? "/grid.y" : "");
+    if (unbounded_profile(c)) {
+      l.message += " (this profile's contact is unbounded along y: its ends are cut by the grid)";
+    } else if (c.allow_edge_contact) {
+      l.message += " (accepted: grid.allow_edge_contact)";
+    } else {
+      l.message += ", or set grid.allow_edge_contact: true to accept a truncated contact";
+      l.error = true;
+    }
+    out.push_back(l);
+  }
+  const int across = std::min(size.across_x, c.dimension == 3 ? size.across_y : size.across_x);
+  if (size.across_x >= 0 && across < 4)
+    out.push_back({"grid",
+                   format("only %.0f element(s) across the contact: its pressure distribution is not resolved (the "
+                          "peak pressure can be off by a large factor); refine the grid (8 or more across)",
+                          across),
+                   false});
+  double rx = 0.0, ry = 0.0;
+  curvature_radii(c, rx, ry);
+  double ratio = 0.0;
+  if (rx > 0.0) ratio = std::max(ratio, size.half_width_x / rx);
+  if (ry > 0.0) ratio = std::max(ratio, size.half_width_y / ry);
+  // Hertz's theory (and this program's half-space model) needs a << R: small strains, and
+  // the contact small against the body. Beyond a/R ~ 0.1 the errors grow; from 0.3 the
+  // result is not that of the physical problem.
+  if (ratio > 0.1) {
+    ResultLimit l{"materials", "", false};
+    l.message = format("the contact half-width a is %.3g times the body's radius of curvature R (a/R = %.3g): linear "
+                       "elasticity and the half-space model need a/R << 1 (Hertz: below about 0.1)",
+                       ratio, ratio);
+    if (ratio <= 0.3) {
+      l.message += "; expect errors of order (a/R)^2";
+    } else if (c.allow_large_strain) {
+      l.message += "; the result is not that of the physical body (accepted: materials.allow_large_strain)";
+    } else {
+      l.message += "; the result is not that of the physical body (stiffer materials or a smaller load reduce "
+                   "a/R), or set materials.allow_large_strain: true to accept it";
+      l.error = true;
+    }
+    out.push_back(l);
+  }
+  return out;
+}
+
+ContactSize measured_contact_size(const Case& c, const nlohmann::json& s) {
+  ContactSize size;
+  const bool two_d = c.dimension == 2;
+  size.half_width_x = s.value(two_d ? "contact_half_width" : "contact_half_width_x", 0.0);
+  size.half_width_y = two_d ? 0.0 : s.value("contact_half_width_y", 0.0);
+  size.edge_fraction = s.value("contact_edge_fraction", 0.0);
+  if (s.value("n_contact", 0) > 0 && s.contains("elements_across_contact")) {
+    const auto& n = s["elements_across_contact"];
+    size.across_x = n.is_array() ? n[0].get<int>() : n.get<int>();
+    size.across_y = n.is_array() ? n[1].get<int>() : size.across_x;
+  }
+  return size;
+}
+
+nlohmann::json limits_json(const std::vector<ResultLimit>& limits) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& l : limits) out.push_back({{"key", l.key}, {"message", l.message}, {"accepted", !l.error}});
+  return out;
+}
+
+}  // namespace dc::cli

@@ -1,0 +1,35 @@
+#pragma once
+// Results the program knows to be wrong or outside its model, found from the contact's size:
+// a contact truncated by the grid's edge, a contact too coarse to resolve, and a contact as
+// large as the body's radius of curvature (linear elasticity and the half-space void).
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "case_model.hpp"
+
+namespace dc::cli {
+
+struct ResultLimit {
+  std::string key;      ///< the case key that accepts it or must change (grid, materials)
+  std::string message;
+  bool error = false;   ///< a wrong result not accepted by the case: exit 2
+};
+
+/// The contact's size as measured (after a solve) or estimated (Hertz, for validate).
+struct ContactSize {
+  double half_width_x = 0.0, half_width_y = 0.0;  ///< m (2-D: y unused)
+  double edge_fraction = 0.0;   ///< of the grid's edge elements in contact (estimates: 0 or 1)
+  int across_x = -1, across_y = -1;  ///< elements across the contact (-1: not known)
+};
+
+std::vector<ResultLimit> result_limits(const Case& c, const ContactSize& size);
+
+/// The contact size of a solved static case from its summary (add_contact_measures keys).
+ContactSize measured_contact_size(const Case& c, const nlohmann::json& summary);
+
+/// Summary entries: [{key, message, accepted}].
+nlohmann::json limits_json(const std::vector<ResultLimit>& limits);
+
+}  // namespace dc::cli

@@ -1,0 +1,120 @@
+// The command line on hostile and known-wrong inputs: every one a clear error (exit 2 naming
+// the key) or a result with words, never a crash, never a silent wrong answer.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+using dc::test::slurp;
+using Result = dc::test::CliResult;
+const auto& quote = dc::test::shell_quote;
+
+json example(const std::string& name) {
+  return json::parse(slurp(fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / (name + ".json")));
+}
+
+class CliInputHoles : public dc::test::CliTest {
+ protected:
+  std::string write(const std::string& text, const std::string& name = "case.json") const {
+    std::ofstream(dir_ / name) << text;
+    return name;
+  }
+  /// `args` exits 2 and stderr has "error: KEY" and `words`.
+  void expect_error(const std::string& args, const std::string& key, const std::string& words = "") const {
+    SCOPED_TRACE(args.substr(0, 200));
+    const Result r = run(args);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("error: " + key), std::string::npos) << r.err.substr(0, 400);
+    EXPECT_NE(r.err.find(words), std::string::npos) << r.err.substr(0, 400);
+  }
+};
+
+TEST_F(CliInputHoles, DeepNestingIsExit2NamingThePlace) {
+  const std::string deep = std::string(1000000, '[') + std::string(1000000, ']');
+  json doc = example("hertz-sphere");
+  std::string text = doc.dump();
+  text.insert(text.size() - 1, ", \"junk\": " + deep);
+  const std::string file = write(text);
+  expect_error("validate " + file, "junk[0][0]", "nested more than 64");
+  expect_error("solve " + file, "junk[0][0]", "nested more than 64");
+  expect_error("validate " + quote(fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / "hertz-sphere.json") +
+                   " --set " + quote("grid.x=" + std::string(5000, '[') + std::string(5000, ']')),
+               "grid.x[0]", "nested");
+}
+
+TEST_F(CliInputHoles, OutOfRangeNumbersAndDuplicateKeysNameTheKey) {
+  std::string text = example("hertz-sphere").dump(2);
+  const std::string file = write(text.replace(text.find("\"force\": 100.0"), 14, "\"force\": 1e999"));
+  expect_error("validate " + file, "normal.force", "1e999");
+  expect_error("solve " + file, "normal.force", "1e999");
+  std::string dup = example("hertz-sphere").dump(2);
+  dup.replace(dup.find("\"nx\": 64"), 8, "\"nx\": 64, \"nx\": 16");
+  expect_error("validate " + write(dup, "dup.json"), "grid.nx", "duplicate key");
+}
+
+TEST_F(CliInputHoles, CommandLineMistakesAreSaid) {
+  Result r = run("frobnicate");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("unknown subcommand 'frobnicate'"), std::string::npos) << r.err;
+  const std::string file = write(example("hertz-sphere").dump());
+  r = run("solve " + file + " --out ''");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+TEST_F(CliInputHoles, ValidateRejectsWhatSolveRejects) {
+  json c = example("cattaneo-sphere");
+  auto bad = [&](const std::string& set, const std::string& key) {
+    expect_error("validate " + write(c.dump()) + " --set " + quote(set), key);
+  };
+  bad("tangential.regime=skid", "tangential.regime");
+  bad(R"(tangential={"regime": "rolling", "creepage": [0, 0], "velocity": 0})", "tangential.velocity");
+  bad("tangential.history=[]", "tangential.history");
+  bad("tangential.history=\"x\"", "tangential.history");
+  bad(R"(tangential.history=[{"forse": [1, 0]}])", "tangential.history[0].forse");
+  bad("tangential.force=[1]", "tangential.force");
+  bad("tangential.force=[1, 2, 3]", "tangential.force");
+  // Blocks the problem does not use.
+  const std::string normal = write(example("hertz-sphere").dump(), "normal.json");
+  expect_error("validate " + normal + " --set " + quote(R"(friction={"law": "coulomb", "mu": 0.3})"), "friction",
+               "not used by problem 'normal'");
+  expect_error("solve " + normal + " --set " + quote(R"(sweep={"normal.force": [1, 2]})"), "sweep", "not used");
+}
+
+TEST_F(CliInputHoles, KnownWrongResultsAreNotSuccesses) {
+  const std::string file = write(example("hertz-sphere").dump());
+  const std::string small_grid = quote(R"(grid={"nx":32,"ny":32,"x":[-1e-4,1e-4],"y":[-1e-4,1e-4]})");
+  // Truncated by the grid's edge: exit 2 naming grid, the share of the edge in the summary.
+  expect_error("solve " + file + " -q --out edge --set " + small_grid, "grid", "edge of the grid");
+  const json s = json::parse(slurp(dir_ / "edge" / "summary.json"));
+  EXPECT_GT(s["contact_edge_fraction"].get<double>(), 0.9);  // the Hertz contact covers the whole square
+  EXPECT_FALSE(s["limits"][0]["accepted"].get<bool>());
+  expect_error("validate " + file + " --set " + small_grid, "grid", "beyond the grid");
+  // Accepted by the case: exit 0 with a warning, the limit recorded as accepted.
+  Result r = run("solve " + file + " -q --out accepted --set " + small_grid + " --set grid.allow_edge_contact=true");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: grid"), std::string::npos) << r.err;
+  EXPECT_TRUE(json::parse(slurp(dir_ / "accepted" / "summary.json"))["limits"][0]["accepted"].get<bool>());
+  // A 1 x 1 grid cannot resolve a pressure distribution.
+  expect_error("solve " + file + " --set grid.nx=1 --set grid.ny=1", "grid.nx", "one element");
+  // E = 1e3 Pa: the contact is ~11 times the sphere's radius (a/R in the message).
+  const std::string soft = " --set materials.body.E=1e3 --set materials.base.E=1e3";
+  expect_error("solve " + file + " -q --out soft --set grid.nx=16 --set grid.ny=16" + soft, "materials", "a/R = 1");
+  expect_error("validate " + file + soft, "materials", "a/R = 1");
+  r = run("solve " + file + " -q --out soft-ok --set grid.nx=16 --set grid.ny=16 --set materials.allow_large_strain=true" +
+          soft);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: materials"), std::string::npos) << r.err;
+}
+
+}  // namespace
