@@ -1,6 +1,10 @@
 // Loading a case for the subcommands: file, name, overrides, backend, validation.
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -30,15 +34,61 @@ Case load_case(const std::string& path, const std::vector<std::string>& override
   return build_case(doc, ".");
 }
 
+namespace {
+
+bool numbered(const std::string& name, const std::string& stem, const std::string& ext) {
+  if (name.size() <= stem.size() + ext.size() || name.rfind(stem, 0) != 0 ||
+      name.compare(name.size() - ext.size(), ext.size(), ext) != 0)
+    return false;
+  const std::string digits = name.substr(stem.size(), name.size() - stem.size() - ext.size());
+  return std::all_of(digits.begin(), digits.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
+}
+
+}  // namespace
+
+bool is_result_file(const std::string& name) {
+  static const std::set<std::string> fixed = {
+      "summary.json", "compare.json", "fields.csv", "timeseries.csv", "plots.gp", "plots.log",
+      "line_x.dat", "line_y.dat", "map.dat", "reference_x.dat", "reference_y.dat"};
+  static const char* figures[] = {"pressure_x", "pressure_y", "traction_x", "traction_y", "pressure_map",
+                                  "contact_map", "F_bar", "l_bar", "v_bar"};
+  if (fixed.count(name)) return true;
+  for (const char* f : figures)
+    for (const char* ext : {".svg", ".png"})
+      if (name == std::string(f) + ext) return true;
+  return numbered(name, "fields_", ".csv") || numbered(name, "timeseries_", ".csv");
+}
+
 std::string prepare_output_dir(const Case& c, const std::string& cli_out) {
+  namespace fs = std::filesystem;
   std::string dir = cli_out;
   if (dir.empty()) dir = c.output.dir;
-  if (dir.empty()) dir = (std::filesystem::path("out") / c.name).string();
+  if (dir.empty()) dir = (fs::path("out") / c.name).string();
+  const std::string key = cli_out.empty() ? (c.output.dir.empty() ? "name" : "output.dir") : "--out";
   std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir))
-    throw InputError(cli_out.empty() ? (c.output.dir.empty() ? "name" : "output.dir") : "--out",
-                     "cannot create the output folder '" + dir + "'" + (ec ? ": " + ec.message() : ""));
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw InputError(key, "cannot create the output folder '" + dir + "'" + (ec ? ": " + ec.message() : ""));
+  // Writable? Found now, not after the solve.
+  const fs::path probe = fs::path(dir) / ".dyncontact-write-test";
+  {
+    std::ofstream out(probe, std::ios::binary | std::ios::trunc);
+    if (!out) {
+      const int err = errno;
+      throw InputError(key, "cannot write into the output folder '" + dir + "': " + std::strerror(err));
+    }
+  }
+  fs::remove(probe, ec);
+  // The run owns its folder's result files: those of an earlier run go (only our own names).
+  std::vector<fs::path> stale;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    std::error_code e2;
+    if (entry.is_regular_file(e2) && is_result_file(entry.path().filename().string())) stale.push_back(entry.path());
+  }
+  for (const fs::path& file : stale) {
+    fs::remove(file, ec);
+    if (ec) throw InputError(key, "cannot remove the earlier result '" + file.string() + "': " + ec.message());
+  }
   return dir;
 }
 

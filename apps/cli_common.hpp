@@ -22,7 +22,14 @@ inline constexpr int kExitInternal = 4;     ///< anything unexpected
 Case load_case(const std::string& path, const std::vector<std::string>& overrides,
                const std::string& backend = "");
 
-/// `--out` when given, else output.dir, else out/<name>; created if missing.
+/// Whether `name` is one of the result files a run writes (summary.json, fields[_k].csv,
+/// timeseries[_k].csv, compare.json, the plots and their data): a new run removes these from
+/// its folder first. A run kind that writes new file names lists them here.
+bool is_result_file(const std::string& name);
+
+/// `--out` when given, else output.dir, else out/<name>; created if missing. Throws
+/// InputError naming the key (--out, output.dir, name) when it cannot be created or written
+/// into, before anything is solved; removes the result files of an earlier run (only those).
 std::string prepare_output_dir(const Case& c, const std::string& cli_out);
 
 /// Writes `text` to `path` (throws InputError naming the file when that fails).

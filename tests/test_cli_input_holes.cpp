@@ -1,6 +1,7 @@
 // The command line on hostile and known-wrong inputs: every one a clear error (exit 2 naming
 // the key) or a result with words, never a crash, never a silent wrong answer.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -115,6 +116,41 @@ TEST_F(CliInputHoles, KnownWrongResultsAreNotSuccesses) {
           soft);
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("warning: materials"), std::string::npos) << r.err;
+}
+
+TEST_F(CliInputHoles, OutputFolderCheckedBeforeSolvingAndOwned) {
+  json doc = example("hertz-sphere");
+  doc["grid"]["nx"] = 16;
+  doc["grid"]["ny"] = 16;
+  const std::string file = write(doc.dump());
+  // Not writable (even for root: /proc takes no files): said before solving, naming the folder.
+  Result r = run("solve " + file + " --out /proc");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("error: --out: cannot write into the output folder '/proc'"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("converged"), std::string::npos) << r.out;
+  if (geteuid() != 0) {
+    fs::create_directories(dir_ / "locked");
+    fs::permissions(dir_ / "locked", fs::perms::owner_read | fs::perms::owner_exec);
+    r = run("solve " + file + " --out locked");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("locked"), std::string::npos) << r.err;
+    fs::permissions(dir_ / "locked", fs::perms::owner_all);
+  }
+  // Results of an earlier run go; other files stay.
+  fs::create_directories(dir_ / "res");
+  for (const char* name : {"fields_3.csv", "timeseries_12.csv", "pressure_x.svg", "summary.json", "notes.txt",
+                           "fields_old.csv"})
+    std::ofstream(dir_ / "res" / name) << "old\n";
+  r = run("solve " + file + " -q --out res");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "res" / "fields_3.csv"));
+  EXPECT_FALSE(fs::exists(dir_ / "res" / "timeseries_12.csv"));
+  EXPECT_TRUE(fs::exists(dir_ / "res" / "notes.txt"));
+  EXPECT_TRUE(fs::exists(dir_ / "res" / "fields_old.csv"));
+  EXPECT_NE(slurp(dir_ / "res" / "summary.json"), "old\n");
+  if (fs::exists(dir_ / "res" / "pressure_x.svg")) {
+    EXPECT_NE(slurp(dir_ / "res" / "pressure_x.svg"), "old\n");
+  }
 }
 
 }  // namespace
