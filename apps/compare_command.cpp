@@ -74,6 +74,11 @@ int run_compare(const CompareArgs& args) {
     if (b != "auto" && b != "ipopt" && b != "nlopt" && b != "native")
       throw InputError("--backends", "unknown backend '" + b + "' (expected auto, ipopt, nlopt or native)");
   const Case base = load_case(args.case_path, args.sets);
+  if (base.problem == ProblemKind::paper_cylinder)
+    throw InputError("problem",
+                     "a paper_cylinder case has no contact backend to compare: its traction is the Carter-Poritsky "
+                     "closed form (traction_model carter_poritsky) or a creep law tabulated once by the native "
+                     "steady-rolling solver (numerical); run it with `dyncontact solve`");
   if (base.problem != ProblemKind::normal && base.problem != ProblemKind::tangential) not_implemented(base.problem);
   const bool tangential = base.problem == ProblemKind::tangential;
   const std::string dir = prepare_output_dir(base, args.out);

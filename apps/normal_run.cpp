@@ -1,6 +1,7 @@
 #include "normal_run.hpp"
 
 #include <algorithm>
+#include <chrono>
 
 #include "progress.hpp"
 #include "summary_writer.hpp"
@@ -11,7 +12,10 @@ NormalRun run_normal(const Case& c, bool progress) {
   NormalRun run;
   {
     Progress reporter("solving " + c.name + " (" + c.solver.backend + ")", progress);
+    // time_s: the whole solve (set-up and every backend tried), not only the last attempt.
+    const auto start = std::chrono::steady_clock::now();
     run.solution = solve_normal_case(c, reporter.callback());
+    run.solution.report.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     reporter.finish();
   }
   // A solver leaves round-off pressures outside the contact; those within the certificate

@@ -27,9 +27,13 @@ ProgressCallback Progress::callback() {
 
 std::string Progress::line(double elapsed) const {
   char buf[256];
-  if (have_info_)
+  // Not every solver reports its objective while it runs (0 then): shown only when it does.
+  if (have_info_ && info_.objective != 0.0)
     std::snprintf(buf, sizeof buf, "%s: %.1f s, iteration %d, objective %.6g, residual %.2e", label_.c_str(), elapsed,
                   info_.iteration, info_.objective, info_.residual);
+  else if (have_info_)
+    std::snprintf(buf, sizeof buf, "%s: %.1f s, iteration %d, residual %.2e", label_.c_str(), elapsed,
+                  info_.iteration, info_.residual);
   else
     std::snprintf(buf, sizeof buf, "%s: %.1f s", label_.c_str(), elapsed);
   return buf;

@@ -44,6 +44,12 @@ bool TangentialRun::converged() const {
          });
 }
 
+double TangentialRun::total_time_s() const {
+  double t = 0.0;
+  for (const auto& s : steps) t += s.report.time_s;
+  return t;
+}
+
 const SolverReport& TangentialRun::report() const {
   for (const auto& s : steps)
     if (s.report.status != SolveStatus::converged) return s.report;
@@ -131,6 +137,7 @@ TangentialRun run_tangential(const Case& c, bool progress) {
   if (has_history(c)) {
     run.summary["steps"] = steps;
     run.summary["all_steps_converged"] = run.converged();
+    run.summary["solver"]["time_s"] = run.total_time_s();  // the whole history; each step's in "steps"
   }
   return run;
 }
@@ -143,6 +150,7 @@ StaticRun run_static(const Case& c, bool progress) {
     out.fields = std::move(run.fields);
     out.normal = run.normal.back();
     out.report = run.report();
+    out.report.time_s = run.total_time_s();
     out.converged = run.converged();
     out.history = has_history(c);
     return out;

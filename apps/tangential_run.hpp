@@ -20,6 +20,7 @@ struct TangentialRun {
   nlohmann::json summary;                 ///< summary.json content (without "files"): the last
                                           ///< step's keys, plus "steps" with a history
   bool converged() const;                 ///< every step converged
+  double total_time_s() const;            ///< solver time of all steps (s)
   /// The report to show: the first step that did not converge, else the last.
   const SolverReport& report() const;
 };

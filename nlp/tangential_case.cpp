@@ -1,5 +1,6 @@
 // The tangential block of a case (core/case_tangential.hpp, read by the case model) solved:
 // one step, steady rolling, or a loading history with memory.
+#include <chrono>
 #include <stdexcept>
 
 #include "errors.hpp"
@@ -19,20 +20,27 @@ std::vector<TangentialSolution> solve_tangential_case(const Case& c, const Progr
   TangentialProblem problem(c.grid, c.materials, profile_heights(c.profile, c.grid),
                             FrictionLaw::from_spec(*c.friction), kind);
   std::vector<TangentialSolution> out;
+  // Each step's report times the whole step (every marching step, Newton and outer-loop
+  // iteration, fallback), not only its last inner solve.
+  auto timed = [&out](const auto& solve) {
+    const auto start = std::chrono::steady_clock::now();
+    out.push_back(solve());
+    out.back().report.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
   if (t.regime == TangentialRegime::rolling) {
     if (!t.has_history) {
-      out.push_back(problem.steady_rolling(t.rolling, c.solver, progress));
+      timed([&] { return problem.steady_rolling(t.rolling, c.solver, progress); });
       return out;
     }
     for (const RollingStep& step : t.rolling_history)
-      out.push_back(problem.roll(step.load, step.distance, c.solver, progress));
+      timed([&] { return problem.roll(step.load, step.distance, c.solver, progress); });
     return out;
   }
   if (!t.has_history) {
-    out.push_back(problem.step(t.load, c.solver, progress));
+    timed([&] { return problem.step(t.load, c.solver, progress); });
     return out;
   }
-  for (const TangentialLoad& step : t.history) out.push_back(problem.step(step, c.solver, progress));
+  for (const TangentialLoad& step : t.history) timed([&] { return problem.step(step, c.solver, progress); });
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -116,6 +117,28 @@ TEST_F(CliInputHoles, KnownWrongResultsAreNotSuccesses) {
           soft);
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("warning: materials"), std::string::npos) << r.err;
+}
+
+// time_s is the whole solve: every marching step of a steady rolling by time marching (Ipopt
+// marches), not the last step's solve.
+TEST_F(CliInputHoles, TimeCountsTheWholeSolve) {
+  const std::string file = write(example("carter-2d").dump());
+  const auto start = std::chrono::steady_clock::now();
+  const Result r = run("solve " + file + " -q --out carter --backend ipopt --set grid.nx=20");
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json s = json::parse(slurp(dir_ / "carter" / "summary.json"));
+  ASSERT_GT(s["marching_steps"].get<int>(), 10);
+  EXPECT_GT(s["solver"]["time_s"].get<double>(), 0.5 * wall) << "wall " << wall;
+  EXPECT_LE(s["solver"]["time_s"].get<double>(), wall);
+}
+
+TEST_F(CliInputHoles, CompareSaysWhyPaperCylinderHasNoBackends) {
+  const Result r = run("compare " + quote(fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / "paper-cylinder.json") +
+                       " --backends ipopt,native --out cmp");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("no contact backend to compare"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("not implemented"), std::string::npos) << r.err;
 }
 
 TEST_F(CliInputHoles, OutputFolderCheckedBeforeSolvingAndOwned) {
