@@ -9,6 +9,7 @@
 
 #include "analytic_reference.hpp"
 #include "errors.hpp"
+#include "resource_estimate.hpp"
 #include "result_limits.hpp"
 #include "cli_common.hpp"
 #include "paper_cylinder_run.hpp"
@@ -84,6 +85,15 @@ int run_validate(const ValidateArgs& args) {
       std::printf("  grid:     %d x %d = %zu elements, x in [%.4g, %.4g] m, y in [%.4g, %.4g] m, dx = %.4g m, "
                   "dy = %.4g m\n",
                   g.nx, g.ny, g.size(), g.x0, g.x_max(), g.y0, g.y_max(), g.dx, g.dy);
+  }
+  if (static_problem) {
+    const ResourceEstimate est = estimate_resources(c);
+    std::printf("  estimate: %s operator, about %.3g MB and %.2g s per solve%s\n            (%s)\n", est.operator_kind.c_str(),
+                est.memory_bytes / 1e6, est.seconds,
+                est.solves > 1 ? (", " + std::to_string(est.solves) + " solves").c_str() : "", est.basis.c_str());
+    if (est.memory_bytes > 4e9)
+      std::fprintf(stderr, "warning: grid: the estimated memory (%.3g GB) may exceed this machine's\n",
+                   est.memory_bytes / 1e9);
   }
   std::printf("  solver:   backend %s, tol %.3g, certificate tolerance %.3g, at most %d iterations\n",
               c.solver.backend.c_str(), c.solver.tol, c.solver.certificate_tol, c.solver.max_iter);

@@ -1,0 +1,20 @@
+#pragma once
+// A rough estimate of the memory and time of a static case before it is solved (`validate`),
+// from the grid size and the operator kind the solver will pick.
+#include <string>
+
+#include "case_model.hpp"
+
+namespace dc::cli {
+
+struct ResourceEstimate {
+  std::string operator_kind;  ///< "dense" or "fft" (what solver.operator / auto gives)
+  double memory_bytes = 0.0;  ///< the compliance operators and the solver's work vectors
+  double seconds = 0.0;       ///< one normal (+ tangential) solve by the native solver
+  int solves = 1;             ///< solves of the case (history steps; 1 otherwise)
+  std::string basis;          ///< how it was estimated, for the user
+};
+
+ResourceEstimate estimate_resources(const Case& c);
+
+}  // namespace dc::cli
