@@ -55,8 +55,7 @@ class CliExtremes : public dc::test::CliTest, public ::testing::WithParamInterfa
 
 TEST_P(CliExtremes, CorrectOrSaidClearly) {
   const Extreme& x = GetParam();
-  const std::string file = (fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / (std::string(x.example) + ".json")).string();
-  const Result r = run("solve " + dc::test::shell_quote(file) + x.sets + " -q --out res --set output.plots=false");
+  const Result r = run("solve " + dc::test::shell_quote(dc::test::example_path(x.example)) + x.sets + " -q --out res --set output.plots=false");
   ASSERT_EQ(r.code, x.exit_code) << r.err;
   if (x.exit_code == 2) {
     EXPECT_NE(r.err.find(std::string("error: ") + x.error + ":"), std::string::npos) << r.err;

@@ -16,13 +16,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
-using dc::test::slurp;
 using Result = dc::test::CliResult;
+using dc::test::slurp;
 const auto& quote = dc::test::shell_quote;
-
-json example(const std::string& name) {
-  return json::parse(slurp(fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / (name + ".json")));
-}
+const auto& example = dc::test::example_json;
 
 class CliInputHoles : public dc::test::CliTest {
  protected:
@@ -48,7 +45,7 @@ TEST_F(CliInputHoles, DeepNestingIsExit2NamingThePlace) {
   const std::string file = write(text);
   expect_error("validate " + file, "junk[0][0]", "nested more than 64");
   expect_error("solve " + file, "junk[0][0]", "nested more than 64");
-  expect_error("validate " + quote(fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / "hertz-sphere.json") +
+  expect_error("validate " + quote(dc::test::example_path("hertz-sphere")) +
                    " --set " + quote("grid.x=" + std::string(5000, '[') + std::string(5000, ']')),
                "grid.x[0]", "nested");
 }
@@ -134,7 +131,7 @@ TEST_F(CliInputHoles, TimeCountsTheWholeSolve) {
 }
 
 TEST_F(CliInputHoles, CompareSaysWhyPaperCylinderHasNoBackends) {
-  const Result r = run("compare " + quote(fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / "paper-cylinder.json") +
+  const Result r = run("compare " + quote(dc::test::example_path("paper-cylinder")) +
                        " --backends ipopt,native --out cmp");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("no contact backend to compare"), std::string::npos) << r.err;

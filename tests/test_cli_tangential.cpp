@@ -30,9 +30,7 @@ using dc::test::slurp;
 using Result = dc::test::CliResult;
 const auto& quote = dc::test::shell_quote;
 
-json example(const std::string& name) {
-  return json::parse(slurp(fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / (name + ".json")));
-}
+const auto& example = dc::test::example_json;
 
 /// Rows of fields.csv: the header, then the state column of every row.
 struct FieldsFile {

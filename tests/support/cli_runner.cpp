@@ -11,6 +11,12 @@ namespace dc::test {
 
 namespace fs = std::filesystem;
 
+std::string example_path(const std::string& name) {
+  return (fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / (name + ".json")).string();
+}
+
+nlohmann::json example_json(const std::string& name) { return nlohmann::json::parse(slurp(example_path(name))); }
+
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::ostringstream s;

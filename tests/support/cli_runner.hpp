@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 namespace dc::test {
 
 struct CliResult {
@@ -15,6 +17,10 @@ struct CliResult {
 
 /// The whole file as a string (empty when missing).
 std::string slurp(const std::filesystem::path& p);
+/// The bundled example examples/NAME.json, parsed.
+nlohmann::json example_json(const std::string& name);
+/// Its path.
+std::string example_path(const std::string& name);
 /// Single-quoted for the shell.
 std::string shell_quote(const std::string& s);
 
