@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli_common.hpp"
+#include "result_limits.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
 #include "solver_report.hpp"
@@ -110,7 +111,10 @@ int run_compare(const CompareArgs& args) {
               "certificate", "d_pressure", "d_approach", "d_force");
   if (tangential) std::printf(" %11s %11s", "d_traction", "d_t_force");
   std::printf("\n");
-  for (const auto& e : entries) {
+  // The limits of the result (grid edge, a/R) are the case's, whichever backend: judged on the first.
+  std::vector<ResultLimit> limits;
+  if (first) limits = result_limits(base, measured_contact_size(base, first->run.summary));
+  for (auto& e : entries) {
     nlohmann::json item;
     item["backend"] = e.backend;
     if (!e.ok) {
@@ -133,6 +137,7 @@ int run_compare(const CompareArgs& args) {
     item["iterations"] = r.iterations;
     item["objective"] = r.objective;
     item["certificate"] = to_json(r.certificate);
+    e.run.summary["limits"] = limits_json(limits);
     item["summary"] = e.run.summary;
     double dp = 0.0, da = 0.0, df = 0.0, dt = 0.0, dft = 0.0;
     if (first) {
@@ -167,6 +172,7 @@ int run_compare(const CompareArgs& args) {
   write_text_file(path, list.dump(2) + "\n");
   std::printf("wrote %s\n", path.c_str());
   std::fflush(stdout);
+  if (report_limits(limits, dir)) return kExitBadInput;
   if (!all_converged) {
     std::cerr << "error: solver: not every backend converged (see " << path << ")\n";
     return kExitUnconverged;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 
 namespace dc::cli {
 namespace {
@@ -99,6 +100,16 @@ ContactSize measured_contact_size(const Case& c, const nlohmann::json& s) {
     size.across_y = n.is_array() ? n[1].get<int>() : size.across_x;
   }
   return size;
+}
+
+bool report_limits(const std::vector<ResultLimit>& limits, const std::string& dir) {
+  bool known_wrong = false;
+  for (const ResultLimit& l : limits) {
+    std::cerr << (l.error ? "error: " : "warning: ") << l.key << ": " << l.message
+              << (l.error ? " (results written to " + dir + " for inspection)" : "") << '\n';
+    known_wrong = known_wrong || l.error;
+  }
+  return known_wrong;
 }
 
 nlohmann::json limits_json(const std::vector<ResultLimit>& limits) {

@@ -29,6 +29,10 @@ std::vector<ResultLimit> result_limits(const Case& c, const ContactSize& size);
 /// The contact size of a solved static case from its summary (add_contact_measures keys).
 ContactSize measured_contact_size(const Case& c, const nlohmann::json& summary);
 
+/// Prints each limit to stderr (error: / warning:, errors saying that the results are in `dir`
+/// for inspection); true when one is an error (the run must exit 2).
+bool report_limits(const std::vector<ResultLimit>& limits, const std::string& dir);
+
 /// Summary entries: [{key, message, accepted}].
 nlohmann::json limits_json(const std::vector<ResultLimit>& limits);
 

@@ -123,13 +123,7 @@ int run_solve(const SolveArgs& args) {
     std::printf("wrote %s\n", summary_path.c_str());
     std::fflush(stdout);
   }
-  bool known_wrong = false;
-  for (const ResultLimit& l : limits) {
-    std::cerr << (l.error ? "error: " : "warning: ") << l.key << ": " << l.message
-              << (l.error ? " (results written to " + dir + " for inspection)" : "") << '\n';
-    known_wrong = known_wrong || l.error;
-  }
-  if (known_wrong) return kExitBadInput;
+  if (report_limits(limits, dir)) return kExitBadInput;
   if (!run.converged) {
     const std::string what = std::string(to_string(r.status)) + (r.message.empty() ? "" : ": " + r.message);
     if (c.solver.accept_unconverged) {

@@ -104,6 +104,9 @@ TEST_F(CliInputHoles, KnownWrongResultsAreNotSuccesses) {
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("warning: grid"), std::string::npos) << r.err;
   EXPECT_TRUE(json::parse(slurp(dir_ / "accepted" / "summary.json"))["limits"][0]["accepted"].get<bool>());
+  // compare judges the same limits.
+  expect_error("compare " + file + " -q --backends native --out cmp --set " + small_grid, "grid", "edge of the grid");
+  EXPECT_FALSE(json::parse(slurp(dir_ / "cmp" / "compare.json"))[0]["summary"]["limits"][0]["accepted"].get<bool>());
   // A 1 x 1 grid cannot resolve a pressure distribution.
   expect_error("solve " + file + " --set grid.nx=1 --set grid.ny=1", "grid.nx", "one element");
   // E = 1e3 Pa: the contact is ~11 times the sphere's radius (a/R in the message).
