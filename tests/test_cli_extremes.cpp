@@ -82,3 +82,29 @@ INSTANTIATE_TEST_SUITE_P(Inputs, CliExtremes, ::testing::ValuesIn(kExtremes),
                          [](const ::testing::TestParamInfo<Extreme>& p) { return std::string(p.param.name); });
 
 }  // namespace
+
+namespace {
+
+class CliEstimate : public dc::test::CliTest {};
+
+// validate estimates memory and time from the grid size and the operator kind: a dense matrix
+// on a small grid, the FFT on a large one, memory growing with the grid.
+TEST_F(CliEstimate, ValidatePrintsMemoryAndTimeWithItsBasis) {
+  const std::string file = dc::test::shell_quote(dc::test::example_path("hertz-sphere"));
+  auto megabytes = [&](int n, const char* kind) {
+    const Result r = run("validate " + file + " --set grid.nx=" + std::to_string(n) + " --set grid.ny=" + std::to_string(n));
+    EXPECT_EQ(r.code, 0) << r.err;
+    const auto at = r.out.find("estimate: ");
+    EXPECT_NE(at, std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(std::string(kind) + " operator, about", at), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("flop", at), std::string::npos) << r.out;  // the basis is said
+    return std::stod(r.out.substr(r.out.find("about ", at) + 6));
+  };
+  const double small = megabytes(24, "dense"), large = megabytes(2048, "fft");
+  // 2048^2 elements: the padded spectrum (4N complex values, 16 bytes) alone is 268 MB.
+  EXPECT_GT(large, 268.0);
+  EXPECT_LT(large, 5000.0);
+  EXPECT_GT(large, 100.0 * small);
+}
+
+}  // namespace
