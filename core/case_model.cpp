@@ -1,22 +1,21 @@
-// The case file contract (shared spec CASES.md): parsing, overrides and validation.
+// The case file contract (shared spec CASES.md): parsing, overrides, the small blocks
+// (materials, normal, friction, solver, output) and build_case; the larger blocks each have
+// their reader file (case_profile, case_grid, case_tangential, case_paper_cylinder).
 // Every bad input throws InputError(key path, reason); unknown keys are errors.
 #include "case_model.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <initializer_list>
-#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "case_blocks.hpp"
 #include "errors.hpp"
 #include "json_block.hpp"
 #include "json_parse.hpp"
-#include "hertz.hpp"
 
 namespace dc {
 namespace {
@@ -49,131 +48,6 @@ MaterialPair parse_materials(const json& j) {
   if (m.body.rigid && m.base.rigid)
     throw InputError("materials", "both bodies are rigid: at least one must be elastic");
   return m;
-}
-
-// ---------------------------------------------------------------- profile
-
-/// Reads a CSV table with a header naming the columns x, y (optional) and h.
-void read_table(ProfileSpec& p, const std::string& file_key, const std::string& base_dir) {
-  namespace fs = std::filesystem;
-  fs::path path(p.file);
-  if (path.is_relative() && !base_dir.empty()) path = fs::path(base_dir) / path;
-  std::ifstream in(path);
-  if (!in || fs::is_directory(path)) throw InputError(file_key, "cannot open '" + path.string() + "'");
-  auto split = [](const std::string& line) {
-    std::vector<std::string> cells;
-    std::string cell;
-    std::istringstream s(line);
-    while (std::getline(s, cell, ',')) {
-      const auto b = cell.find_first_not_of(" \t\r");
-      const auto e = cell.find_last_not_of(" \t\r");
-      cells.push_back(b == std::string::npos ? std::string() : cell.substr(b, e - b + 1));
-    }
-    return cells;
-  };
-  std::string line;
-  int line_no = 0;
-  int ix = -1, iy = -1, ih = -1;
-  std::size_t columns = 0;
-  p.table_x.clear();
-  p.table_y.clear();
-  p.table_h.clear();
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t")] == '#')
-      continue;
-    const auto cells = split(line);
-    if (ih < 0) {  // header
-      for (std::size_t c = 0; c < cells.size(); ++c) {
-        if (cells[c] == "x") ix = static_cast<int>(c);
-        else if (cells[c] == "y") iy = static_cast<int>(c);
-        else if (cells[c] == "h") ih = static_cast<int>(c);
-      }
-      if (ix < 0 || ih < 0)
-        throw InputError(file_key, "line " + std::to_string(line_no) +
-                                       ": expected a header naming the columns x,y,h");
-      columns = cells.size();
-      continue;
-    }
-    if (cells.size() != columns)
-      throw InputError(file_key, "line " + std::to_string(line_no) + ": expected " +
-                                     std::to_string(columns) + " values, got " + std::to_string(cells.size()));
-    auto value = [&](int c) {
-      const std::string& s = cells[static_cast<std::size_t>(c)];
-      char* end = nullptr;
-      const double v = std::strtod(s.c_str(), &end);
-      if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v))
-        throw InputError(file_key, "line " + std::to_string(line_no) + ": '" + s + "' is not a number");
-      return v;
-    };
-    p.table_x.push_back(value(ix));
-    p.table_y.push_back(iy >= 0 ? value(iy) : 0.0);
-    p.table_h.push_back(value(ih));
-  }
-  if (ih < 0) throw InputError(file_key, "the file is empty (expected a header x,y,h and rows)");
-  if (p.table_h.size() < 2) throw InputError(file_key, "the table needs at least two rows");
-  // Heights are measured from the first point of contact: shift the table's minimum to 0.
-  const double h_min = *std::min_element(p.table_h.begin(), p.table_h.end());
-  for (double& h : p.table_h) h -= h_min;
-}
-
-ProfileSpec parse_profile(const json& j, int dimension, const std::string& base_dir) {
-  JsonBlock o(j, "profile");
-  const std::string type = o.string("type");
-  ProfileSpec p;
-  const bool three_d = dimension == 3;
-  auto three_d_only = [&](const char* what) {
-    if (!three_d)
-      throw InputError("profile.type", std::string("'") + what +
-                                           "' is a 3-D profile; in 2-D (plane strain) use 'cylinder' or "
-                                           "'quadratic' (h = a x^2), or set dimension 3");
-  };
-  if (type == "sphere") {
-    three_d_only("sphere");
-    o.allow({"type", "radius"});
-    p.type = ProfileType::sphere;
-    p.radius = o.positive("radius");
-  } else if (type == "ellipsoid") {
-    three_d_only("ellipsoid");
-    o.allow({"type", "radius_x", "radius_y"});
-    p.type = ProfileType::ellipsoid;
-    p.radius_x = o.positive("radius_x");
-    p.radius_y = o.positive("radius_y");
-  } else if (type == "cylinder") {
-    if (three_d) o.allow({"type", "radius", "length"});
-    else o.allow({"type", "radius"});
-    p.type = ProfileType::cylinder;
-    p.radius = o.positive("radius");
-    if (three_d) p.length = o.has("length") ? o.positive("length") : 0.0;
-  } else if (type == "flat_punch") {
-    three_d_only("flat_punch");
-    o.allow({"type", "radius"});
-    p.type = ProfileType::flat_punch;
-    p.radius = o.positive("radius");
-  } else if (type == "quadratic") {
-    p.type = ProfileType::quadratic;
-    if (three_d) {
-      o.allow({"type", "a", "b"});
-      p.a = o.non_negative("a");
-      p.b = o.non_negative("b");
-      if (p.a == 0.0 && p.b == 0.0)
-        throw InputError("profile.a", "a and b cannot both be zero (a flat profile has no contact point; "
-                                      "use flat_punch)");
-    } else {
-      o.allow({"type", "a"});
-      p.a = o.positive("a");
-    }
-  } else if (type == "table") {
-    o.allow({"type", "file"});
-    p.type = ProfileType::table;
-    p.file = o.string("file");
-    if (p.file.empty()) throw InputError("profile.file", "must name a CSV file");
-    read_table(p, "profile.file", base_dir);
-  } else {
-    throw InputError("profile.type", "unknown profile type '" + type +
-                                         "' (expected sphere, ellipsoid, cylinder, flat_punch, quadratic, table)");
-  }
-  return p;
 }
 
 // ---------------------------------------------------------------- normal, friction, solver, output
@@ -233,149 +107,6 @@ OutputSpec parse_output(const json& j) {
   out.fields = o.boolean_or("fields", true);
   out.plots = o.boolean_or("plots", true);
   return out;
-}
-
-// ---------------------------------------------------------------- grid
-
-/// Hertz semi-axes (x, y) of the case's contact, for `extent` grids.
-void hertz_semi_axes(const Case& c, bool has_normal, double& ax, double& ay) {
-  const ProfileSpec& p = c.profile;
-  if (p.type == ProfileType::flat_punch) {
-    ax = ay = p.radius;
-    return;
-  }
-  if (p.type == ProfileType::table)
-    throw InputError("grid.extent", "a table profile has no Hertz estimate: give explicit grid.x (and grid.y) bounds");
-  if (!has_normal)
-    throw InputError("grid.extent", "needs normal.force or normal.approach to size the Hertz contact");
-  const double E_star = c.materials.E_star();
-  const bool approach = c.normal.control == Control::approach;
-  const char* approach_2d =
-      "with normal.approach the 2-D/line contact width is not fixed by Hertz (the plane-strain approach "
-      "depends on a reference length): give explicit grid.x bounds";
-  double A = 0.0, B = 0.0;
-  p.quadratic_coefficients(A, B);
-  if (c.dimension == 2) {
-    if (approach) throw InputError("grid.extent", approach_2d);
-    ax = hertz::cylinder2d(0.5 / A, c.normal.value, E_star).a;
-    ay = ax;
-    return;
-  }
-  if (A == 0.0 || B == 0.0) {
-    if (p.type == ProfileType::cylinder && p.length > 0.0) {
-      if (approach) throw InputError("grid.extent", approach_2d);
-      ax = hertz::cylinder2d(p.radius, c.normal.value / p.length, E_star).a;
-      ay = 0.5 * p.length;
-      return;
-    }
-    throw InputError("grid.extent", "the contact of this profile is unbounded along one axis "
-                                    "(give the cylinder a length, or explicit grid bounds)");
-  }
-  double P = c.normal.value;
-  if (A == B) {  // axisymmetric: the sphere formulas, P = 4/3 E* sqrt(R) approach^(3/2)
-    const double R = 0.5 / A;
-    if (approach) P = 4.0 / 3.0 * E_star * std::sqrt(R) * std::pow(c.normal.value, 1.5);
-    ax = ay = hertz::sphere(R, P, E_star).a;
-    return;
-  }
-  if (approach) {  // approach ~ P^(2/3): invert from the unit-load solution
-    const double d1 = hertz::elliptic(A, B, 1.0, E_star).approach;
-    P = std::pow(c.normal.value / d1, 1.5);
-  }
-  const auto s = hertz::elliptic(A, B, P, E_star);
-  ax = s.a;
-  ay = s.b;
-}
-
-std::vector<double> bounds(const JsonBlock& o, const char* k) {
-  const auto v = o.numbers(k);
-  if (v.size() != 2) throw InputError(o.key(k), "expected [min, max]");
-  if (!(v[1] > v[0])) throw InputError(o.key(k), "expected [min, max] with min < max");
-  return v;
-}
-
-Grid parse_grid(const json& j, const Case& c, bool has_normal) {
-  JsonBlock o(j, "grid");
-  const bool three_d = c.dimension == 3;
-  o.allow({"nx", "ny", "x", "y", "extent", "allow_edge_contact"});
-  (void)o.boolean_or("allow_edge_contact", false);  // read into Case by build_case
-  const int nx = o.integer("nx");
-  if (nx < 1) throw InputError("grid.nx", "must be at least 1, got " + std::to_string(nx));
-  // One element across cannot represent a pressure distribution (a 1 x 1 grid puts the whole
-  // load on one uniform element: the peak comes out about 3 times too low).
-  if (nx == 1)
-    throw InputError("grid.nx", "one element across cannot resolve the contact pressure; use at least 2 (about "
-                                "8 or more across the contact for a usable peak pressure)");
-  int ny = 1;
-  if (three_d) {
-    ny = o.integer("ny");
-    if (ny < 1) throw InputError("grid.ny", "must be at least 1, got " + std::to_string(ny));
-    if (ny == 1)
-      throw InputError("grid.ny", "one element across cannot resolve the contact pressure in 3-D; use at least 2 "
-                                  "(or dimension 2 for a plane-strain line contact)");
-  } else if (o.has("ny")) {
-    ny = o.integer("ny");
-    if (ny != 1) throw InputError("grid.ny", "must be 1 (or omitted) in 2-D, got " + std::to_string(ny));
-  }
-  if (static_cast<double>(nx) * ny > 4194304.0)
-    throw InputError("grid", "too many elements (" + std::to_string(static_cast<long long>(nx) * ny) +
-                                 "; at most 2048 x 2048)");
-  const bool has_x = o.has("x"), has_extent = o.has("extent");
-  if (has_x && has_extent) throw InputError("grid.extent", "give either extent or x/y bounds, not both");
-  if (has_extent) {
-    if (three_d && o.has("y")) throw InputError("grid.y", "give either extent or x/y bounds, not both");
-    const double k = o.positive("extent");
-    double ax = 0.0, ay = 0.0;
-    hertz_semi_axes(c, has_normal, ax, ay);
-    if (!(std::isfinite(ax) && ax > 0.0 && std::isfinite(ay) && ay > 0.0))
-      throw InputError("grid.extent", "the Hertz estimate of the contact size is not finite");
-    return Grid::make(c.dimension, nx, ny, -k * ax, k * ax, -k * ay, k * ay);
-  }
-  if (!has_x) throw InputError("grid.x", "missing required key (give x [min, max]" +
-                                             std::string(three_d ? " and y" : "") + ", or extent)");
-  const auto x = bounds(o, "x");
-  if (!three_d) return Grid::make(2, nx, 1, x[0], x[1], 0.0, 0.0);
-  if (!o.has("y")) throw InputError("grid.y", "missing required key (3-D grids need y [min, max])");
-  const auto y = bounds(o, "y");
-  return Grid::make(3, nx, ny, x[0], x[1], y[0], y[1]);
-}
-
-/// The profile must be able to touch inside the grid: its first point of contact lies in the
-/// grid and some element has a finite gap. Otherwise the normal problem cannot carry the load.
-void check_contact_in_grid(const Case& c) {
-  const Grid& g = c.grid;
-  const std::vector<double> h = profile_heights(c.profile, g);
-  if (std::none_of(h.begin(), h.end(), [](double v) { return std::isfinite(v); }))
-    throw InputError("grid", "no element centre lies under the profile (refine the grid or enlarge the punch)");
-  const ProfileSpec& p = c.profile;
-  double px = 0.0, py = 0.0;
-  bool free_x = false, free_y = false;  // the contact is a line along that axis
-  double half_len_y = 0.0;              // finite cylinder: the line's half-length
-  if (p.type == ProfileType::table) {
-    const auto k = static_cast<std::size_t>(std::min_element(p.table_h.begin(), p.table_h.end()) - p.table_h.begin());
-    px = p.table_x[k];
-    py = p.table_y[k];
-    const bool single_row = std::all_of(p.table_y.begin(), p.table_y.end(), [&](double v) { return v == p.table_y[0]; });
-    free_y = single_row;
-  } else if (p.type == ProfileType::cylinder) {
-    free_y = true;
-    half_len_y = 0.5 * p.length;
-  } else if (p.type == ProfileType::quadratic) {
-    free_x = p.a == 0.0;
-    free_y = p.b == 0.0;
-  }
-  const double tx = 1e-12 * (g.x_max() - g.x0), ty = 1e-12 * (g.y_max() - g.y0);
-  bool inside = free_x || (px >= g.x0 - tx && px <= g.x_max() + tx);
-  if (g.dimension == 3 && !free_y) inside = inside && py >= g.y0 - ty && py <= g.y_max() + ty;
-  if (g.dimension == 3 && free_y && half_len_y > 0.0)
-    inside = inside && g.y_max() > -half_len_y && g.y0 < half_len_y;
-  if (!inside) {
-    std::string where = "grid x in [" + fmt(g.x0) + ", " + fmt(g.x_max()) + "]";
-    if (g.dimension == 3) where += ", y in [" + fmt(g.y0) + ", " + fmt(g.y_max()) + "]";
-    throw InputError("grid", "the contact point lies outside the grid (" + where + " does not contain (" +
-                                 fmt(px) + ", " + fmt(py) + "), where the profile first touches): " +
-                                 "the contact could not carry the load");
-  }
 }
 
 ProblemKind parse_problem(const JsonBlock& top) {
@@ -588,7 +319,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
     c.allow_large_strain = JsonBlock(top.at("materials"), "materials").boolean_or("allow_large_strain", false);
   }
   const bool has_profile = required("profile");
-  if (has_profile) c.profile = parse_profile(top.at("profile"), c.dimension, base_dir);
+  if (has_profile) c.profile = read_profile(top.at("profile"), c.dimension, base_dir);
   const bool has_normal = required("normal");
   if (has_normal) c.normal = read_normal(top.at("normal"), "normal");
   if (top.has("friction") || c.problem == ProblemKind::tangential)
@@ -601,7 +332,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   if (top.has("output")) c.output = parse_output(top.at("output"));
   if (required("grid")) {
     if (!has_profile) throw InputError("profile", "missing required key (the grid needs a profile)");
-    c.grid = parse_grid(top.at("grid"), c, has_normal);
+    c.grid = read_grid(top.at("grid"), c, has_normal);
     c.allow_edge_contact = JsonBlock(top.at("grid"), "grid").boolean_or("allow_edge_contact", false);
     check_contact_in_grid(c);
   }

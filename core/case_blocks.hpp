@@ -1,0 +1,22 @@
+#pragma once
+// The case model's readers of the common blocks, one file each (core/case_<block>.cpp), used by
+// build_case (case_model.cpp). Each reads through JsonBlock and throws InputError naming the key.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "case_model.hpp"
+
+namespace dc {
+
+/// "profile": the body's shape; a table profile's CSV read relative to `base_dir`.
+ProfileSpec read_profile(const nlohmann::json& j, int dimension, const std::string& base_dir);
+
+/// "grid": nx, ny, bounds or `extent` (the Hertz contact of `c`'s profile, materials and
+/// normal load, when `has_normal`).
+Grid read_grid(const nlohmann::json& j, const Case& c, bool has_normal);
+
+/// The profile must be able to touch inside the grid (else the load cannot be carried).
+void check_contact_in_grid(const Case& c);
+
+}  // namespace dc
