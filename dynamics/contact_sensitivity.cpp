@@ -65,7 +65,9 @@ Eigen::Matrix3d TangentialSensitivity::compute(const LinearOperator& Ct, const G
       if (s.state[e] != 2) continue;
       const double sx = s.sx[e], sy = comps == 2 ? s.sy[e] : 0.0, slip = std::hypot(sx, sy);
       if (!(slip > 0.0) || comps == 1) continue;
-      const double ux = sx / slip, uy = sy / slip, k = s.bound[e] / slip;
+      // In series with the element's own compliance: a barely slipping element is no stiffer
+      // than a sticking one.
+      const double ux = sx / slip, uy = sy / slip, k = s.bound[e] / (slip + s.bound[e] * Ct.diagonal(e));
       const double mx = mode(l, e, 0), my = mode(l, e, 1);
       const double along = mx * ux + my * uy;
       x_[e] = -k * (mx - along * ux);
