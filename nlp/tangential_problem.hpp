@@ -36,6 +36,9 @@ namespace dc {
 struct OuterLoopReport {
   int iterations = 0;      ///< outer (p, tau) iterations
   double last_change = 0;  ///< relative change of (p, tau) in the last iteration
+  /// kappa != 0: max |kappa B32 (tau - tau_in)| / (C_00 max p), the gap error the last
+  /// tangential update leaves in the normal problem (the loop stops below certificate_tol / 100)
+  double coupling_residual = 0;
   bool converged = true;
 };
 
