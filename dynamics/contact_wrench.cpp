@@ -119,6 +119,7 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
     M += r.cross(f);
   }
   state_.in_contact = state_.n_contact > 0;
+  state_.pressure = pressure;
   state_.contact_area = state_.n_contact * A;
   state_.stick_fraction = state_.n_contact > 0 ? static_cast<double>(state_.n_stick) / state_.n_contact : 0.0;
   state_.creepage = V.x() != 0.0 ? increment[0] / (std::abs(V.x()) * dt_) : 0.0;
