@@ -727,6 +727,12 @@ void TangentialProblem::set_heights(std::vector<double> heights) { impl_->height
 
 const LinearOperator& TangentialProblem::tangential_compliance() const { return *impl_->Ct; }
 
+const LinearOperator& TangentialProblem::convective_compliance() {
+  Impl& s = *impl_;
+  if (!s.D_conv) s.D_conv = s.half_space.tangential_convective(1, s.kind);
+  return *s.D_conv;
+}
+
 Certificate TangentialProblem::certify_friction(const Grid& grid, const std::vector<double>& tx,
                                                 const std::vector<double>& ty, const std::vector<double>& sx,
                                                 const std::vector<double>& sy, const std::vector<double>& bound,

@@ -111,6 +111,8 @@ class TangentialProblem {
   void set_heights(std::vector<double> heights);
   /// B22, the tangential compliance (sensitivities of a solution with its active set fixed).
   const LinearOperator& tangential_compliance() const;
+  /// Steady rolling's convective compliance B22 - S B22 (one element of travel), built on first use.
+  const LinearOperator& convective_compliance();
 
   const Grid& grid() const { return grid_; }
   /// Certificate of a traction field for given slip increments and bounds (for tests).
