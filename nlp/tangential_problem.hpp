@@ -89,6 +89,9 @@ class TangentialProblem {
                           const ProgressCallback& progress = {});
   /// Forget the loading history (back to the unloaded state).
   void reset();
+  /// Keep the loading history but forget the starting points the next step would reuse (the
+  /// last traction and pressure): the next step starts cold. For comparisons and tests.
+  void forget_starting_points();
 
   const Grid& grid() const { return grid_; }
   /// Certificate of a traction field for given slip increments and bounds (for tests).
