@@ -103,6 +103,7 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   s["friction_capacity"] = capacity * c.grid.area();  // sum f(p) A: the largest tangential force
   s["outer_iterations"] = sol.outer.iterations;
   s["outer_last_change"] = sol.outer.last_change;
+  s["outer_coupling_residual"] = sol.outer.coupling_residual;
   s["outer_converged"] = sol.outer.converged;
   s["marching_steps"] = regime == "rolling" ? nlohmann::json(sol.marching_steps) : nlohmann::json();
   s["newton_iterations"] = regime == "rolling" ? nlohmann::json(sol.newton_iterations) : nlohmann::json();

@@ -568,6 +568,12 @@ TangentialProblem::TangentialProblem(const Grid& grid, const MaterialPair& mater
                                      FrictionLaw friction, OperatorKind kind)
     : impl_(std::make_shared<Impl>(grid, materials, std::move(heights), std::move(friction), kind)), grid_(grid) {}
 
+void TangentialProblem::forget_starting_points() {
+  impl_->tau_warm.clear();
+  impl_->normal->clear_warm_start();
+  impl_->normal_cache.reset();
+}
+
 void TangentialProblem::reset() { impl_->reset(); }
 
 TangentialSolution TangentialProblem::step(const TangentialLoad& load, const SolverSpec& solver,

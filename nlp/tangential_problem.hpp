@@ -96,6 +96,9 @@ class TangentialProblem {
                           const ProgressCallback& progress = {});
   /// Forget the loading history (back to the unloaded state).
   void reset();
+  /// Keep the loading history but forget the starting points the next step would reuse (the
+  /// last traction and pressure): the next step starts cold. For comparisons and tests.
+  void forget_starting_points();
 
   /// One step of a moving contact ((3.8), dynamic problems): the rigid-slip increments of the
   /// step given (x, y (m), rotation about z (rad)), the previous relative displacement taken
