@@ -57,6 +57,10 @@ int main(int argc, char** argv) {
     std::cout.flush();
     std::cerr << "error: " << e.what() << '\n';
     return kExitBadInput;
+  } catch (const dc::SolverFailure& e) {
+    std::cout.flush();
+    std::cerr << "error: solver: " << e.what() << '\n';
+    return kExitUnconverged;
   } catch (const std::exception& e) {
     std::cout.flush();
     std::cerr << "error: internal: " << e.what() << '\n';

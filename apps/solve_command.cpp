@@ -122,6 +122,7 @@ int run_solve(const SolveArgs& args) {
     print_line("max pressure", s["max_pressure"].get<double>(), "Pa", ref, "max_pressure");
     std::printf("  %-16s %d of %zu elements\n", "in contact", s["n_contact"].get<int>(), c.grid.size());
     if (c.problem == ProblemKind::tangential) print_tangential(c, s);
+    if (r.backend == "none") std::printf("note: %s\n", r.message.c_str());
     std::printf("wrote %s\n", summary_path.c_str());
     std::fflush(stdout);
   }

@@ -87,6 +87,7 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   s["spin"] = rolling ? nlohmann::json(a[2]) : nlohmann::json();
   s["rigid_shift"] = rolling ? nlohmann::json() : pair(a[0], a[1]);
   s["rotation"] = rolling ? nlohmann::json() : nlohmann::json(a[2]);
+  if (sol.shift_undetermined) s["rigid_shift_undetermined"] = true;  // mu = 0: any shift, zero traction
   if (regime == "rolling") s["velocity"] = c.tangential->rolling.velocity;
   if (regime == "rolling" && has_history(c)) s["distance"] = sol.distance;  // rolled in this step (m)
   int n_stick = 0, n_slip = 0;

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "native_solvers.hpp"
+#include "solver_report.hpp"
 
 namespace dc {
 
@@ -105,7 +106,7 @@ SolveOutcome solve_normal_native(const QuadraticProgram& qp, const SolveOptions&
     }
     if (rel < options.tol) {
       out.success = true;
-      out.message = "converged (relative change " + std::to_string(rel) + ")";
+      out.message = "converged (relative change " + format_number(rel) + ")";
       break;
     }
   }
