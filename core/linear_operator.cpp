@@ -1,4 +1,5 @@
 #include "linear_operator.hpp"
+#include "interrupt.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -34,11 +35,13 @@ class ConvolutionBase : public LinearOperator {
     for (int r = 0; r < n_out_; ++r)
       for (int c = 0; c < n_in_; ++c) {
         const KernelTable& t = blocks_[r * n_in_ + c];
-        for (int jo = 0; jo < grid_.ny; ++jo)
+        for (int jo = 0; jo < grid_.ny; ++jo) {
+          throw_if_interrupted();
           for (int io = 0; io < grid_.nx; ++io)
             for (int ji = 0; ji < grid_.ny; ++ji)
               for (int ii = 0; ii < grid_.nx; ++ii)
                 m(r * N + grid_.index(io, jo), c * N + grid_.index(ii, ji)) = t.at(io - ii, jo - ji);
+        }
       }
     return m;
   }
@@ -63,7 +66,9 @@ class DenseConvolution final : public ConvolutionBase {
   Eigen::MatrixXd matrix_;
 };
 
-/// Transforms of at least this many points are planned with FFTW_MEASURE and threads.
+/// Transforms of at least this many points run on threads. Every plan is FFTW_ESTIMATE: a
+/// measured plan depends on the timings of the moment, and with it the round-off, so the same
+/// case would not give bit-identical results run after run.
 constexpr std::size_t kLargeTransform = 1024u * 1024u;
 
 std::mutex& planner_mutex() {
@@ -106,17 +111,24 @@ class FftConvolution final : public ConvolutionBase {
     real_ = fftw_alloc_real(nreal);
     cplx_ = fftw_alloc_complex(ncplx);
     {
-      // Planning is not thread-safe in FFTW; large transforms are measured and threaded.
+      // Planning is not thread-safe in FFTW; large transforms are threaded.
       std::lock_guard<std::mutex> lock(planner_mutex());
       const bool large = nreal >= kLargeTransform;
       fftw_plan_with_nthreads(large ? fft_threads() : 1);
-      const unsigned flags = large ? FFTW_MEASURE : FFTW_ESTIMATE;
+      const unsigned flags = FFTW_ESTIMATE;
       forward_ = fftw_plan_dft_r2c_2d(my_, mx_, real_, cplx_, flags);
       inverse_ = fftw_plan_dft_c2r_2d(my_, mx_, cplx_, real_, flags);
     }
-    if (!forward_ || !inverse_) throw std::runtime_error("FFTW could not plan the convolution");
+    if (!forward_ || !inverse_) {
+      release();
+      throw std::runtime_error("FFTW could not plan the convolution");
+    }
     kernel_spectra_.resize(2 * blocks_.size() * ncplx);
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
+      if (interrupt_requested()) {  // a large grid's spectra take seconds
+        release();
+        throw_if_interrupted();
+      }
       std::fill(real_, real_ + nreal, 0.0);
       const KernelTable& t = blocks_[b];
       for (int dj = -(grid_.ny - 1); dj <= grid_.ny - 1; ++dj)
@@ -130,12 +142,7 @@ class FftConvolution final : public ConvolutionBase {
     }
     if (keep_spectra()) input_spectra_.resize(2 * static_cast<std::size_t>(n_in_) * ncplx);
   }
-  ~FftConvolution() override {
-    fftw_destroy_plan(forward_);
-    fftw_destroy_plan(inverse_);
-    fftw_free(real_);
-    fftw_free(cplx_);
-  }
+  ~FftConvolution() override { release(); }
   FftConvolution(const FftConvolution&) = delete;
   FftConvolution& operator=(const FftConvolution&) = delete;
 
@@ -177,6 +184,16 @@ class FftConvolution final : public ConvolutionBase {
 
  private:
   static std::size_t wrap(int d, int m) { return static_cast<std::size_t>(d < 0 ? d + m : d); }
+  /// Frees the plans and buffers (the destructor, or a constructor that stops early).
+  void release() {
+    if (forward_) fftw_destroy_plan(forward_);
+    if (inverse_) fftw_destroy_plan(inverse_);
+    fftw_free(real_);
+    fftw_free(cplx_);
+    forward_ = inverse_ = nullptr;
+    real_ = nullptr;
+    cplx_ = nullptr;
+  }
   /// A single block multiplies in place; several keep the input spectra.
   bool keep_spectra() const { return n_in_ > 1 || n_out_ > 1; }
   /// cplx_ *= kernel (interleaved re/im), in place.

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "errors.hpp"
+#include "interrupt.hpp"
 
 namespace dc {
 
@@ -35,6 +36,7 @@ SolveOptions solve_options(const SolverSpec& solver, const ProgressCallback& pro
 TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp, const SolveOptions& options,
                          NativeSolver native) {
   TimedOutcome timed;
+  throw_if_interrupted();
   const auto start = std::chrono::steady_clock::now();
   try {
     if (backend == "native") timed.outcome = native(qp, options);
@@ -44,6 +46,7 @@ TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp,
     timed.outcome = SolveOutcome{};
     timed.outcome.message = std::string("exception: ") + e.what();
   }
+  throw_if_interrupted();  // a backend stopped by the interrupt reports no result of its own
   timed.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return timed;
 }

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "native_solvers.hpp"
+#include "interrupt.hpp"
 
 namespace dc {
 
@@ -55,6 +56,7 @@ SolveOutcome solve_normal_native(const QuadraticProgram& qp, const SolveOptions&
   double g_norm_old = 1.0, shift = 0.0;
   bool restart = true;
   for (int it = 1; it <= options.max_iter; ++it) {
+    throw_if_interrupted();
     out.iterations = it;
     qp.Q->apply(x.data(), g.data());
     for (std::size_t i = 0; i < n; ++i) g[i] += qp.c[i];

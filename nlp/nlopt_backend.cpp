@@ -14,6 +14,7 @@
 #include <nlopt.hpp>
 
 #include "quadratic_program.hpp"
+#include "interrupt.hpp"
 
 namespace dc {
 namespace {
@@ -75,6 +76,7 @@ double residual(const Problem& p, const double* x, const double* g) {
 /// f = 1/2 x'Qx + c'x, grad = Qx + c (one operator apply).
 double objective(unsigned, const double* x, double* grad, void* data) {
   auto& p = *static_cast<Problem*>(data);
+  if (interrupt_requested()) throw nlopt::forced_stop();  // run_backend then throws Interrupted
   double* g = grad != nullptr ? grad : p.scratch.data();
   const double f = p.qp.gradient(x, g);
   ++p.evaluations;
