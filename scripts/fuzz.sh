@@ -23,10 +23,11 @@ DYNCONTACT_WITH_FUZZ=1 scripts/setup.sh --packages-only
 command -v clang++ >/dev/null || { say "clang++ not found (apt-get install clang libclang-rt-dev)"; exit 1; }
 
 if [[ ! -f "$BUILD_DIR/CMakeCache.txt" ]]; then
+  mkdir -p "$BUILD_DIR"
   say "configuring $BUILD_DIR (clang, libFuzzer, address+undefined)"
   cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
     -DDYNCONTACT_FUZZ=ON -DDYNCONTACT_SANITIZE=address,undefined -DDYNCONTACT_BUILD_TESTS=OFF \
-    -DDYNCONTACT_BUILD_BENCH=OFF >"$BUILD_DIR.configure.log" 2>&1 || { cat "$BUILD_DIR.configure.log" >&2; exit 1; }
+    -DDYNCONTACT_BUILD_BENCH=OFF >"$BUILD_DIR/configure.log" 2>&1 || { cat "$BUILD_DIR/configure.log" >&2; exit 1; }
 fi
 cmake --build "$BUILD_DIR" -j"$JOBS" --target "${TARGETS[@]}" >"$BUILD_DIR/build.log" 2>&1 ||
   { grep -E -A5 'error' "$BUILD_DIR/build.log" | head -60 >&2; say "build failed (full log: $BUILD_DIR/build.log)"; exit 1; }
