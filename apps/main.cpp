@@ -10,6 +10,8 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
+#include "interrupt.hpp"
+#include "interrupt_handler.hpp"
 
 #ifndef DYNCONTACT_VERSION
 #define DYNCONTACT_VERSION "unknown"
@@ -18,6 +20,7 @@
 int main(int argc, char** argv) {
   using namespace dc::cli;
   int exit_code = kExitOk;
+  install_interrupt_handlers();
   try {
     CLI::App app{
         "dyncontact: frictional contact between an elastic body and an elastic half-space "
@@ -53,6 +56,10 @@ int main(int argc, char** argv) {
       return code == 0 ? kExitOk : kExitBadInput;
     }
     return exit_code;
+  } catch (const dc::Interrupted&) {  // a subcommand that had nothing finished to write
+    std::cout.flush();
+    std::cerr << "interrupted\n";
+    return interrupted_exit_code();
   } catch (const dc::InputError& e) {
     std::cout.flush();
     std::cerr << "error: " << e.what() << '\n';

@@ -7,6 +7,7 @@
 
 #include "errors.hpp"
 #include "fault_injection.hpp"
+#include "interrupt.hpp"
 
 namespace dc {
 
@@ -37,6 +38,7 @@ TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp,
                          NativeSolver native) {
   TimedOutcome timed;
   SolveOutcome& out = timed.outcome;
+  throw_if_interrupted();
   const auto start = std::chrono::steady_clock::now();
   const Fault fault = injected_fault(backend);
   try {
@@ -64,6 +66,7 @@ TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp,
     out.success = false;
     out.message += " [returned non-finite values: discarded]";
   }
+  throw_if_interrupted();  // a backend stopped by the interrupt reports no result of its own
   timed.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return timed;
 }

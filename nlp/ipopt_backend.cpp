@@ -17,6 +17,7 @@
 #include <IpTNLP.hpp>
 
 #include "quadratic_program.hpp"
+#include "interrupt.hpp"
 
 namespace dc {
 namespace {
@@ -206,7 +207,7 @@ class QpTnlp final : public Ipopt::TNLP {
                              const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
     iterations_ = std::max(iterations_, static_cast<int>(iter));
     if (options_.progress) options_.progress(ProgressInfo{static_cast<int>(iter), obj_value, inf_pr});
-    return true;
+    return !interrupt_requested();  // false stops Ipopt; run_backend then throws Interrupted
   }
 
   std::vector<double> x_, multipliers_;

@@ -42,6 +42,7 @@
 #include <Eigen/Dense>
 
 #include "tangential_problem.hpp"
+#include "interrupt.hpp"
 
 namespace dc {
 namespace {
@@ -535,6 +536,7 @@ SolveOutcome NativeTangential::solve() {
   bool converged = false;
 
   for (;; ++outer) {
+    throw_if_interrupted();
     // Residual and multipliers: y = Pi_C(x - g) = Pi_D(x - g + A'lambda).
     for (std::size_t i = 0; i < n_; ++i) z[i] = x[i] - g[i];
     if (!project(z, y, lambda)) {

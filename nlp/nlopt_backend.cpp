@@ -18,6 +18,7 @@
 
 #include "active_set_polish.hpp"
 #include "quadratic_program.hpp"
+#include "interrupt.hpp"
 
 namespace dc {
 namespace {
@@ -79,6 +80,7 @@ double residual(const Problem& p, const double* x, const double* g) {
 /// f = 1/2 x'Qx + c'x, grad = Qx + c (one operator apply).
 double objective(unsigned, const double* x, double* grad, void* data) {
   auto& p = *static_cast<Problem*>(data);
+  if (interrupt_requested()) throw nlopt::forced_stop();  // run_backend then throws Interrupted
   double* g = grad != nullptr ? grad : p.scratch.data();
   const double f = p.qp.gradient(x, g);
   ++p.evaluations;

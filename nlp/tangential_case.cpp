@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "errors.hpp"
+#include "interrupt.hpp"
 #include "profile.hpp"
 #include "tangential_problem.hpp"
 
@@ -32,15 +33,23 @@ std::vector<TangentialSolution> solve_tangential_case(const Case& c, const Progr
       timed([&] { return problem.steady_rolling(t.rolling, c.solver, progress); });
       return out;
     }
-    for (const RollingStep& step : t.rolling_history)
-      timed([&] { return problem.roll(step.load, step.distance, c.solver, progress); });
+    try {
+      for (const RollingStep& step : t.rolling_history)
+        timed([&] { return problem.roll(step.load, step.distance, c.solver, progress); });
+    } catch (const Interrupted&) {
+      if (out.empty()) throw;  // else: the finished steps (interrupt_requested() says why no more)
+    }
     return out;
   }
   if (!t.has_history) {
     timed([&] { return problem.step(t.load, c.solver, progress); });
     return out;
   }
-  for (const TangentialLoad& step : t.history) timed([&] { return problem.step(step, c.solver, progress); });
+  try {
+    for (const TangentialLoad& step : t.history) timed([&] { return problem.step(step, c.solver, progress); });
+  } catch (const Interrupted&) {
+    if (out.empty()) throw;  // else: the finished steps (interrupt_requested() says why no more)
+  }
   return out;
 }
 

@@ -138,6 +138,8 @@ class TangentialProblem {
 };
 
 /// The whole tangential case (CASES.md "tangential"): one solution, or one per history step.
+/// An interrupt (core/interrupt.hpp) during a history returns the steps finished before it;
+/// with none finished, Interrupted propagates.
 std::vector<TangentialSolution> solve_tangential_case(const Case& c, const ProgressCallback& progress = {});
 
 /// The native tangential solver (cone-projected accelerated gradient on the FFT operator):

@@ -9,6 +9,8 @@
 #   DYNCONTACT_BUILD_DIR   build folder (default: build)
 #   DYNCONTACT_JOBS        parallel build jobs (default: nproc)
 #   DYNCONTACT_SKIP_APT=1  do not check or install packages
+#   DYNCONTACT_WITH_FUZZ=1 also clang and libFuzzer (FUZZ_PACKAGES; scripts/fuzz.sh)
+# Argument --packages-only: install the packages, do not configure or build.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -20,6 +22,8 @@ PACKAGES=(
   nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev gnuplot-nox
   pkg-config cmake g++ make
 )
+FUZZ_PACKAGES=(clang libclang-rt-dev)
+if [[ "${DYNCONTACT_WITH_FUZZ:-0}" == 1 ]]; then PACKAGES+=("${FUZZ_PACKAGES[@]}"); fi
 
 say() { printf 'setup: %s\n' "$*" >&2; }
 die() { say "error: $*"; exit 1; }
@@ -72,6 +76,7 @@ show_errors() {
 if [[ "${DYNCONTACT_SKIP_APT:-0}" != 1 ]]; then
   install_missing_packages
 fi
+if [[ "${1:-}" == --packages-only ]]; then exit 0; fi
 
 mkdir -p "$BUILD_DIR"
 LOG="$BUILD_DIR/setup.log"
