@@ -100,6 +100,10 @@ class TangentialProblem {
   Grid grid_;
 };
 
+/// The tangential problem of a case (grid, materials, profile, friction, solver.operator), set up
+/// and in its unloaded state. Throws InputError("friction") when the case has no friction.
+TangentialProblem make_tangential_problem(const Case& c);
+
 /// The whole tangential case (CASES.md "tangential"): one solution, or one per history step.
 std::vector<TangentialSolution> solve_tangential_case(const Case& c, const ProgressCallback& progress = {});
 
