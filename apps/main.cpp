@@ -1,6 +1,6 @@
 // dyncontact: the command line. Subcommand wiring and error handling only; each subcommand
 // lives in its own file (solve_command.cpp, compare_command.cpp, validate_command.cpp,
-// example_command.cpp).
+// example_command.cpp, table_command.cpp).
 #include <exception>
 #include <iostream>
 #include <string>
@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
     add_compare_command(app, exit_code);
     add_validate_command(app, exit_code);
     add_example_command(app, exit_code);
+    add_table_command(app, exit_code);
     // A first argument that is neither an option nor a subcommand: say so (CLI11 would only
     // say that a subcommand is required).
     auto is_subcommand = [&app](const std::string& name) {
@@ -46,7 +47,7 @@ int main(int argc, char** argv) {
     };
     if (argc > 1 && argv[1][0] != '-' && !is_subcommand(argv[1])) {
       std::cerr << "error: unknown subcommand '" << argv[1]
-                << "' (expected solve, compare, validate or example; see dyncontact --help)\n";
+                << "' (expected solve, compare, validate, example or table; see dyncontact --help)\n";
       return kExitBadInput;
     }
     try {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -263,6 +264,10 @@ SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& op
     return out;
   }
   try {
+    // Ipopt with MUMPS is not thread-safe: one Ipopt application at a time in the process
+    // (threaded tables); the lock outlives the application and its linear solver.
+    static std::mutex ipopt_mutex;
+    const std::lock_guard<std::mutex> lock(ipopt_mutex);
     if (options.hessian != "auto" && options.hessian != "exact" && options.hessian != "limited-memory") {
       out.message = "Ipopt: unknown hessian option '" + options.hessian + "'";
       return out;

@@ -10,16 +10,20 @@
 
 namespace dc {
 
+TangentialProblem make_tangential_problem(const Case& c) {
+  if (!c.friction) throw InputError("friction", "required for a tangential problem");
+  OperatorKind kind = OperatorKind::automatic;
+  if (c.solver.operator_kind == "dense") kind = OperatorKind::dense;
+  if (c.solver.operator_kind == "fft") kind = OperatorKind::fft;
+  return TangentialProblem(c.grid, c.materials, profile_heights(c.profile, c.grid), FrictionLaw::from_spec(*c.friction),
+                           kind);
+}
+
 std::vector<TangentialSolution> solve_tangential_case(const Case& c, const ProgressCallback& progress) {
   if (!c.tangential) throw InputError("tangential", "required for a tangential problem (an object)");
   if (!c.friction) throw InputError("friction", "required for a tangential problem");
   const TangentialSpec& t = *c.tangential;
-
-  OperatorKind kind = OperatorKind::automatic;
-  if (c.solver.operator_kind == "dense") kind = OperatorKind::dense;
-  if (c.solver.operator_kind == "fft") kind = OperatorKind::fft;
-  TangentialProblem problem(c.grid, c.materials, profile_heights(c.profile, c.grid),
-                            FrictionLaw::from_spec(*c.friction), kind);
+  TangentialProblem problem = make_tangential_problem(c);
   std::vector<TangentialSolution> out;
   // Each step's report times the whole step (every marching step, Newton and outer-loop
   // iteration, fallback), not only its last inner solve.

@@ -559,7 +559,8 @@ struct TangentialProblem::Impl {
     SolveOptions options = solve_options(solver, progress);
     options.max_iter = std::min(solver.max_iter, 200);
     TangentialSolution sol;
-    std::vector<double> tau(n, 0.0), f, w_up, w_here;
+    std::vector<double> tau = load.warm_start.size() == n ? load.warm_start : std::vector<double>(n, 0.0);
+    std::vector<double> f, w_up, w_here;
     SteadyRollingOutcome outcome;
     int newton = 0, applies = 0;
     const auto start = std::chrono::steady_clock::now();

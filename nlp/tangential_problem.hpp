@@ -137,6 +137,10 @@ class TangentialProblem {
   Grid grid_;
 };
 
+/// The tangential problem of a case (grid, materials, profile, friction, solver.operator), set up
+/// and in its unloaded state. Throws InputError("friction") when the case has no friction.
+TangentialProblem make_tangential_problem(const Case& c);
+
 /// The whole tangential case (CASES.md "tangential"): one solution, or one per history step.
 /// An interrupt (core/interrupt.hpp) during a history returns the steps finished before it;
 /// with none finished, Interrupted propagates.
