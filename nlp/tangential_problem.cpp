@@ -445,7 +445,7 @@ struct TangentialProblem::Impl {
     std::vector<double> p_old, tau_old, wz, tau_in = tau;
     f.assign(N, 0.0);
     const bool stall = injected_fault("outer") != Fault::none;  // test-only: a loop that never settles
-    const int max_outer = stall ? 3 : coupled ? 100 : 1;
+    const int max_outer = coupled ? (stall ? 3 : 100) : 1;
     const double outer_tol = std::max(1e-9, 10.0 * solver.tol);
     const double c0 = C->diagonal(0);
     AndersonMixing mixer;

@@ -169,11 +169,10 @@ TEST_F(Cli, OverridesOnTheCommandLine) {
 
 TEST_F(Cli, UnimplementedProblemKindsAreReported) {
   const Result r = run("solve " + case_file([](json& d) {
-                      d["problem"] = "dynamic";
-                      d["time"] = {{"dt", 1e-4}, {"t_end", 1e-3}};
+                      d["problem"] = "finite";
                     }));
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("error: problem: 'dynamic' is not implemented yet"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("error: problem: 'finite' is not implemented yet"), std::string::npos) << r.err;
 }
 
 TEST_F(Cli, SolveHertzSphereWritesTheContractFiles) {
