@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "interrupt.hpp"
 #include "normal_run.hpp"
 #include "progress.hpp"
 #include "summary_writer.hpp"
@@ -87,6 +88,7 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   s["spin"] = rolling ? nlohmann::json(a[2]) : nlohmann::json();
   s["rigid_shift"] = rolling ? nlohmann::json() : pair(a[0], a[1]);
   s["rotation"] = rolling ? nlohmann::json() : nlohmann::json(a[2]);
+  if (sol.shift_undetermined) s["rigid_shift_undetermined"] = true;  // mu = 0: any shift, zero traction
   if (regime == "rolling") s["velocity"] = c.tangential->rolling.velocity;
   if (regime == "rolling" && has_history(c)) s["distance"] = sol.distance;  // rolled in this step (m)
   int n_stick = 0, n_slip = 0;
@@ -103,6 +105,7 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   s["friction_capacity"] = capacity * c.grid.area();  // sum f(p) A: the largest tangential force
   s["outer_iterations"] = sol.outer.iterations;
   s["outer_last_change"] = sol.outer.last_change;
+  s["outer_coupling_residual"] = sol.outer.coupling_residual;
   s["outer_converged"] = sol.outer.converged;
   s["marching_steps"] = regime == "rolling" ? nlohmann::json(sol.marching_steps) : nlohmann::json();
   s["newton_iterations"] = regime == "rolling" ? nlohmann::json(sol.newton_iterations) : nlohmann::json();
@@ -118,10 +121,11 @@ TangentialRun run_tangential(const Case& c, bool progress) {
   }
   run.normal = c.tangential->step_normals();
   run.normal.resize(run.steps.size(), c.normal);
+  run.interrupted = interrupt_requested();
   nlohmann::json steps = nlohmann::json::array();
   double rolled = 0.0;
+  Case step_case = c;  // one copy, its load set per step (a copy per step is slow for long histories)
   for (std::size_t k = 0; k < run.steps.size(); ++k) {
-    Case step_case = c;
     step_case.normal = run.normal[k];
     run.fields.push_back(tangential_fields(run.steps[k], contact_threshold(c)));
     run.summary = tangential_summary(step_case, run.steps[k], run.fields.back());
@@ -153,6 +157,7 @@ StaticRun run_static(const Case& c, bool progress) {
     out.report.time_s = run.total_time_s();
     out.converged = run.converged();
     out.history = has_history(c);
+    out.interrupted = run.interrupted;
     return out;
   }
   NormalRun run = run_normal(c, progress);
@@ -161,6 +166,7 @@ StaticRun run_static(const Case& c, bool progress) {
   out.normal = c.normal;
   out.report = run.solution.report;
   out.converged = run.converged();
+  out.interrupted = interrupt_requested();
   return out;
 }
 

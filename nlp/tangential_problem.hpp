@@ -36,6 +36,9 @@ namespace dc {
 struct OuterLoopReport {
   int iterations = 0;      ///< outer (p, tau) iterations
   double last_change = 0;  ///< relative change of (p, tau) in the last iteration
+  /// kappa != 0: max |kappa B32 (tau - tau_in)| / (C_00 max p), the gap error the last
+  /// tangential update leaves in the normal problem (the loop stops below certificate_tol / 100)
+  double coupling_residual = 0;
   bool converged = true;
 };
 
@@ -56,6 +59,7 @@ struct TangentialSolution {
   int newton_iterations = 0;         ///< steady rolling by Newton: its iterations (all outer passes)
   bool rolling = false;              ///< amplitudes are creepages / spin (steady or transient rolling), not shifts
   double distance = 0.0;             ///< roll(): distance rolled, marching_steps * dx (m)
+  bool shift_undetermined = false;   ///< no friction (mu = 0): the resultant-controlled rigid modes have no unique value
 };
 
 /// The loading history of a TangentialProblem (the state its next step starts from): saved
@@ -93,6 +97,9 @@ class TangentialProblem {
                           const ProgressCallback& progress = {});
   /// Forget the loading history (back to the unloaded state).
   void reset();
+  /// Keep the loading history but forget the starting points the next step would reuse (the
+  /// last traction and pressure): the next step starts cold. For comparisons and tests.
+  void forget_starting_points();
 
   /// One step of a moving contact ((3.8), dynamic problems): the rigid-slip increments of the
   /// step given (x, y (m), rotation about z (rad)), the previous relative displacement taken
@@ -112,11 +119,17 @@ class TangentialProblem {
   const LinearOperator& convective_compliance();
 
   const Grid& grid() const { return grid_; }
-  /// Certificate of a traction field for given slip increments and bounds (for tests).
+  /// Certificate of a traction field for given slip increments and bounds (every solve, tests):
+  /// friction law (2.4)-(2.5) as the fixed point tau = proj(tau - ds / c_t), relative to the
+  /// traction level T = traction_scale(); gap function (4.24) relative to sum f A times the slip
+  /// level max(max |ds|, c_t T). `compliance` c_t: slip per unit traction of one element (m/Pa).
   static Certificate certify_friction(const Grid& grid, const std::vector<double>& tx,
                                       const std::vector<double>& ty, const std::vector<double>& sx,
                                       const std::vector<double>& sy, const std::vector<double>& bound,
-                                      double slip_scale);
+                                      double compliance);
+  /// The traction level of a solution: max |tau| over the elements where friction acts.
+  static double traction_scale(const std::vector<double>& tx, const std::vector<double>& ty,
+                               const std::vector<double>& bound);
 
  private:
   struct Impl;
@@ -124,7 +137,13 @@ class TangentialProblem {
   Grid grid_;
 };
 
+/// The tangential problem of a case (grid, materials, profile, friction, solver.operator), set up
+/// and in its unloaded state. Throws InputError("friction") when the case has no friction.
+TangentialProblem make_tangential_problem(const Case& c);
+
 /// The whole tangential case (CASES.md "tangential"): one solution, or one per history step.
+/// An interrupt (core/interrupt.hpp) during a history returns the steps finished before it;
+/// with none finished, Interrupted propagates.
 std::vector<TangentialSolution> solve_tangential_case(const Case& c, const ProgressCallback& progress = {});
 
 /// The native tangential solver (cone-projected accelerated gradient on the FFT operator):

@@ -7,6 +7,11 @@
 #   scripts/bench.sh dynamic    1000 steps of problem "dynamic": a sphere rolling on a 32^2 grid
 #                               (transient contact) and the 2-D cylinder on 200 strips (steady):
 #                               ms per step, contact solves and Newton iterations per step
+#   scripts/bench.sh peer [--repeat 3] [case.json...]
+#                               the cases of examples/bench/ (Hertz 512^2 and 1024^2, the wheel/rail
+#                               table at 23k/93k/372k elements, Spence 35 and 69 steps) timed whole by
+#                               dyncontact_peer_bench: time (median of the runs), iterations,
+#                               alternations, error against the closed form (docs/solvers.md)
 # --sizes/--backends override the defaults; other arguments go to dyncontact_bench (e.g. --repeat 3, --force, --csv out/bench.csv).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -18,6 +23,24 @@ rolling_sizes="32,64,128,256"
 backends="native,ipopt,nlopt"
 args=()
 mode=static
+if [[ "${1:-}" == "peer" ]]; then
+  shift
+  scripts/setup.sh
+  peer="$BUILD_DIR/bin/dyncontact_peer_bench"
+  [[ -x "$peer" ]] || { echo "bench: $peer missing (configured with -DDYNCONTACT_BUILD_BENCH=OFF?)" >&2; exit 1; }
+  cases=() opts=()
+  for a in "$@"; do
+    if [[ "$a" == *.json ]]; then cases+=("$a"); else opts+=("$a"); fi
+  done
+  [[ -f examples/bench/wheel-rail-profile.csv ]] || scripts/make_wheel_rail.sh >/dev/null
+  if [[ ${#cases[@]} -eq 0 ]]; then
+    cases=(examples/bench/hertz-512.json examples/bench/hertz-1024.json examples/bench/wheel-rail-23k.json
+           examples/bench/wheel-rail-93k.json examples/bench/wheel-rail-372k.json examples/bench/spence-35.json
+           examples/bench/spence-69.json)
+  fi
+  echo "== peer cases (threads: ${DYNCONTACT_THREADS:-all cores})"
+  exec "$peer" "${opts[@]}" "${cases[@]}"
+fi
 while [[ $# -gt 0 ]]; do
   case "$1" in
     dynamic) mode=dynamic ;;

@@ -1,0 +1,84 @@
+// The pruned zero-padded transform (core/padded_fft) gives linear convolutions equal to the
+// direct sum, in 2-D and 1-D, for box sizes with and without padding.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "fft_planning.hpp"
+#include "padded_fft.hpp"
+
+namespace dc {
+namespace {
+
+/// y = K * x (linear convolution), K given on offsets |di| < nx, |dj| < ny.
+void check_convolution(int nx, int ny, int mx, int my) {
+  std::mt19937 rng(7 + nx * 31 + ny);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int kx = 2 * nx - 1, ky = 2 * ny - 1;
+  std::vector<double> kernel(static_cast<std::size_t>(kx) * ky), x(static_cast<std::size_t>(nx) * ny);
+  for (double& v : kernel) v = u(rng);
+  for (double& v : x) v = u(rng);
+  auto K = [&](int di, int dj) { return kernel[(di + nx - 1) + static_cast<std::size_t>(kx) * (dj + ny - 1)]; };
+
+  PaddedFft fft(nx, ny, mx, my);
+  std::vector<double> box(static_cast<std::size_t>(mx) * my, 0.0), spectrum;
+  for (int dj = -(ny - 1); dj <= ny - 1; ++dj)
+    for (int di = -(nx - 1); di <= nx - 1; ++di)
+      box[(di < 0 ? di + mx : di) + static_cast<std::size_t>(mx) * (dj < 0 ? dj + my : dj)] = K(di, dj);
+  fft.periodic_forward(box, spectrum);
+  fft.forward(x.data());
+  double* s = fft.spectrum();
+  for (std::size_t k = 0; k < fft.spectrum_size(); ++k) {
+    const double re = s[2 * k], im = s[2 * k + 1];
+    s[2 * k] = spectrum[2 * k] * re - spectrum[2 * k + 1] * im;
+    s[2 * k + 1] = spectrum[2 * k] * im + spectrum[2 * k + 1] * re;
+  }
+  std::vector<double> y(x.size());
+  fft.inverse(y.data());
+  const double norm = static_cast<double>(mx) * my;
+  double worst = 0.0, scale = 0.0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      double direct = 0.0;
+      for (int jj = 0; jj < ny; ++jj)
+        for (int ii = 0; ii < nx; ++ii) direct += K(i - ii, j - jj) * x[ii + static_cast<std::size_t>(nx) * jj];
+      worst = std::max(worst, std::abs(y[i + static_cast<std::size_t>(nx) * j] / norm - direct));
+      scale = std::max(scale, std::abs(direct));
+    }
+  EXPECT_LT(worst, 1e-12 * scale) << nx << "x" << ny << " in " << mx << "x" << my;
+}
+
+TEST(PaddedFft, LinearConvolutionEqualsTheDirectSum) {
+  check_convolution(8, 8, fft_good_size(15), fft_good_size(15));
+  check_convolution(7, 5, fft_good_size(13), fft_good_size(9));  // odd sizes, x and y differ
+  check_convolution(11, 1, fft_good_size(21), 1);                 // one-dimensional (2-D problems)
+  check_convolution(6, 9, 12, 18);                                 // even padded box, y longer
+}
+
+TEST(PaddedFft, TransformsTwiceGiveTheSameResult) {
+  // No state leaks between calls (the padding stays zero, the spectrum is rebuilt).
+  PaddedFft fft(5, 4, 9, 8);
+  std::vector<double> x(20), a(20), b(20);
+  for (int i = 0; i < 20; ++i) x[i] = std::sin(1.0 + i);
+  fft.forward(x.data());
+  fft.inverse(a.data());
+  fft.forward(x.data());
+  fft.inverse(b.data());
+  for (int i = 0; i < 20; ++i) {
+    EXPECT_NEAR(a[i] / 72.0, x[i], 1e-13);
+    EXPECT_EQ(a[i], b[i]);
+  }
+}
+
+TEST(FftPlanning, GoodSizesHaveOnlySmallPrimeFactors) {
+  EXPECT_EQ(fft_good_size(1), 1);
+  EXPECT_EQ(fft_good_size(11), 12);
+  EXPECT_EQ(fft_good_size(1023), 1024);
+  EXPECT_EQ(fft_good_size(97), 98);
+  EXPECT_GE(fft_threads(), 1);
+}
+
+}  // namespace
+}  // namespace dc
