@@ -27,6 +27,7 @@ const std::vector<BundledExample>& bundled_examples() {
         {"bowling-ball", "a bowling ball launched sliding at 3 m/s: rolls after 2v0/(7 mu g) at 5/7 v0 (3-D, dynamic)"},
         {"paper-fig5", "the paper's Fig. 5: the Section 5 cylinder for three initial moments M0_bar"},
         {"paper-fig6", "the paper's Fig. 6: the Section 5 cylinder for a ring, a solid cylinder and eta = inf"},
+        {"wheel-drive", "a 3-D wheel under a growing driving moment: rolls, then slides at F = mu P (Section 5 in 3-D)"},
         {"cylinder-dynamic-2d", "the paper's Section 5 cylinder through the general dynamic solver, until it slides (2-D)"},
         {"ball-impact", "a steel ball dropped at 1 m/s on steel: Hertz impact, 69 us, 1.74 kN, rebound (3-D, dynamic)"},
     };

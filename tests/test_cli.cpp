@@ -167,12 +167,21 @@ TEST_F(Cli, OverridesOnTheCommandLine) {
   EXPECT_NE(r.err.find("error: solver.backend:"), std::string::npos) << r.err;
 }
 
-TEST_F(Cli, UnimplementedProblemKindsAreReported) {
-  const Result r = run("solve " + case_file([](json& d) {
-                      d["problem"] = "finite";
-                    }));
+TEST_F(Cli, StaticCaseTurnedDynamicNamesWhatItLacks) {
+  // A dynamic case needs a body and takes no normal block (the body's motion loads the contact).
+  Result r = run("solve " + case_file([](json& d) {
+                   d["problem"] = "dynamic";
+                   d["time"] = {{"dt", 1e-4}, {"t_end", 1e-3}};
+                 }));
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("error: problem: 'finite' is not implemented yet"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("error: body: missing required key"), std::string::npos) << r.err;
+  r = run("solve " + case_file([](json& d) {
+        d["problem"] = "dynamic";
+        d["time"] = {{"dt", 1e-4}, {"t_end", 1e-3}};
+        d["body"] = {{"mass", 0.03}, {"inertia", 1e-6}};
+      }));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("error: normal: not used by problem 'dynamic'"), std::string::npos) << r.err;
 }
 
 TEST_F(Cli, SolveHertzSphereWritesTheContractFiles) {
