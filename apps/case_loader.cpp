@@ -49,9 +49,13 @@ bool numbered(const std::string& name, const std::string& stem, const std::strin
 bool is_result_file(const std::string& name) {
   static const std::set<std::string> fixed = {
       "summary.json", "compare.json", "fields.csv", "timeseries.csv", "plots.gp", "plots.log",
-      "line_x.dat", "line_y.dat", "map.dat", "reference_x.dat", "reference_y.dat"};
+      "line_x.dat", "line_y.dat", "map.dat", "reference_x.dat", "reference_y.dat",
+      "table.csv", "table.json", "table_Fx.dat", "table_Fy.dat"};
   static const char* figures[] = {"pressure_x", "pressure_y", "traction_x", "traction_y", "pressure_map",
-                                  "contact_map", "F_bar", "l_bar", "v_bar"};
+                                  "contact_map", "F_bar", "l_bar", "v_bar",
+                                  // dynamic
+                                  "position", "velocity", "omega", "force", "moment", "creepage", "stick",
+                                  "approach", "contact_area", "energy", "table_Fx", "table_Fy"};
   if (fixed.count(name)) return true;
   for (const char* f : figures)
     for (const char* ext : {".svg", ".png"})

@@ -12,5 +12,6 @@ void add_solve_command(CLI::App& app, int& exit_code);
 void add_compare_command(CLI::App& app, int& exit_code);
 void add_validate_command(CLI::App& app, int& exit_code);
 void add_example_command(CLI::App& app, int& exit_code);
+void add_table_command(CLI::App& app, int& exit_code);
 
 }  // namespace dc::cli

@@ -18,6 +18,7 @@
 #include "solver_report.hpp"
 #include "summary_writer.hpp"
 #include "tangential_run.hpp"
+#include "interrupt.hpp"
 
 namespace dc::cli {
 namespace {
@@ -95,6 +96,7 @@ int run_compare(const CompareArgs& args) {
     e.backend = b;
     try {
       e.run = run_static(c, !args.quiet);
+      throw_if_interrupted();  // a part of a history is no comparison: main() says "interrupted"
       e.ok = true;
     } catch (const InputError&) {
       throw;

@@ -9,6 +9,7 @@
 
 #include "cli_common.hpp"
 #include "dynamic_simulation.hpp"
+#include "fields_writer.hpp"
 #include "gnuplot_figures.hpp"
 #include "progress.hpp"
 #include "summary_writer.hpp"
@@ -36,6 +37,16 @@ void append_row(std::ostringstream& out, const dynamics::DynamicSample& s) {
                 cs.stick_fraction, cs.in_contact ? cs.approach : 0.0, cs.contact_area, cs.n_contact, cs.n_stick,
                 cs.n_slip, s.kinetic_energy, cs.certificate, s.newton_iterations);
   out << line;
+}
+
+/// The contact fields of a step (fields.csv's columns); zero without contact.
+StaticFields step_fields(const Case& c, const dynamics::ContactState& cs) {
+  if (cs.fields) {
+    const TangentialSolution& t = *cs.fields;
+    return {t.normal.pressure, t.tx, t.ty, t.sx, t.sy, t.bound, t.state, 0.0};
+  }
+  if (cs.pressure) return normal_fields(*cs.pressure, 1e-9);
+  return normal_fields(std::vector<double>(c.grid.size(), 0.0), 1e-9);
 }
 
 json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
@@ -82,8 +93,15 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   const double t_end = c.dynamic->t_end;
   Progress progress("dynamic", !quiet);
   const ProgressCallback report = progress.callback();
+  json snapshots = json::array();
+  const int every = c.output.snapshot_every;
   const dynamics::DynamicResult r = sim.run([&](const dynamics::DynamicSample& s) {
     append_row(series, s);
+    if (every > 0 && s.step % every == 0) {
+      const std::string name = "fields_" + std::to_string(s.step) + ".csv";
+      write_fields(dir, c.grid, step_fields(c, s.contact_state), name);
+      snapshots.push_back({{"step", s.step}, {"time", s.state.time}, {"file", name}});
+    }
     if (report) report({s.step, s.state.time, s.contact_state.certificate});
     (void)t_end;
   });
@@ -113,6 +131,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
                        {"certificate", {{"worst", r.worst_certificate}, {"last", r.last_certificate}}}};
   summary["balances"] = {{"momentum", r.momentum_imbalance}, {"energy", r.energy_imbalance}};
   json files = {{"summary", "summary.json"}, {"timeseries", "timeseries.csv"}};
+  if (!snapshots.empty()) files["snapshots"] = snapshots;
   if (c.output.plots) {
     json plots = json::array();
     for (const auto& img : render_gnuplot(dir, c.name, figures(c))) plots.push_back(fs::path(img).filename().string());

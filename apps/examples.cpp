@@ -25,6 +25,9 @@ const std::vector<BundledExample>& bundled_examples() {
         {"paper-cylinder", "the paper's Section 5: cylinder under a growing driving moment, sweep of its rate (Figs 4-6)"},
         {"paper-cylinder-si", "the paper's Section 5 cylinder in SI units: steel, R = 0.5 m, 10 m/s, until it slides"},
         {"bowling-ball", "a bowling ball launched sliding at 3 m/s: rolls after 2v0/(7 mu g) at 5/7 v0 (3-D, dynamic)"},
+        {"paper-fig5", "the paper's Fig. 5: the Section 5 cylinder for three initial moments M0_bar"},
+        {"paper-fig6", "the paper's Fig. 6: the Section 5 cylinder for a ring, a solid cylinder and eta = inf"},
+        {"cylinder-dynamic-2d", "the paper's Section 5 cylinder through the general dynamic solver, until it slides (2-D)"},
         {"ball-impact", "a steel ball dropped at 1 m/s on steel: Hertz impact, 69 us, 1.74 kN, rebound (3-D, dynamic)"},
     };
     for (auto& e : list) {

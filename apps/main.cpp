@@ -1,6 +1,6 @@
 // dyncontact: the command line. Subcommand wiring and error handling only; each subcommand
 // lives in its own file (solve_command.cpp, compare_command.cpp, validate_command.cpp,
-// example_command.cpp).
+// example_command.cpp, table_command.cpp).
 #include <exception>
 #include <iostream>
 #include <string>
@@ -10,6 +10,8 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
+#include "interrupt.hpp"
+#include "interrupt_handler.hpp"
 
 #ifndef DYNCONTACT_VERSION
 #define DYNCONTACT_VERSION "unknown"
@@ -18,6 +20,7 @@
 int main(int argc, char** argv) {
   using namespace dc::cli;
   int exit_code = kExitOk;
+  install_interrupt_handlers();
   try {
     CLI::App app{
         "dyncontact: frictional contact between an elastic body and an elastic half-space "
@@ -32,6 +35,7 @@ int main(int argc, char** argv) {
     add_compare_command(app, exit_code);
     add_validate_command(app, exit_code);
     add_example_command(app, exit_code);
+    add_table_command(app, exit_code);
     // A first argument that is neither an option nor a subcommand: say so (CLI11 would only
     // say that a subcommand is required).
     auto is_subcommand = [&app](const std::string& name) {
@@ -43,7 +47,7 @@ int main(int argc, char** argv) {
     };
     if (argc > 1 && argv[1][0] != '-' && !is_subcommand(argv[1])) {
       std::cerr << "error: unknown subcommand '" << argv[1]
-                << "' (expected solve, compare, validate or example; see dyncontact --help)\n";
+                << "' (expected solve, compare, validate, example or table; see dyncontact --help)\n";
       return kExitBadInput;
     }
     try {
@@ -53,10 +57,18 @@ int main(int argc, char** argv) {
       return code == 0 ? kExitOk : kExitBadInput;
     }
     return exit_code;
+  } catch (const dc::Interrupted&) {  // a subcommand that had nothing finished to write
+    std::cout.flush();
+    std::cerr << "interrupted\n";
+    return interrupted_exit_code();
   } catch (const dc::InputError& e) {
     std::cout.flush();
     std::cerr << "error: " << e.what() << '\n';
     return kExitBadInput;
+  } catch (const dc::SolverFailure& e) {
+    std::cout.flush();
+    std::cerr << "error: solver: " << e.what() << '\n';
+    return kExitUnconverged;
   } catch (const std::exception& e) {
     std::cout.flush();
     std::cerr << "error: internal: " << e.what() << '\n';

@@ -13,6 +13,8 @@
 #include "errors.hpp"
 #include "gnuplot_figures.hpp"
 #include "hertz.hpp"
+#include "interrupt.hpp"
+#include "interrupt_handler.hpp"
 #include "paper_cylinder.hpp"
 #include "profile.hpp"
 #include "summary_writer.hpp"
@@ -239,13 +241,20 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
                   {"scheme", first.time.scheme == pc::Scheme::bdf2 ? "bdf2" : "bdf1"}};
   json runs = json::array();
   std::vector<std::string> files, labels;
-  bool all_ok = true;
-  for (std::size_t k = 0; k < specs.size(); ++k) {
+  bool all_ok = true, interrupted = false;
+  for (std::size_t k = 0; k < specs.size() && !interrupted; ++k) {
     const Case& run_case = specs[k].run;
     const Setup setup = setup_of(run_case);
     const pc::Parameters& p = setup.p;
-    const pc::TractionLaw law = model == "numerical" ? numerical_law(run_case) : pc::TractionLaw{};
+    pc::TractionLaw law;
+    try {
+      if (model == "numerical") law = numerical_law(run_case);
+    } catch (const Interrupted&) {  // before this run's first step: the runs finished so far
+      interrupted = true;
+      break;
+    }
     const pc::Run run = pc::simulate(p, setup.time.dt, setup.time.scheme, law);
+    interrupted = run.interrupted;
     const std::string file = specs.size() == 1 ? "timeseries.csv" : "timeseries_" + std::to_string(k) + ".csv";
     write_timeseries((fs::path(dir) / file).string(), run, p, setup.units, law);
     double onset = -1.0;
@@ -255,7 +264,8 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
         break;
       }
     const pc::Sample q = pc::quasi_static(p, run.samples.back().t_bar);
-    json r = {{"label", specs[k].label}, {"value", specs[k].value}, {"status", run.ok ? "completed" : "stopped"},
+    const char* status = run.ok ? "completed" : run.interrupted ? "interrupted" : "stopped";
+    json r = {{"label", specs[k].label}, {"value", specs[k].value}, {"status", status},
               {"message", run.message}, {"steps", static_cast<int>(run.samples.size()) - 1},
               {"final", final_of(run, p, setup.units)}, {"timeseries", file}, {"dt_bar", setup.time.dt},
               {"dimensionless", {{"gamma_bar", p.gamma_bar}, {"M0_bar", p.M0_bar},
@@ -278,15 +288,17 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
                   run.ok ? "" : (" [stopped: " + run.message + "]").c_str());
     }
   }
-  summary["steps"] = runs[0]["steps"];
-  summary["final"] = runs[0]["final"];
-  summary["timeseries"] = files[0];
-  summary["status"] = all_ok ? "completed" : "stopped";
+  if (!runs.empty()) {
+    summary["steps"] = runs[0]["steps"];
+    summary["final"] = runs[0]["final"];
+    summary["timeseries"] = files[0];
+  }
+  summary["status"] = interrupted ? "interrupted" : all_ok ? "completed" : "stopped";
   if (specs.size() > 1 || !specs[0].label.empty()) summary["runs"] = runs;
-  else summary["run"] = runs[0];
+  else if (!runs.empty()) summary["run"] = runs[0];
   json out_files = {{"summary", "summary.json"}, {"timeseries", files}};
 
-  if (c.output.plots) {
+  if (c.output.plots && !interrupted) {  // an interrupted run writes its data, not figures
     std::vector<GnuplotFigure> figures;
     const char* names[][3] = {{"F_bar", "20", "friction force |F|/({/Symbol m}P)"},
                               {"l_bar", "21", "adhesion half-length 1 - d/l"},
@@ -309,6 +321,11 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
   summary["files"] = out_files;
   const std::string path = write_summary(dir, summary);
   if (!quiet) std::printf("wrote %s\n", path.c_str());
+  if (interrupted) {
+    std::cerr << "interrupted after " << runs.size() << " of " << specs.size() << " run(s) (the last may be partial); see "
+              << path << '\n';
+    return interrupted_exit_code();
+  }
   if (!all_ok) {
     std::cerr << "error: a run stopped early (see " << path << ")\n";
     return kExitUnconverged;

@@ -5,6 +5,7 @@
 // time is shown even when a backend reports nothing.
 #include <chrono>
 #include <condition_variable>
+#include <cstddef>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -22,6 +23,9 @@ class Progress {
 
   /// The callback to hand to the solver (valid while this object lives).
   ProgressCallback callback();
+  /// Runs of many points (table, sweep): `done` of `total` finished; the line then shows the
+  /// count and the time left (estimated from the time per finished point).
+  void count(std::size_t done, std::size_t total);
   /// Stops the reporter; prints the final time if a progress line was shown.
   void finish();
 
@@ -39,6 +43,7 @@ class Progress {
   bool shown_ = false;
   bool have_info_ = false;
   ProgressInfo info_;
+  std::size_t done_ = 0, total_ = 0;
   std::thread thread_;
 };
 

@@ -13,6 +13,8 @@
 #include "commands.hpp"
 #include "dynamic_run.hpp"
 #include "fields_writer.hpp"
+#include "interrupt.hpp"
+#include "interrupt_handler.hpp"
 #include "plot_writer.hpp"
 #include "result_limits.hpp"
 #include "summary_writer.hpp"
@@ -79,8 +81,19 @@ int run_solve(const SolveArgs& args) {
   if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential) not_implemented(c.problem);
   const std::string dir = prepare_output_dir(c, args.out);
 
-  StaticRun run = run_static(c, !args.quiet);
+  StaticRun run;
+  try {
+    run = run_static(c, !args.quiet);
+  } catch (const Interrupted&) {  // nothing finished: a summary that says so
+    nlohmann::json header = summary_header(c);
+    header["status"] = "interrupted";
+    header["files"] = {{"summary", "summary.json"}};
+    const std::string path = write_summary(dir, header);
+    std::cerr << "interrupted before a result was finished; wrote " << path << '\n';
+    return interrupted_exit_code();
+  }
   nlohmann::json& s = run.summary;
+  if (run.interrupted) s["status"] = "interrupted";
   nlohmann::json files = {{"summary", "summary.json"}};
   if (c.output.fields) {
     if (run.history) {  // one file per step; fields.csv is the last
@@ -96,7 +109,7 @@ int run_solve(const SolveArgs& args) {
     write_fields(dir, c.grid, run.fields.back());
     files["fields"] = "fields.csv";
   }
-  if (c.output.plots) {
+  if (c.output.plots && !run.interrupted) {  // an interrupted run writes its data, not figures
     Case plotted = c;
     plotted.normal = run.normal;  // the closed-form curve of the last step's load
     nlohmann::json plots = nlohmann::json::array();
@@ -122,8 +135,14 @@ int run_solve(const SolveArgs& args) {
     print_line("max pressure", s["max_pressure"].get<double>(), "Pa", ref, "max_pressure");
     std::printf("  %-16s %d of %zu elements\n", "in contact", s["n_contact"].get<int>(), c.grid.size());
     if (c.problem == ProblemKind::tangential) print_tangential(c, s);
+    if (r.backend == "none") std::printf("note: %s\n", r.message.c_str());
     std::printf("wrote %s\n", summary_path.c_str());
     std::fflush(stdout);
+  }
+  if (run.interrupted) {
+    std::cerr << "interrupted after " << run.fields.size() << " finished step(s); results written to " << dir
+              << '\n';
+    return interrupted_exit_code();
   }
   if (report_limits(limits, dir)) return kExitBadInput;
   if (!run.converged) {

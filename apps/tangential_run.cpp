@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "interrupt.hpp"
 #include "normal_run.hpp"
 #include "progress.hpp"
 #include "summary_writer.hpp"
@@ -87,6 +88,7 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   s["spin"] = rolling ? nlohmann::json(a[2]) : nlohmann::json();
   s["rigid_shift"] = rolling ? nlohmann::json() : pair(a[0], a[1]);
   s["rotation"] = rolling ? nlohmann::json() : nlohmann::json(a[2]);
+  if (sol.shift_undetermined) s["rigid_shift_undetermined"] = true;  // mu = 0: any shift, zero traction
   if (regime == "rolling") s["velocity"] = c.tangential->rolling.velocity;
   if (regime == "rolling" && has_history(c)) s["distance"] = sol.distance;  // rolled in this step (m)
   int n_stick = 0, n_slip = 0;
@@ -119,10 +121,11 @@ TangentialRun run_tangential(const Case& c, bool progress) {
   }
   run.normal = c.tangential->step_normals();
   run.normal.resize(run.steps.size(), c.normal);
+  run.interrupted = interrupt_requested();
   nlohmann::json steps = nlohmann::json::array();
   double rolled = 0.0;
+  Case step_case = c;  // one copy, its load set per step (a copy per step is slow for long histories)
   for (std::size_t k = 0; k < run.steps.size(); ++k) {
-    Case step_case = c;
     step_case.normal = run.normal[k];
     run.fields.push_back(tangential_fields(run.steps[k], contact_threshold(c)));
     run.summary = tangential_summary(step_case, run.steps[k], run.fields.back());
@@ -154,6 +157,7 @@ StaticRun run_static(const Case& c, bool progress) {
     out.report.time_s = run.total_time_s();
     out.converged = run.converged();
     out.history = has_history(c);
+    out.interrupted = run.interrupted;
     return out;
   }
   NormalRun run = run_normal(c, progress);
@@ -162,6 +166,7 @@ StaticRun run_static(const Case& c, bool progress) {
   out.normal = c.normal;
   out.report = run.solution.report;
   out.converged = run.converged();
+  out.interrupted = interrupt_requested();
   return out;
 }
 

@@ -17,6 +17,7 @@ struct TangentialRun {
   std::vector<TangentialSolution> steps;  ///< one, or one per history step
   std::vector<StaticFields> fields;       ///< per step
   std::vector<NormalSpec> normal;         ///< the normal load of each step
+  bool interrupted = false;               ///< an interrupt came: `steps` are those finished
   nlohmann::json summary;                 ///< summary.json content (without "files"): the last
                                           ///< step's keys, plus "steps" with a history
   bool converged() const;                 ///< every step converged
@@ -50,6 +51,7 @@ struct StaticRun {
   SolverReport report;               ///< see TangentialRun::report()
   bool converged = false;
   bool history = false;              ///< a loading history: summary "steps", fields_<k>.csv
+  bool interrupted = false;          ///< an interrupt came during a history: the steps finished
 };
 
 /// Runs a normal or tangential case (run_normal / run_tangential).

@@ -1,6 +1,7 @@
 #pragma once
 // The case model's readers of the common blocks, one file each (core/case_<block>.cpp), used by
 // build_case (case_model.cpp). Each reads through JsonBlock and throws InputError naming the key.
+#include <istream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -12,6 +13,11 @@ namespace dc {
 
 /// "profile": the body's shape; a table profile's CSV read relative to `base_dir`.
 ProfileSpec read_profile(const nlohmann::json& j, int dimension, const std::string& base_dir);
+
+/// The CSV of a table profile (a header naming the columns x, y (optional) and h, then rows;
+/// blank lines and lines starting with # skipped) into p.table_x/y/h, heights shifted to a
+/// minimum of 0. Throws InputError naming `file_key` and the line.
+void read_profile_table(std::istream& in, ProfileSpec& p, const std::string& file_key);
 
 /// "grid": nx, ny, bounds or `extent` (the Hertz contact of `c`'s profile, materials and
 /// normal load, when `has_normal`).

@@ -15,13 +15,19 @@
 namespace dc {
 namespace {
 
-/// Reads a CSV table with a header naming the columns x, y (optional) and h.
+/// Reads the table file of a table profile (relative to `base_dir`).
 void read_table(ProfileSpec& p, const std::string& file_key, const std::string& base_dir) {
   namespace fs = std::filesystem;
   fs::path path(p.file);
   if (path.is_relative() && !base_dir.empty()) path = fs::path(base_dir) / path;
   std::ifstream in(path);
   if (!in || fs::is_directory(path)) throw InputError(file_key, "cannot open '" + path.string() + "'");
+  read_profile_table(in, p, file_key);
+}
+
+}  // namespace
+
+void read_profile_table(std::istream& in, ProfileSpec& p, const std::string& file_key) {
   auto split = [](const std::string& line) {
     std::vector<std::string> cells;
     std::string cell;
@@ -78,8 +84,6 @@ void read_table(ProfileSpec& p, const std::string& file_key, const std::string& 
   const double h_min = *std::min_element(p.table_h.begin(), p.table_h.end());
   for (double& h : p.table_h) h -= h_min;
 }
-
-}  // namespace
 
 ProfileSpec read_profile(const json& j, int dimension, const std::string& base_dir) {
   JsonBlock o(j, "profile");

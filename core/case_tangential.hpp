@@ -36,6 +36,9 @@ struct RollingLoad {
   /// steady_rolling(): automatic: Newton on the steady equations (backends auto/native), marching
   /// when it gives up or for the convex-program backends; newton / marching: only that method.
   enum class Method { automatic, newton, marching } method = Method::automatic;
+  /// steady_rolling() by Newton: the starting traction (tau_x of every element, then tau_y in
+  /// 3-D), e.g. a neighbouring point's of a creep-force table; empty (or another size): zero.
+  std::vector<double> warm_start;
 };
 
 /// One step of a rolling history: the load, and the distance rolled under it (m, >= 0).

@@ -16,4 +16,11 @@ class InputError : public std::runtime_error {
   std::string key_;
 };
 
+/// A solve that produced nothing to report (every backend failed where the run cannot go on
+/// without a result): exit 3, not an internal error.
+class SolverFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace dc

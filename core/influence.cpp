@@ -1,4 +1,5 @@
 #include "influence.hpp"
+#include "interrupt.hpp"
 
 #include <cmath>
 #include <functional>
@@ -103,10 +104,12 @@ KernelTable influence_table(const Grid& grid, const MaterialPair& materials, Axi
   }
   const auto F = antiderivative_3d(materials, out, in);
   std::vector<double> corner(static_cast<std::size_t>(cx) * static_cast<std::size_t>(cy));
-  for (int l = 0; l < cy; ++l)
+  for (int l = 0; l < cy; ++l) {
+    throw_if_interrupted();  // large grids take seconds here
     for (int k = 0; k < cx; ++k)
       corner[k + static_cast<std::size_t>(cx) * l] =
           F((k - grid.nx + 0.5) * grid.dx, (l - grid.ny + 0.5) * grid.dy);
+  }
   auto at = [&](int k, int l) { return corner[k + static_cast<std::size_t>(cx) * l]; };
   for (int dj = -(grid.ny - 1); dj <= grid.ny - 1; ++dj) {
     const int l = dj + grid.ny;

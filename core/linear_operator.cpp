@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "fft_planning.hpp"
+#include "interrupt.hpp"
 #include "padded_fft.hpp"
 
 namespace dc {
@@ -32,11 +33,13 @@ class ConvolutionBase : public LinearOperator {
     for (int r = 0; r < n_out_; ++r)
       for (int c = 0; c < n_in_; ++c) {
         const KernelTable& t = blocks_[r * n_in_ + c];
-        for (int jo = 0; jo < grid_.ny; ++jo)
+        for (int jo = 0; jo < grid_.ny; ++jo) {
+          throw_if_interrupted();
           for (int io = 0; io < grid_.nx; ++io)
             for (int ji = 0; ji < grid_.ny; ++ji)
               for (int ii = 0; ii < grid_.nx; ++ii)
                 m(r * N + grid_.index(io, jo), c * N + grid_.index(ii, ji)) = t.at(io - ii, jo - ji);
+        }
       }
     return m;
   }
@@ -75,6 +78,7 @@ class FftConvolution final : public ConvolutionBase {
     kernel_spectra_.resize(2 * blocks_.size() * ncplx);
     std::vector<double> box(static_cast<std::size_t>(mx) * my), spectrum;
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
+      throw_if_interrupted();  // a large grid's spectra take seconds
       std::fill(box.begin(), box.end(), 0.0);
       const KernelTable& t = blocks_[b];
       for (int dj = -(grid_.ny - 1); dj <= grid_.ny - 1; ++dj)

@@ -21,8 +21,16 @@ class TangentialSensitivity {
   /// (c_ee the element's own compliance: a barely slipping element is no stiffer than a stuck one).
   /// 2-D: only G(0, 0) is non-zero.
   Eigen::Matrix3d compute(const LinearOperator& Ct, const Grid& grid, const TangentialSolution& s);
+  /// The same for a steady-rolling solution (slip per element of travel ds = D tau + dx xi m,
+  /// D = B22 - S B22 not symmetric: GMRES on the stick set): d R_k / d xi_l per unit creepage / spin.
+  Eigen::Matrix3d compute_steady(const LinearOperator& D, const LinearOperator& Ct, const Grid& grid,
+                                 const TangentialSolution& s);
 
  private:
+  /// Stick-set solve of op_SS x = -m_l: conjugate gradients (symmetric) or GMRES.
+  void solve_stick(const LinearOperator& op, bool symmetric, const Grid& grid, const TangentialSolution& s, int l);
+  Eigen::Matrix3d assemble(const LinearOperator& op, bool symmetric, const LinearOperator& Ct, const Grid& grid,
+                           const TangentialSolution& s);
   std::vector<double> x_, r_, p_, q_, full_, out_;
 };
 

@@ -119,6 +119,7 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
     M += r.cross(f);
   }
   state_.in_contact = state_.n_contact > 0;
+  state_.pressure = pressure;
   state_.contact_area = state_.n_contact * A;
   state_.stick_fraction = state_.n_contact > 0 ? static_cast<double>(state_.n_stick) / state_.n_contact : 0.0;
   state_.creepage = V.x() != 0.0 ? increment[0] / (std::abs(V.x()) * dt_) : 0.0;
@@ -135,10 +136,6 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
 WrenchJacobian ContactWrench::jacobian() {
   WrenchJacobian J;
   if (!state_.in_contact) return J;
-  if (steady_ && tangential_) {
-    J.valid = false;  // the steady solution's sensitivity: finite differences
-    return J;
-  }
   const double h = lever_;
   const Eigen::Vector3d& F = state_.wrench.force;
   // Normal stiffness dP/d(delta) with the contact set fixed: a flat punch of the contact's
@@ -165,22 +162,35 @@ WrenchJacobian ContactWrench::jacobian() {
     J.position.col(2).tail<3>() = Eigen::Vector3d(h * dF.y() + ybar * dF.z(), -h * dF.x() - xbar * dF.z(), 0.0);
   }
   if (!tangential_) return J;
-  // G = d(F_x, F_y, M_z)/d(a_x, a_y, a_z), a = dt (V_x - h W_y, V_y + h W_x, W_z).
-  const Eigen::Matrix3d G = sensitivity_.compute(tangential_->tangential_compliance(), case_.grid, solution_);
-  Eigen::Matrix<double, 6, 3> da;  // the wrench rows per unit increment a_l
+  const bool steady = steady_ && last_.velocity.x() > 0.0;
+  // G = d(F_x, F_y, M_z)/d(q_x, q_y, q_z): transient q = a = dt (V_x - h W_y, V_y + h W_x, W_z),
+  // steady q = a / (V_x dt) (creepages and spin).
+  const Eigen::Matrix3d G =
+      steady ? sensitivity_.compute_steady(tangential_->convective_compliance(), tangential_->tangential_compliance(),
+                                           case_.grid, solution_)
+             : sensitivity_.compute(tangential_->tangential_compliance(), case_.grid, solution_);
+  Eigen::Matrix<double, 6, 3> dq;  // the wrench rows per unit q_l
   for (int l = 0; l < 3; ++l) {
-    da(0, l) = G(0, l);
-    da(1, l) = G(1, l);
-    da(2, l) = 0.0;
-    da(3, l) = h * G(1, l);   // M_x = y p + h tau_y
-    da(4, l) = -h * G(0, l);  // M_y = -h tau_x - x p
-    da(5, l) = G(2, l);
+    dq(0, l) = G(0, l);
+    dq(1, l) = G(1, l);
+    dq(2, l) = 0.0;
+    dq(3, l) = h * G(1, l);   // M_x = y p + h tau_y
+    dq(4, l) = -h * G(0, l);  // M_y = -h tau_x - x p
+    dq(5, l) = G(2, l);
   }
-  J.velocity.col(0) = dt_ * da.col(0);
-  J.velocity.col(1) = dt_ * da.col(1);
-  J.omega.col(0) = dt_ * h * da.col(1);
-  J.omega.col(1) = -dt_ * h * da.col(0);
-  J.omega.col(2) = dt_ * da.col(2);
+  // dq/d(V, W): a = dt (...) for transient; for steady also through the 1/V_x.
+  const double s = steady ? 1.0 / last_.velocity.x() : dt_;
+  J.velocity.col(0) = s * dq.col(0);
+  J.velocity.col(1) = s * dq.col(1);
+  J.omega.col(0) = s * h * dq.col(1);
+  J.omega.col(1) = -s * h * dq.col(0);
+  J.omega.col(2) = s * dq.col(2);
+  if (steady) {
+    const Eigen::Vector3d& V = last_.velocity;
+    const Eigen::Vector3d& W = last_.omega;
+    const Eigen::Vector3d q((V.x() - h * W.y()) / V.x(), (V.y() + h * W.x()) / V.x(), W.z() / V.x());
+    J.velocity.col(0) -= (dq * q) / V.x();  // d q / d V_x = (e_x - q) / V_x
+  }
   return J;
 }
 

@@ -32,6 +32,7 @@ struct ContactState {
   bool converged = true;
   std::string message;           ///< why not converged
   const TangentialSolution* fields = nullptr;  ///< the last solution (null without friction or contact)
+  const std::vector<double>* pressure = nullptr;  ///< the last pressure field (null without contact)
 };
 
 class ContactWrench {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "errors.hpp"
+#include "interrupt.hpp"
 
 namespace dc::paper_cylinder {
 namespace {
@@ -70,6 +71,12 @@ Run simulate(const Parameters& p, double dt, Scheme scheme, const TractionLaw& l
   }
   run.samples.push_back(sample_at(0.0, u0, w0, law));
   for (int n = 1; n <= steps; ++n) {
+    if (interrupt_requested()) {  // the samples so far are complete steps
+      run.ok = false;
+      run.interrupted = true;
+      run.message = "interrupted at t_bar = " + std::to_string((n - 1) * dt);
+      break;
+    }
     const double t = n * dt;
     const double M = p.M0_bar + p.gamma_bar * t;
     // Backward differences a y_{n+1} - hist = dt f(y_{n+1}): BDF1 a = 1, hist = y_n; BDF2

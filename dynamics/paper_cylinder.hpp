@@ -69,6 +69,7 @@ struct Sample {
 struct Run {
   std::vector<Sample> samples;  ///< the initial state, then every step
   bool ok = true;
+  bool interrupted = false;     ///< stopped by an interrupt (core/interrupt.hpp): ok = false
   std::string message;          ///< why the run stopped early (ok = false)
 };
 

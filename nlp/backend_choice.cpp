@@ -2,8 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 
 #include "errors.hpp"
+#include "fault_injection.hpp"
+#include "interrupt.hpp"
 
 namespace dc {
 
@@ -13,9 +17,7 @@ std::vector<std::string> backend_order(const std::string& requested, std::size_t
     order = unknowns <= kAutoIpoptLimit ? std::vector<std::string>{"ipopt", "native", "nlopt"}
                                         : std::vector<std::string>{"native", "ipopt", "nlopt"};
   } else if (requested == "ipopt" || requested == "nlopt" || requested == "native") {
-    order = {requested};
-    for (const char* other : {"native", "ipopt", "nlopt"})
-      if (requested != other) order.emplace_back(other);
+    return {requested};  // asked for by name: never replaced silently by another backend
   } else {
     throw InputError("solver.backend", "unknown backend '" + requested + "' (auto, ipopt, nlopt, native)");
   }
@@ -35,15 +37,36 @@ SolveOptions solve_options(const SolverSpec& solver, const ProgressCallback& pro
 TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp, const SolveOptions& options,
                          NativeSolver native) {
   TimedOutcome timed;
+  SolveOutcome& out = timed.outcome;
+  throw_if_interrupted();
   const auto start = std::chrono::steady_clock::now();
+  const Fault fault = injected_fault(backend);
   try {
-    if (backend == "native") timed.outcome = native(qp, options);
-    else if (backend == "ipopt") timed.outcome = solve_with_ipopt(qp, options);
-    else timed.outcome = solve_with_nlopt(qp, options);
+    if (fault == Fault::fail) {
+      out.message = backend + ": failure injected (DYNCONTACT_FAULT)";
+    } else if (fault == Fault::stall) {  // no progress from the start
+      out.x = qp.x0.size() == static_cast<std::size_t>(qp.n()) ? qp.x0 : std::vector<double>(qp.c.size(), 0.0);
+      out.equality_multipliers.assign(qp.equalities.size(), 0.0);
+      out.message = backend + ": stall injected (DYNCONTACT_FAULT)";
+    } else if (backend == "native") {
+      out = native(qp, options);
+    } else if (backend == "ipopt") {
+      out = solve_with_ipopt(qp, options);
+    } else {
+      out = solve_with_nlopt(qp, options);
+    }
+    if (fault == Fault::nan && !out.x.empty()) out.x[out.x.size() / 2] = std::numeric_limits<double>::quiet_NaN();
   } catch (const std::exception& e) {
-    timed.outcome = SolveOutcome{};
-    timed.outcome.message = std::string("exception: ") + e.what();
+    out = SolveOutcome{};
+    out.message = std::string("exception: ") + e.what();
   }
+  // A non-finite value is never a result (it would pass comparisons and reach the files).
+  if (std::any_of(out.x.begin(), out.x.end(), [](double v) { return !std::isfinite(v); })) {
+    out.x.clear();
+    out.success = false;
+    out.message += " [returned non-finite values: discarded]";
+  }
+  throw_if_interrupted();  // a backend stopped by the interrupt reports no result of its own
   timed.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return timed;
 }

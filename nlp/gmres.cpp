@@ -1,4 +1,5 @@
 #include "gmres.hpp"
+#include "interrupt.hpp"
 
 #include <cmath>
 #include <cstddef>
@@ -33,6 +34,7 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, const s
     else out = v;
   };
   while (true) {
+    throw_if_interrupted();
     // r = b - A x
     apply(x, w);
     ++result.iterations;

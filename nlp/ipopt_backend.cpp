@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,6 +18,7 @@
 #include <IpTNLP.hpp>
 
 #include "quadratic_program.hpp"
+#include "interrupt.hpp"
 
 namespace dc {
 namespace {
@@ -206,7 +208,7 @@ class QpTnlp final : public Ipopt::TNLP {
                              const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
     iterations_ = std::max(iterations_, static_cast<int>(iter));
     if (options_.progress) options_.progress(ProgressInfo{static_cast<int>(iter), obj_value, inf_pr});
-    return true;
+    return !interrupt_requested();  // false stops Ipopt; run_backend then throws Interrupted
   }
 
   std::vector<double> x_, multipliers_;
@@ -262,6 +264,10 @@ SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& op
     return out;
   }
   try {
+    // Ipopt with MUMPS is not thread-safe: one Ipopt application at a time in the process
+    // (threaded tables); the lock outlives the application and its linear solver.
+    static std::mutex ipopt_mutex;
+    const std::lock_guard<std::mutex> lock(ipopt_mutex);
     if (options.hessian != "auto" && options.hessian != "exact" && options.hessian != "limited-memory") {
       out.message = "Ipopt: unknown hessian option '" + options.hessian + "'";
       return out;

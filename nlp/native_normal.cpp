@@ -4,6 +4,8 @@
 #include <stdexcept>
 
 #include "native_solvers.hpp"
+#include "solver_report.hpp"
+#include "interrupt.hpp"
 
 namespace dc {
 
@@ -26,6 +28,7 @@ SolveOutcome solve_normal_native(const QuadraticProgram& qp, const SolveOptions&
   double g_norm_old = 1.0, shift = 0.0;
   bool restart = true;
   for (int it = 1; it <= options.max_iter; ++it) {
+    throw_if_interrupted();
     out.iterations = it;
     qp.Q->apply(x.data(), g.data());
     for (std::size_t i = 0; i < n; ++i) g[i] += qp.c[i];
@@ -105,7 +108,7 @@ SolveOutcome solve_normal_native(const QuadraticProgram& qp, const SolveOptions&
     }
     if (rel < options.tol) {
       out.success = true;
-      out.message = "converged (relative change " + std::to_string(rel) + ")";
+      out.message = "converged (relative change " + format_number(rel) + ")";
       break;
     }
   }

@@ -8,7 +8,9 @@
 //    (Levenberg-Marquardt safeguarded, increments computed without cancellation). The nu of the
 //    projection of x - g (g = Qx + c) is the equality multiplier lambda (Qx + c = A'lambda + ...).
 //  * Convergence: the fixed-point residual |x - Pi_C(x - g)|_inf = |x - Pi_D(x - (g - A'lambda))|_inf
-//    <= tol * max(1, largest radius / finite bound), and |Ax - b|_inf <= tol (rows are O(1)).
+//    <= tol * (size of the solution: max |x|, |Pi_C(x - g)|, capped by the largest radius or finite
+//    bound), and each row |a'x - b| <= tol (|b| + sum |a_i x_i|): relative, so that a load tiny
+//    against the bounds (full stick, huge friction) is still solved and not stopped at x = 0.
 //  * Face, from w = x - g + A'lambda: a disk sticks where |w| <= r (both components free). Where
 //    |w| > r it slips: on the circle it is linearised at x (normal n = x/|x| held, tangent free,
 //    curvature mu/r of the circle with mu = -(g - A'lambda).n in the Hessian of the Lagrangian;
@@ -40,6 +42,7 @@
 #include <Eigen/Dense>
 
 #include "tangential_problem.hpp"
+#include "interrupt.hpp"
 
 namespace dc {
 namespace {
@@ -128,6 +131,16 @@ class NativeTangential {
     double f = 0.0;
     for (std::size_t i = 0; i < n_; ++i) f += 0.5 * x[i] * (g[i] + qp_.c[i]);
     return f;
+  }
+  /// Every row met relative to the size of its terms: |a'x - b| <= tol (|b| + sum |a_i x_i|).
+  bool equalities_met(const Vec& x) const {
+    const Eigen::VectorXd e = equality_defect(x);
+    for (std::size_t k = 0; k < m_; ++k) {
+      double size = std::abs(b_(static_cast<Eigen::Index>(k)));
+      for (std::size_t i = 0; i < n_; ++i) size += std::abs(rows_[k][i] * x[i]);
+      if (std::abs(e(static_cast<Eigen::Index>(k))) > options_.tol * size) return false;
+    }
+    return true;
   }
   double equality_residual(const Vec& x) const {
     return m_ == 0 ? 0.0 : equality_defect(x).lpNorm<Eigen::Infinity>();
@@ -497,8 +510,10 @@ SolveOutcome NativeTangential::solve() {
   }
   const int max_outer = std::max(options_.max_iter, 1);
   const long long max_applies = 20LL * max_outer;
-  const double tol_x = options_.tol * scale_;
-  const double tol_eq = options_.tol;
+  // Stopping is relative to the size of the solution (the larger of x and its projected
+  // gradient step, at most the largest radius): an absolute test stops at x = 0 when the load
+  // is tiny against the friction bound (full stick, huge mu).
+  double tol_x = options_.tol * scale_;
   const auto m = static_cast<Eigen::Index>(m_);
 
   Vec x(n_), g(n_), z(n_), y(n_), w(n_), d0(n_), hd0(n_), dt(n_), r(n_), rho(n_), p(n_), q(n_);
@@ -514,13 +529,14 @@ SolveOutcome NativeTangential::solve() {
   gradient(x, g);
   double f = objective(x, g);
   double lipschitz = 1.0;  // Q has unit diagonal: lambda_max >= 1
-  double res = kInf, eq_res = kInf;
+  double res = kInf, eq_res = kInf, level = scale_;
   int outer = 0, newton_steps = 0, gradient_steps = 0, cg_total = 0;
   std::vector<double> history;  // residual per outer iteration
   std::string status;
   bool converged = false;
 
   for (;; ++outer) {
+    throw_if_interrupted();
     // Residual and multipliers: y = Pi_C(x - g) = Pi_D(x - g + A'lambda).
     for (std::size_t i = 0; i < n_; ++i) z[i] = x[i] - g[i];
     if (!project(z, y, lambda)) {
@@ -530,10 +546,12 @@ SolveOutcome NativeTangential::solve() {
     w = u_last_;
     res = 0.0;
     for (std::size_t i = 0; i < n_; ++i) res = std::max(res, std::abs(x[i] - y[i]));
+    level = std::min(scale_, std::max(max_abs(x), max_abs(y)));
+    tol_x = options_.tol * level;
     eq_res = equality_residual(x);
     history.push_back(res);
     if (options_.progress) options_.progress({applies_, f, res});
-    if (res <= tol_x && eq_res <= tol_eq) {
+    if (res <= tol_x && equalities_met(x)) {
       converged = true;
       break;
     }
@@ -698,7 +716,7 @@ SolveOutcome NativeTangential::solve() {
   const std::string effort = std::to_string(outer) + " outer iterations (" + std::to_string(newton_steps) +
                              " Newton, " + std::to_string(gradient_steps) + " gradient steps, " +
                              std::to_string(cg_total) + " CG), iterations = " + std::to_string(applies_) +
-                             " operator applies; residual " + format("%.3g", res / scale_) +
+                             " operator applies; residual " + format("%.3g", level > 0.0 ? res / level : res) +
                              ", equality residual " + format("%.3g", eq_res);
   out.message = "native tangential: " + (converged ? std::string("converged") : status) + " after " + effort;
   return out;

@@ -143,6 +143,7 @@ NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverSpec&
     sol.report.fallback_used = k > 0;
     sol.report.message = outcome.message;
     sol.report.iterations = outcome.iterations;
+    sol.report.polished = outcome.polished;
     sol.report.time_s = elapsed;
     if (outcome.x.size() == n) {
       sol.pressure.resize(n);
@@ -176,7 +177,7 @@ NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverSpec&
       sol.report.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
       if (!certified && outcome.success)
         sol.report.message += " (backend reported success but the certificate " +
-                              std::to_string(sol.report.certificate.worst()) + " exceeds the tolerance)";
+                              format_number(sol.report.certificate.worst()) + " exceeds the tolerance)";
     } else {
       sol.report.status = SolveStatus::failed;
     }

@@ -66,6 +66,7 @@ struct SolveOutcome {
   std::string message;        ///< backend status text
   int iterations = 0;
   double objective = 0.0;
+  bool polished = false;      ///< finished by the active-set polish (active_set_polish.hpp)
 };
 
 SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& options);

@@ -1,6 +1,7 @@
 #include "solver_report.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace dc {
 
@@ -18,6 +19,12 @@ const char* to_string(SolveStatus status) {
   return "failed";
 }
 
+std::string format_number(double value) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", value);
+  return buf;
+}
+
 nlohmann::json to_json(const Certificate& c) {
   return {{"complementarity", c.complementarity}, {"gap_violation", c.gap_violation},
           {"pressure_violation", c.pressure_violation}, {"force_residual", c.force_residual},
@@ -33,6 +40,7 @@ nlohmann::json to_json(const SolverReport& r) {
           {"time_s", r.time_s},
           {"objective", r.objective},
           {"fallback_used", r.fallback_used},
+          {"polished", r.polished},
           {"operator", r.operator_kind},
           {"certificate", to_json(r.certificate)}};
 }

@@ -12,8 +12,8 @@ struct Certificate {
   double gap_violation = 0.0;    ///< max(-g) / (max p * C_ii): interpenetration
   double pressure_violation = 0.0;  ///< max(-p) / max p
   double force_residual = 0.0;   ///< |sum p A - P| / P under force control
-  double friction_law = 0.0;     ///< tangential: worst violation of (2.4)-(2.5) / max f(p)
-  double gap_function = 0.0;     ///< tangential: (4.24) g(tau) / sum f(p)|ds|A
+  double friction_law = 0.0;     ///< tangential: worst violation of (2.4)-(2.5) / traction level max |tau|
+  double gap_function = 0.0;     ///< tangential: (4.24) g(tau) / (sum f(p) A * slip level max(|ds|, c_t max |tau|))
   double worst() const;          ///< the largest of the above
 };
 
@@ -28,11 +28,14 @@ struct SolverReport {
   double time_s = 0.0;
   double objective = 0.0;
   bool fallback_used = false;
+  bool polished = false;        ///< the backend's point was finished by the active-set polish
   std::string operator_kind;    ///< dense | fft
   Certificate certificate;
 };
 
 const char* to_string(SolveStatus status);
+/// A number for messages: %.3g (never %f, which prints small residuals as 0.000001).
+std::string format_number(double value);
 nlohmann::json to_json(const Certificate& certificate);
 /// The `solver` object of summary.json.
 nlohmann::json to_json(const SolverReport& report);

@@ -18,6 +18,7 @@
 #include <cstdio>
 
 #include "gmres.hpp"
+#include "interrupt.hpp"
 
 namespace dc {
 namespace {
@@ -239,6 +240,7 @@ SteadyRollingOutcome SteadyRollingNewton::solve() {
   double best = merits.back();
   int since_best = 0, it = 0;
   for (; it < options_.max_iter; ++it) {
+    throw_if_interrupted();
     out.residual = max_abs(F);
     if (options_.progress) options_.progress({it, 0.0, out.residual});
     if (out.residual <= tol) {

@@ -4,21 +4,26 @@
 #include <stdexcept>
 
 #include "errors.hpp"
+#include "interrupt.hpp"
 #include "profile.hpp"
 #include "tangential_problem.hpp"
 
 namespace dc {
 
+TangentialProblem make_tangential_problem(const Case& c) {
+  if (!c.friction) throw InputError("friction", "required for a tangential problem");
+  OperatorKind kind = OperatorKind::automatic;
+  if (c.solver.operator_kind == "dense") kind = OperatorKind::dense;
+  if (c.solver.operator_kind == "fft") kind = OperatorKind::fft;
+  return TangentialProblem(c.grid, c.materials, profile_heights(c.profile, c.grid), FrictionLaw::from_spec(*c.friction),
+                           kind);
+}
+
 std::vector<TangentialSolution> solve_tangential_case(const Case& c, const ProgressCallback& progress) {
   if (!c.tangential) throw InputError("tangential", "required for a tangential problem (an object)");
   if (!c.friction) throw InputError("friction", "required for a tangential problem");
   const TangentialSpec& t = *c.tangential;
-
-  OperatorKind kind = OperatorKind::automatic;
-  if (c.solver.operator_kind == "dense") kind = OperatorKind::dense;
-  if (c.solver.operator_kind == "fft") kind = OperatorKind::fft;
-  TangentialProblem problem(c.grid, c.materials, profile_heights(c.profile, c.grid),
-                            FrictionLaw::from_spec(*c.friction), kind);
+  TangentialProblem problem = make_tangential_problem(c);
   std::vector<TangentialSolution> out;
   // Each step's report times the whole step (every marching step, Newton and outer-loop
   // iteration, fallback), not only its last inner solve.
@@ -32,15 +37,23 @@ std::vector<TangentialSolution> solve_tangential_case(const Case& c, const Progr
       timed([&] { return problem.steady_rolling(t.rolling, c.solver, progress); });
       return out;
     }
-    for (const RollingStep& step : t.rolling_history)
-      timed([&] { return problem.roll(step.load, step.distance, c.solver, progress); });
+    try {
+      for (const RollingStep& step : t.rolling_history)
+        timed([&] { return problem.roll(step.load, step.distance, c.solver, progress); });
+    } catch (const Interrupted&) {
+      if (out.empty()) throw;  // else: the finished steps (interrupt_requested() says why no more)
+    }
     return out;
   }
   if (!t.has_history) {
     timed([&] { return problem.step(t.load, c.solver, progress); });
     return out;
   }
-  for (const TangentialLoad& step : t.history) timed([&] { return problem.step(step, c.solver, progress); });
+  try {
+    for (const TangentialLoad& step : t.history) timed([&] { return problem.step(step, c.solver, progress); });
+  } catch (const Interrupted&) {
+    if (out.empty()) throw;  // else: the finished steps (interrupt_requested() says why no more)
+  }
   return out;
 }
 

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 #include "anderson_mixing.hpp"
 #include "backend_choice.hpp"
 #include "errors.hpp"
+#include "fault_injection.hpp"
 #include "scaled_operator.hpp"
 #include "steady_rolling_solver.hpp"
 
@@ -58,6 +60,7 @@ struct TangentialProblem::Impl {
   std::vector<double> tau_prev, p_prev;      // comps*N, N
   std::array<double, 3> amplitude_prev{};
   std::vector<double> tau_warm;              // warm start of the tangential program
+  bool native_first = false;                 // auto while marching: native first at any size
 
   Impl(const Grid& g, const MaterialPair& m, std::vector<double> h, FrictionLaw f, OperatorKind k)
       : grid(g), materials(m), friction(std::move(f)), kind(k), half_space(g, m),
@@ -144,6 +147,7 @@ struct TangentialProblem::Impl {
     std::vector<double> tau;
     std::array<double, 3> increment{};  // rigid-mode increments of the step (given or solved)
     SolverReport report;
+    bool shift_undetermined = false;    // frictionless: a resultant-controlled mode has no unique value
   };
 
   /// The largest resultant of mode k that friction can carry: sum_e f_e |m_k(e)| A.
@@ -162,15 +166,23 @@ struct TangentialProblem::Impl {
   void check_resultants(const std::vector<double>& f, const std::array<ModeControl, 3>& modes) const {
     static const char* names[] = {"tangential.force[0]", "tangential.force[1]", "tangential.moment"};
     auto sliding = [](const char* key, double value, double capacity) {
-      throw InputError(key, "the prescribed resultant " + std::to_string(value) + " reaches the friction limit " +
-                                std::to_string(capacity) + ": gross sliding, no quasi-static or steady solution");
+      throw InputError(key, "the prescribed resultant " + format_number(value) + " reaches the friction limit " +
+                                format_number(capacity) + ": gross sliding, no quasi-static or steady solution");
     };
     if (std::none_of(modes.begin(), modes.begin() + n_modes(),
                      [](const ModeControl& m) { return m.kind == ModeControl::Kind::resultant; }))
       return;
     double total = 0.0;
     for (std::size_t e = 0; e < N; ++e) total += f[e] * grid.area();
-    if (!(total > 0.0)) throw InputError("tangential", "no friction can be transmitted: the contact carries no load");
+    if (!(total > 0.0)) {  // frictionless (mu = 0) or unloaded: only zero resultants have a solution
+      for (int k = 0; k < n_modes(); ++k)
+        if (modes[k].kind == ModeControl::Kind::resultant && modes[k].value != 0.0)
+          throw InputError(names[k], "the prescribed resultant " + format_number(modes[k].value) +
+                                         " cannot be carried: the friction bound f(p) is 0 over the whole contact "
+                                         "(mu = 0 or no load), so any tangential load is gross sliding, no "
+                                         "quasi-static or steady solution");
+      return;
+    }
     for (int k = 0; k < n_modes(); ++k) {
       if (modes[k].kind != ModeControl::Kind::resultant) continue;
       const double capacity = resultant_capacity(k, f);
@@ -235,48 +247,140 @@ struct TangentialProblem::Impl {
       for (std::size_t i = 0; i < n; ++i) qp.x0[i] = tau_warm[i] / f_ref;
     }
     const SolveOptions options = solve_options(solver, progress);
+    if (std::all_of(f.begin(), f.end(), [](double b) { return b <= 0.0; })) return frictionless(given_increment, modes, solver);
 
     InnerResult best;
     best.report.requested = solver.backend;
     best.report.operator_kind = Ct->kind();
+    bool have_result = false;
     std::string attempts;
-    const auto order = backend_order(solver.backend, n, solver.fallback);
+    const auto order = backend_order(solver.backend, native_first ? std::numeric_limits<std::size_t>::max() : n, solver.fallback);
     for (std::size_t k = 0; k < order.size(); ++k) {
       const TimedOutcome run = run_backend(order[k], qp, options, solve_tangential_native);
       const SolveOutcome& out = run.outcome;
-      SolverReport rep = best.report;
+      InnerResult trial;
+      SolverReport& rep = trial.report;
+      rep = best.report;
       rep.backend = order[k];
       rep.fallback_used = k > 0;
       rep.message = out.message;
       rep.iterations = out.iterations;
+      rep.polished = out.polished;
       rep.time_s = run.time_s;
       rep.objective = out.objective * ct0 * f_ref * f_ref * A;
-      rep.status = out.x.size() == n ? (out.success ? SolveStatus::converged : SolveStatus::not_converged)
-                                     : SolveStatus::failed;
-      attempts += (attempts.empty() ? "" : "; ") + order[k] + ": " + to_string(rep.status);
-      if (rep.status == SolveStatus::failed && !best.tau.empty()) continue;
-      best.report = rep;
-      best.tau.assign(n, 0.0);
+      rep.status = SolveStatus::failed;
+      trial.increment = given_increment;
       if (out.x.size() == n) {
-        for (std::size_t i = 0; i < n; ++i) best.tau[i] = out.x[i] * f_ref;
+        trial.tau.resize(n);
+        for (std::size_t i = 0; i < n; ++i) trial.tau[i] = out.x[i] * f_ref;
         // Project onto the friction set (interior-point iterates may sit a hair outside).
         for (std::size_t e = 0; e < N; ++e) {
           double m2 = 0.0;
-          for (int c = 0; c < comps; ++c) m2 += best.tau[c * N + e] * best.tau[c * N + e];
+          for (int c = 0; c < comps; ++c) m2 += trial.tau[c * N + e] * trial.tau[c * N + e];
           const double mag = std::sqrt(m2);
           if (mag > f[e])
-            for (int c = 0; c < comps; ++c) best.tau[c * N + e] *= f[e] > 0.0 ? f[e] / mag : 0.0;
+            for (int c = 0; c < comps; ++c) trial.tau[c * N + e] *= f[e] > 0.0 ? f[e] / mag : 0.0;
         }
+        for (std::size_t r = 0; r < row_mode.size() && r < out.equality_multipliers.size(); ++r)
+          // Stationarity: (Ct tau + W)/(ct0 f_ref) + alpha m/(ct0 f_ref) = lambda a, a = m A f_ref / S
+          trial.increment[row_mode[r]] = -out.equality_multipliers[r] * A * f_ref * f_ref * ct0 / row_scale[r];
+        // Our own certificate decides, as for the normal problem: `auto` falls back on it.
+        rep.certificate = step_certificate(trial.tau, slip_increment(W, trial.tau, trial.increment), f, modes);
+        const bool certified = rep.certificate.worst() <= solver.certificate_tol;
+        rep.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
+        if (!certified && out.success)
+          rep.message += " (backend reported success but the certificate " +
+                         format_number(rep.certificate.worst()) + " exceeds the tolerance)";
       }
-      best.increment = given_increment;
-      for (std::size_t r = 0; r < row_mode.size() && r < out.equality_multipliers.size(); ++r)
-        // Stationarity: (Ct tau + W)/(ct0 f_ref) + alpha m/(ct0 f_ref) = lambda a, a = m A f_ref / S
-        best.increment[row_mode[r]] = -out.equality_multipliers[r] * A * f_ref * f_ref * ct0 / row_scale[r];
-      if (rep.status == SolveStatus::converged) break;
+      attempts += (attempts.empty() ? "" : "; ") + order[k] + ": " + to_string(rep.status);
+      const bool better = !have_result || rep.status == SolveStatus::converged ||
+                          (best.report.status == SolveStatus::failed && rep.status != SolveStatus::failed) ||
+                          (rep.status == SolveStatus::not_converged &&
+                           rep.certificate.worst() < best.report.certificate.worst());
+      if (better) {
+        best = std::move(trial);
+        have_result = true;
+      }
+      if (best.report.status == SolveStatus::converged) break;
     }
+    if (best.tau.empty()) best.tau.assign(n, 0.0);  // every backend failed: nothing to keep
     if (best.report.fallback_used || best.report.status != SolveStatus::converged)
       best.report.message += " [tried " + attempts + "]";
     return best;
+  }
+
+  /// No friction anywhere (f(p) = 0: mu = 0): nothing to solve, tau = 0. Only zero resultants
+  /// reach here (check_resultants); the rigid increment of a resultant-controlled mode is then
+  /// undetermined (any shift leaves tau = 0) and reported as 0.
+  InnerResult frictionless(const std::array<double, 3>& given_increment, const std::array<ModeControl, 3>& modes,
+                           const SolverSpec& solver) const {
+    InnerResult r;
+    r.tau.assign(comps * N, 0.0);
+    r.increment = given_increment;
+    r.report.backend = "none";
+    r.report.requested = solver.backend;
+    r.report.operator_kind = Ct->kind();
+    r.report.status = SolveStatus::converged;
+    r.report.message = "no friction (f(p) = 0 over the whole contact): zero traction, nothing to solve";
+    r.shift_undetermined = std::any_of(modes.begin(), modes.begin() + n_modes(), [](const ModeControl& m) {
+      return m.kind == ModeControl::Kind::resultant;
+    });
+    if (r.shift_undetermined)
+      r.report.message += "; the rigid shift is undetermined (any shift leaves the traction at 0; reported as 0)";
+    return r;
+  }
+
+  /// The slip increment of a step (3.8): ds = W + rigid + Ct tau, rigid = sum_k increment_k mode_k.
+  std::vector<double> slip_increment(const std::vector<double>& W, const std::vector<double>& tau,
+                                     const std::array<double, 3>& increment) const {
+    std::vector<double> ds;
+    Ct->apply(tau, ds);
+    for (std::size_t e = 0; e < N; ++e)
+      for (int c = 0; c < comps; ++c) {
+        double rigid = 0.0;
+        for (int k = 0; k < n_modes(); ++k) rigid += increment[k] * mode(k, e, c);
+        ds[c * N + e] += W[c * N + e] + rigid;
+      }
+    return ds;
+  }
+
+  /// Resultants F_x, F_y, M_z of a traction field.
+  std::array<double, 3> resultants(const std::vector<double>& tau) const {
+    std::array<double, 3> r{0.0, 0.0, 0.0};
+    for (std::size_t e = 0; e < N; ++e)
+      for (int k = 0; k < n_modes(); ++k)
+        for (int c = 0; c < comps; ++c) r[k] += mode(k, e, c) * tau[c * N + e] * grid.area();
+    return r;
+  }
+
+  /// The tangential certificate of a step: friction law and gap function (certify_friction), and
+  /// the prescribed resultants, relative to the resultant itself or, when that is 0, to what the
+  /// traction level could carry (T sum |m_k| A).
+  Certificate step_certificate(const std::vector<double>& tau, const std::vector<double>& ds,
+                               const std::vector<double>& f, const std::array<ModeControl, 3>& modes) const {
+    std::vector<double> tx(tau.begin(), tau.begin() + static_cast<std::ptrdiff_t>(N)), ty(N, 0.0);
+    std::vector<double> sx(ds.begin(), ds.begin() + static_cast<std::ptrdiff_t>(N)), sy(N, 0.0);
+    if (comps == 2) {
+      ty.assign(tau.begin() + static_cast<std::ptrdiff_t>(N), tau.end());
+      sy.assign(ds.begin() + static_cast<std::ptrdiff_t>(N), ds.end());
+    }
+    Certificate cert = TangentialProblem::certify_friction(grid, tx, ty, sx, sy, f, Ct->diagonal(0));
+    const double T = TangentialProblem::traction_scale(tx, ty, f);
+    const std::array<double, 3> r = resultants(tau);
+    for (int k = 0; k < n_modes(); ++k) {
+      if (modes[k].kind != ModeControl::Kind::resultant) continue;
+      double reach = 0.0;
+      for (std::size_t e = 0; e < N; ++e)
+        if (f[e] > 0.0) {
+          double m2 = 0.0;
+          for (int c = 0; c < comps; ++c) m2 += mode(k, e, c) * mode(k, e, c);
+          reach += T * std::sqrt(m2) * grid.area();
+        }
+      const double scale = std::max(std::abs(modes[k].value), reach);
+      const double miss = std::abs(r[k] - modes[k].value);
+      cert.force_residual = std::max(cert.force_residual, scale > 0.0 ? miss / scale : miss > 0.0 ? 1.0 : 0.0);
+    }
+    return cert;
   }
 
   /// Fills the fields, states, resultants and the certificate of a solution from tau, the slip
@@ -300,7 +404,8 @@ struct TangentialProblem::Impl {
       }
     }
     const double A = grid.area();
-    const double slip_scale = Ct->diagonal(0) * std::max(max_abs(f), 1e-300);
+    // Slip against the slip of the traction level (never against the bound: full stick at huge mu).
+    const double slip_scale = Ct->diagonal(0) * TangentialProblem::traction_scale(sol.tx, sol.ty, f);
     for (std::size_t e = 0; e < N; ++e) {
       if (f[e] <= 0.0) continue;
       const bool slipping = std::hypot(sol.sx[e], sol.sy[e]) > 1e-5 * slip_scale;
@@ -308,26 +413,21 @@ struct TangentialProblem::Impl {
       (slipping ? sol.n_slip : sol.n_stick) += 1;
       if (!slipping) sol.stick_area += A;
     }
-    sol.resultants = {0.0, 0.0, 0.0};
-    for (std::size_t e = 0; e < N; ++e)
-      for (int k = 0; k < n_modes(); ++k)
-        for (int c = 0; c < comps; ++c) sol.resultants[k] += mode(k, e, c) * tau[c * N + e] * A;
-    sol.report.certificate = TangentialProblem::certify_friction(grid, sol.tx, sol.ty, sol.sx, sol.sy, f, slip_scale);
+    sol.resultants = resultants(tau);
+    const Certificate friction = step_certificate(tau, ds, f, modes);
     // The normal part of the certificate comes from the normal solve of the last iterate.
-    sol.report.certificate.complementarity = sol.normal.report.certificate.complementarity;
-    sol.report.certificate.gap_violation = sol.normal.report.certificate.gap_violation;
-    sol.report.certificate.pressure_violation = sol.normal.report.certificate.pressure_violation;
-    sol.report.certificate.force_residual = sol.normal.report.certificate.force_residual;
-    for (int k = 0; k < 3; ++k)
-      if (modes[k].kind == ModeControl::Kind::resultant && std::abs(modes[k].value) > 0.0)
-        sol.report.certificate.force_residual = std::max(
-            sol.report.certificate.force_residual, std::abs(sol.resultants[k] - modes[k].value) / std::abs(modes[k].value));
+    sol.report.certificate = sol.normal.report.certificate;
+    sol.report.certificate.friction_law = friction.friction_law;
+    sol.report.certificate.gap_function = friction.gap_function;
+    sol.report.certificate.force_residual = std::max(sol.normal.report.certificate.force_residual, friction.force_residual);
     const bool certified = sol.report.certificate.worst() <= solver.certificate_tol && sol.outer.converged &&
                            sol.normal.report.status == SolveStatus::converged;
     if (sol.report.status != SolveStatus::failed)
       sol.report.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
     if (!sol.outer.converged)
-      sol.report.message += " [outer loop did not converge: last change " + std::to_string(sol.outer.last_change) + "]";
+      sol.report.message += " [outer loop (4.26)-(4.27)/(3.31)-(3.32) did not converge in " +
+                            std::to_string(sol.outer.iterations) + " iterations: last change " +
+                            format_number(sol.outer.last_change) + "; the results are its last iterate]";
   }
 
   /// The outer loop (4.26)-(4.27) / (3.31)-(3.32) around an inner tangential solve: the pressure
@@ -344,7 +444,8 @@ struct TangentialProblem::Impl {
                   std::vector<double>& tau, std::vector<double>& f, Inner&& inner) {
     std::vector<double> p_old, tau_old, wz, tau_in = tau;
     f.assign(N, 0.0);
-    const int max_outer = coupled ? 100 : 1;
+    const bool stall = injected_fault("outer") != Fault::none;  // test-only: a loop that never settles
+    const int max_outer = stall ? 3 : coupled ? 100 : 1;
     const double outer_tol = std::max(1e-9, 10.0 * solver.tol);
     const double c0 = C->diagonal(0);
     AndersonMixing mixer;
@@ -356,7 +457,8 @@ struct TangentialProblem::Impl {
       }
       sol.normal = solve_normal(std::move(h), normal_load, solver);
       if (sol.normal.report.status == SolveStatus::failed)
-        throw std::runtime_error("normal problem failed: " + sol.normal.report.message);
+        throw SolverFailure("the normal problem failed, so the tangential one cannot be set up: " +
+                            sol.normal.report.message);
       const std::vector<double>& p = sol.normal.pressure;
       // (3.32): the friction bound from this pressure; noise-level pressures carry none.
       const double p_cut = 1e-9 * max_abs(p);
@@ -379,7 +481,7 @@ struct TangentialProblem::Impl {
       const double p_max = max_abs(p);
       gap_error /= c0 * (p_max > 0.0 ? p_max : 1.0);
       sol.outer.coupling_residual = gap_error;
-      if (gap_error <= 0.01 * solver.certificate_tol || (m > 1 && change < outer_tol)) break;
+      if (!stall && (gap_error <= 0.01 * solver.certificate_tol || (m > 1 && change < outer_tol))) break;
       if (m == max_outer) {
         sol.outer.converged = false;
         sol.outer.last_change = change;
@@ -419,15 +521,9 @@ struct TangentialProblem::Impl {
                  return true;
                });
     // Results: slip increment ds = W + rigid + Ct tau (3.8), certificate, states.
-    std::vector<double> ds;
-    Ct->apply(tau, ds);
-    for (std::size_t e = 0; e < N; ++e)
-      for (int c = 0; c < comps; ++c) {
-        double rigid = 0.0;
-        for (int k = 0; k < n_modes(); ++k) rigid += inner.increment[k] * mode(k, e, c);
-        ds[c * N + e] += W[c * N + e] + rigid;
-      }
+    const std::vector<double> ds = slip_increment(W, tau, inner.increment);
     sol.report = inner.report;
+    sol.shift_undetermined = inner.shift_undetermined;
     finish(sol, tau, ds, f, modes, solver);
     // Remember the state for the next step.
     tau_prev = tau;
@@ -463,7 +559,8 @@ struct TangentialProblem::Impl {
     SolveOptions options = solve_options(solver, progress);
     options.max_iter = std::min(solver.max_iter, 200);
     TangentialSolution sol;
-    std::vector<double> tau(n, 0.0), f, w_up, w_here;
+    std::vector<double> tau = load.warm_start.size() == n ? load.warm_start : std::vector<double>(n, 0.0);
+    std::vector<double> f, w_up, w_here;
     SteadyRollingOutcome outcome;
     int newton = 0, applies = 0;
     const auto start = std::chrono::steady_clock::now();
@@ -480,6 +577,10 @@ struct TangentialProblem::Impl {
             for (std::size_t i = 0; i < n; ++i) program.b[i] += w_here[i] - w_up[i];
           }
           check_resultants(bound, load.modes);
+          if (std::all_of(bound.begin(), bound.end(), [](double b) { return b <= 0.0; })) {
+            outcome.message = "no friction (f(p) = 0 over the whole contact)";
+            return false;
+          }
           program.bound = bound;
           program.tau0 = t;
           outcome = solve_steady_rolling(program, options);
@@ -543,8 +644,12 @@ struct TangentialProblem::Impl {
       if (load.modes[k].kind == ModeControl::Kind::amplitude) increment[k] = grid.dx * load.modes[k].value;
     // auto: every step is one warm-started program, where the native solver is much the
     // fastest at any size (the others remain its fallbacks).
-    SolverSpec step_solver = solver;
-    if (step_solver.backend == "auto") step_solver.backend = "native";
+    const SolverSpec& step_solver = solver;
+    native_first = true;
+    struct Restore {
+      bool& flag;
+      ~Restore() { flag = false; }
+    } restore{native_first};
     March m;
     for (m.steps = 1; m.steps <= max_steps; ++m.steps) {
       const std::vector<double> input = tau_prev;
@@ -643,14 +748,14 @@ TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, co
         const double ds = rigid + u_here[c * N + e] - u_up[c * N + e];
         (c == 0 ? sol.sx : sol.sy)[e] = ds;
       }
-    const Certificate steady_cert = certify_friction(s.grid, sol.tx, sol.ty, sol.sx, sol.sy, sol.bound,
-                                                     s.Ct->diagonal(0) * std::max(max_abs(sol.bound), 1e-300));
+    const Certificate steady_cert =
+        certify_friction(s.grid, sol.tx, sol.ty, sol.sx, sol.sy, sol.bound, s.Ct->diagonal(0));
     sol.report.certificate.friction_law = steady_cert.friction_law;
     sol.report.certificate.gap_function = steady_cert.gap_function;
     const bool certified = sol.report.certificate.worst() <= solver.certificate_tol;
     if (sol.report.status == SolveStatus::converged && !certified) {
       sol.report.status = SolveStatus::not_converged;
-      sol.report.message += " [steady-state certificate " + std::to_string(sol.report.certificate.worst()) +
+      sol.report.message += " [steady-state certificate " + format_number(sol.report.certificate.worst()) +
                             " exceeds the tolerance]";
     }
   }
@@ -733,15 +838,40 @@ void TangentialProblem::set_heights(std::vector<double> heights) { impl_->height
 
 const LinearOperator& TangentialProblem::tangential_compliance() const { return *impl_->Ct; }
 
+const LinearOperator& TangentialProblem::convective_compliance() {
+  Impl& s = *impl_;
+  if (!s.D_conv) s.D_conv = s.half_space.tangential_convective(1, s.kind);
+  return *s.D_conv;
+}
+
+double TangentialProblem::traction_scale(const std::vector<double>& tx, const std::vector<double>& ty,
+                                         const std::vector<double>& bound) {
+  double level = 0.0;
+  for (std::size_t e = 0; e < bound.size(); ++e)
+    if (bound[e] > 0.0) level = std::max(level, std::hypot(tx[e], ty[e]));
+  return level;
+}
+
 Certificate TangentialProblem::certify_friction(const Grid& grid, const std::vector<double>& tx,
                                                 const std::vector<double>& ty, const std::vector<double>& sx,
                                                 const std::vector<double>& sy, const std::vector<double>& bound,
-                                                double slip_scale) {
+                                                double compliance) {
   Certificate cert;
   const double A = grid.area();
-  const double f_max = std::max(max_abs(bound), 1e-300);
-  const double c_t = slip_scale / f_max;  // slip per unit traction of one element
-  double law = 0.0, numerator = 0.0, denominator = 0.0;
+  const double c_t = compliance;  // slip per unit traction of one element
+  // Scales of the solution itself, not of the bound: the traction level T (max |tau| where
+  // friction acts) and the slip level S (max |ds|, at least c_t T). max f(p) or sum f |ds| A
+  // would vanish or explode in full stick, for mu -> 0 or mu -> infinity.
+  double T = traction_scale(tx, ty, bound), S = 0.0, f_area = 0.0;
+  for (std::size_t e = 0; e < bound.size(); ++e)
+    if (bound[e] > 0.0) {
+      S = std::max(S, std::hypot(sx[e], sy[e]));
+      f_area += bound[e] * A;
+    }
+  if (!(T > 0.0)) T = S / c_t;  // no traction at all: any slip where friction acts is an error
+  if (!(T > 0.0)) return cert;  // nothing loaded, nothing slipping
+  S = std::max(S, c_t * T);
+  double law = 0.0, gap = 0.0;
   for (std::size_t e = 0; e < bound.size(); ++e) {
     const double f = bound[e];
     // (2.4)-(2.5) as a fixed point: tau = proj_{|t| <= f}(tau - ds / c_t).
@@ -755,12 +885,11 @@ Certificate TangentialProblem::certify_friction(const Grid& grid, const std::vec
     law = std::max(law, std::hypot(tx[e], ty[e]) - f);
     // (4.24): g = sum [f |ds| - tau- . ds] A, with the paper's tau- = -tau+ on the substrate
     // ((3.12), (3.25)); it vanishes when tau+ = -f ds/|ds| on slip, ds = 0 on stick.
-    const double slip = std::hypot(sx[e], sy[e]);
-    numerator += (f * slip + (tx[e] * sx[e] + ty[e] * sy[e])) * A;
-    denominator += f * (slip + 1e-5 * slip_scale) * A;
+    gap += (f * std::hypot(sx[e], sy[e]) + (tx[e] * sx[e] + ty[e] * sy[e])) * A;
   }
-  cert.friction_law = law / f_max;
-  cert.gap_function = denominator > 0.0 ? std::abs(numerator) / denominator : 0.0;
+  cert.friction_law = law / T;
+  // g against the largest it could be at this slip level: sum f A times S.
+  cert.gap_function = f_area > 0.0 ? std::abs(gap) / (f_area * S) : 0.0;
   return cert;
 }
 

@@ -59,6 +59,7 @@ struct TangentialSolution {
   int newton_iterations = 0;         ///< steady rolling by Newton: its iterations (all outer passes)
   bool rolling = false;              ///< amplitudes are creepages / spin (steady or transient rolling), not shifts
   double distance = 0.0;             ///< roll(): distance rolled, marching_steps * dx (m)
+  bool shift_undetermined = false;   ///< no friction (mu = 0): the resultant-controlled rigid modes have no unique value
 };
 
 /// The loading history of a TangentialProblem (the state its next step starts from): saved
@@ -114,13 +115,21 @@ class TangentialProblem {
   void set_heights(std::vector<double> heights);
   /// B22, the tangential compliance (sensitivities of a solution with its active set fixed).
   const LinearOperator& tangential_compliance() const;
+  /// Steady rolling's convective compliance B22 - S B22 (one element of travel), built on first use.
+  const LinearOperator& convective_compliance();
 
   const Grid& grid() const { return grid_; }
-  /// Certificate of a traction field for given slip increments and bounds (for tests).
+  /// Certificate of a traction field for given slip increments and bounds (every solve, tests):
+  /// friction law (2.4)-(2.5) as the fixed point tau = proj(tau - ds / c_t), relative to the
+  /// traction level T = traction_scale(); gap function (4.24) relative to sum f A times the slip
+  /// level max(max |ds|, c_t T). `compliance` c_t: slip per unit traction of one element (m/Pa).
   static Certificate certify_friction(const Grid& grid, const std::vector<double>& tx,
                                       const std::vector<double>& ty, const std::vector<double>& sx,
                                       const std::vector<double>& sy, const std::vector<double>& bound,
-                                      double slip_scale);
+                                      double compliance);
+  /// The traction level of a solution: max |tau| over the elements where friction acts.
+  static double traction_scale(const std::vector<double>& tx, const std::vector<double>& ty,
+                               const std::vector<double>& bound);
 
  private:
   struct Impl;
@@ -128,7 +137,13 @@ class TangentialProblem {
   Grid grid_;
 };
 
+/// The tangential problem of a case (grid, materials, profile, friction, solver.operator), set up
+/// and in its unloaded state. Throws InputError("friction") when the case has no friction.
+TangentialProblem make_tangential_problem(const Case& c);
+
 /// The whole tangential case (CASES.md "tangential"): one solution, or one per history step.
+/// An interrupt (core/interrupt.hpp) during a history returns the steps finished before it;
+/// with none finished, Interrupted propagates.
 std::vector<TangentialSolution> solve_tangential_case(const Case& c, const ProgressCallback& progress = {});
 
 /// The native tangential solver (cone-projected accelerated gradient on the FFT operator):

@@ -4,6 +4,9 @@
 #   scripts/bench.sh            normal: 32..512 (ipopt up to 128^2, nlopt up to 64^2);
 #                               shift: 32..256; rolling: 32..256 (native and auto)
 #   scripts/bench.sh --quick    32,64 for each
+#   scripts/bench.sh dynamic    1000 steps of problem "dynamic": a sphere rolling on a 32^2 grid
+#                               (transient contact) and the 2-D cylinder on 200 strips (steady):
+#                               ms per step, contact solves and Newton iterations per step
 #   scripts/bench.sh peer [--repeat 3] [case.json...]
 #                               the cases of examples/bench/ (Hertz 512^2 and 1024^2, the wheel/rail
 #                               table at 23k/93k/372k elements, Spence 35 and 69 steps) timed whole by
@@ -19,6 +22,7 @@ shift_sizes="32,64,128,256"
 rolling_sizes="32,64,128,256"
 backends="native,ipopt,nlopt"
 args=()
+mode=static
 if [[ "${1:-}" == "peer" ]]; then
   shift
   scripts/setup.sh
@@ -39,6 +43,7 @@ if [[ "${1:-}" == "peer" ]]; then
 fi
 while [[ $# -gt 0 ]]; do
   case "$1" in
+    dynamic) mode=dynamic ;;
     --quick) sizes="32,64"; shift_sizes="32,64"; rolling_sizes="32,64" ;;
     --sizes) sizes="${2:?--sizes needs a value}"; shift ;;
     --sizes=*) sizes="${1#--sizes=}" ;;
@@ -50,6 +55,29 @@ while [[ $# -gt 0 ]]; do
 done
 
 scripts/setup.sh
+if [[ $mode == dynamic ]]; then
+  out="$(mktemp -d)"
+  trap 'rm -rf "$out"' EXIT
+  run_dynamic() {  # label, example, overrides...
+    local label="$1" example="$2"
+    shift 2
+    local sets=()
+    for s in "$@"; do sets+=(--set "$s"); done
+    "$BUILD_DIR/bin/dyncontact" solve "examples/$example.json" --out "$out/$example" -q --set output.plots=false "${sets[@]}"
+    awk -v label="$label" -F'[:,]' '
+      /"steps"/ && !steps { steps = $2 + 0 }
+      /"time_s"/ { time = $2 + 0 }
+      /"contact_solves"/ { solves = $2 + 0 }
+      /"newton_iterations"/ { newton = $2 + 0 }
+      END { printf "%-44s %5d steps  %7.2f ms/step  %5.2f contact solves/step  %5.2f Newton iterations/step  (%.2f s)\n",
+                   label, steps, 1000 * time / steps, solves / steps, newton / steps, time }' "$out/$example/summary.json"
+  }
+  echo "== dynamic (1000 steps each)"
+  run_dynamic "sphere rolling, 32^2, transient" bowling-ball grid.nx=32 grid.ny=32 contact_model=transient \
+    time.dt=1e-4 time.t_end=0.1 'body.initial.omega=[0,27.5229,0]'
+  run_dynamic "2-D cylinder, 200 strips, steady" cylinder-dynamic-2d grid.nx=200 time.dt=0.005 time.t_end=5
+  exit 0
+fi
 [[ -x "$BUILD_DIR/bin/dyncontact_bench" ]] || {
   echo "bench: $BUILD_DIR/bin/dyncontact_bench missing (configured with -DDYNCONTACT_BUILD_BENCH=OFF?)" >&2
   exit 1

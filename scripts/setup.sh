@@ -9,6 +9,9 @@
 #   DYNCONTACT_BUILD_DIR   build folder (default: build)
 #   DYNCONTACT_JOBS        parallel build jobs (default: nproc)
 #   DYNCONTACT_SKIP_APT=1  do not check or install packages
+#   DYNCONTACT_WITH_FUZZ=1 also clang and libFuzzer (FUZZ_PACKAGES; scripts/fuzz.sh)
+# Argument --packages-only: install the packages, do not configure or build.
+#   DYNCONTACT_SKIP_PYTHON_INSTALL=1  do not install the Python module (cmake --install --component python)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -19,7 +22,11 @@ PACKAGES=(
   coinor-libipopt-dev libeigen3-dev libnlopt-dev libnlopt-cxx-dev libfftw3-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev gnuplot-nox
   pkg-config cmake g++ make
+  libopenmpi-dev openmpi-bin
+  python3-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib
 )
+FUZZ_PACKAGES=(clang libclang-rt-dev)
+if [[ "${DYNCONTACT_WITH_FUZZ:-0}" == 1 ]]; then PACKAGES+=("${FUZZ_PACKAGES[@]}"); fi
 
 say() { printf 'setup: %s\n' "$*" >&2; }
 die() { say "error: $*"; exit 1; }
@@ -72,6 +79,7 @@ show_errors() {
 if [[ "${DYNCONTACT_SKIP_APT:-0}" != 1 ]]; then
   install_missing_packages
 fi
+if [[ "${1:-}" == --packages-only ]]; then exit 0; fi
 
 mkdir -p "$BUILD_DIR"
 LOG="$BUILD_DIR/setup.log"
@@ -101,3 +109,11 @@ if ! cmake --build "$BUILD_DIR" -j"$JOBS" >"$LOG" 2>&1; then
   exit 1
 fi
 if (( SECONDS - start > 5 )); then say "built $BUILD_DIR in $((SECONDS - start)) s"; fi
+
+# The Python module (when it was built) where python3 finds it: `import dyncontact` works
+# afterwards (as root, or with write access to the prefix; DYNCONTACT_SKIP_PYTHON_INSTALL=1 skips).
+if [[ "${DYNCONTACT_SKIP_PYTHON_INSTALL:-0}" != 1 ]] && grep -q '^DYNCONTACT_WITH_PYTHON:BOOL=ON' "$BUILD_DIR/CMakeCache.txt"; then
+  if ! cmake --install "$BUILD_DIR" --component python >"$BUILD_DIR/install-python.log" 2>&1; then
+    say "note: the Python module was not installed (see $BUILD_DIR/install-python.log); use PYTHONPATH=$BUILD_DIR/python"
+  fi
+fi

@@ -62,6 +62,16 @@ TEST_F(CliDynamic, WritesSummaryAndTimeseries) {
   EXPECT_EQ(rows, 40);
 }
 
+TEST_F(CliDynamic, SnapshotsEveryKSteps) {
+  const CliResult r = run("solve " + case_file([](json& d) { d["output"]["snapshot_every"] = 10; }) + " --out out -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json s = json::parse(slurp(dir_ / "out" / "summary.json"));
+  ASSERT_EQ(s["files"]["snapshots"].size(), 4u);
+  EXPECT_EQ(s["files"]["snapshots"][1]["file"], "fields_20.csv");
+  const std::string f = slurp(dir_ / "out" / "fields_20.csv");
+  EXPECT_EQ(f.rfind("x,y,p,tx,ty,sx,sy,state", 0), 0u) << f.substr(0, 80);
+}
+
 TEST_F(CliDynamic, BadInputIsNamed) {
   expect_rejected([](json& d) { d["body"]["mass"] = -1.0; }, "body.mass");
   expect_rejected([](json& d) { d["body"]["spin"] = 1.0; }, "body.spin");
@@ -71,6 +81,7 @@ TEST_F(CliDynamic, BadInputIsNamed) {
   expect_rejected([](json& d) { d["loads"] = {{"force", {{"w", {{"value", 1.0}}}}}}; }, "loads.force.w");
   expect_rejected([](json& d) { d.erase("time"); }, "time");
   expect_rejected([](json& d) { d["normal_model"] = "quasi_static"; }, "loads.force.z");
+  expect_rejected([](json& d) { d["output"] = {{"snapshot_every", -1}}; }, "output.snapshot_every");
 }
 
 TEST_F(CliDynamic, UnconvergedStepStopsWithPartialResults) {

@@ -28,6 +28,9 @@ struct Extreme {
   bool hertz = false;    ///< exit 0: peak pressure within 1 %, force within 1e-9, approach within 0.5 % of Hertz
 };
 
+// ctest names show the parameter as GoogleTest prints it: the name, not raw bytes.
+void PrintTo(const Extreme& x, std::ostream* os) { *os << x.name; }
+
 const std::string k32 = " --set grid.nx=32 --set grid.ny=32";
 const std::string kSoft = " --set materials.body.E=1e3 --set materials.base.E=1e3";
 

@@ -50,6 +50,23 @@ TEST_F(CliInputHoles, DeepNestingIsExit2NamingThePlace) {
                "grid.x[0]", "nested");
 }
 
+// Keys whose value is kept as given (description, sweep values) and --set values are bounded
+// the same way, before any tree is built.
+TEST_F(CliInputHoles, DeepOrHugeValuesAnywhereAreExit2) {
+  const std::string deep = std::string(1000000, '[') + std::string(1000000, ']');
+  std::string text = example("paper-cylinder").dump();
+  text.replace(text.find("\"description\":"), 14, "\"description\": " + deep + ", \"x\":");
+  expect_error("validate " + write(text), "description[0]", "nested more than 64");
+  const std::string sweep = write(example("paper-cylinder").dump(), "sweep.json");
+  const std::string deep_arg = std::string(20000, '[') + std::string(20000, ']');  // one argument < 128 KiB
+  expect_error("solve " + sweep + " --set " + quote("sweep.dimensionless.gamma_bar=" + deep_arg),
+               "sweep.dimensionless.gamma_bar[0]", "nested");
+  expect_error("validate " + sweep + " --set " + quote("description=" + deep_arg), "description[0]", "nested");
+  const std::string c = write(example("cattaneo-sphere").dump(), "c.json");
+  expect_error("validate " + c + " --set normal.force=1e999", "normal.force", "1e999");
+  expect_error("solve " + c + " --set " + quote(R"(tangential.force=[-1e999, 0])"), "tangential.force[0]", "1e999");
+}
+
 TEST_F(CliInputHoles, OutOfRangeNumbersAndDuplicateKeysNameTheKey) {
   std::string text = example("hertz-sphere").dump(2);
   const std::string file = write(text.replace(text.find("\"force\": 100.0"), 14, "\"force\": 1e999"));

@@ -292,6 +292,18 @@ TEST(NativeTangential, CattaneoShiftAgreesWithIpopt) {
   EXPECT_LE(out.objective, f_ref + 1e-12 * std::abs(f_ref));  // the native point is the better one
 }
 
+const char* control_name(CattaneoProblem::Control c) {
+  switch (c) {
+    case CattaneoProblem::Control::shift: return "Shift";
+    case CattaneoProblem::Control::force_x: return "ForceX";
+    case CattaneoProblem::Control::force_xy: return "ForceXY";
+    case CattaneoProblem::Control::force_xy_moment: return "ForceXYAndMoment";
+  }
+  return "Unknown";
+}
+// ctest names show the parameter as GoogleTest prints it: the name, not raw bytes.
+void PrintTo(CattaneoProblem::Control c, std::ostream* os) { *os << control_name(c); }
+
 class ForceControl : public ::testing::TestWithParam<CattaneoProblem::Control> {};
 
 TEST_P(ForceControl, ResultantsAndMultipliersAgreeWithIpopt) {
@@ -316,7 +328,10 @@ TEST_P(ForceControl, ResultantsAndMultipliersAgreeWithIpopt) {
 
 INSTANTIATE_TEST_SUITE_P(NativeTangential, ForceControl,
                          ::testing::Values(CattaneoProblem::Control::force_x, CattaneoProblem::Control::force_xy,
-                                           CattaneoProblem::Control::force_xy_moment));
+                                           CattaneoProblem::Control::force_xy_moment),
+                         [](const ::testing::TestParamInfo<CattaneoProblem::Control>& p) {
+                           return std::string(control_name(p.param));
+                         });
 
 TEST(NativeTangential, PlaneStrainBoxAgreesWithIpopt) {
   // 2-D: one component, |tau| <= f as bounds; a Hertzian strip under a shift, then under Fx.

@@ -46,6 +46,13 @@ double observed_order(double error_dt, double error_half_dt) {
 
 std::string scheme_name(const ::testing::TestParamInfo<Scheme>& p) { return to_string(p.param); }
 
+}  // namespace
+
+// How GoogleTest (and so ctest's test names) prints the parameters: words, not raw bytes.
+void PrintTo(Scheme s, std::ostream* os) { *os << to_string(s); }
+
+namespace {
+
 StepperOptions with_scheme(Scheme scheme) {
   StepperOptions options;
   options.scheme = scheme;
@@ -252,6 +259,10 @@ struct SlidingCase {
   double tau_over_tstar;
   double dt_over_tau;
 };
+
+void PrintTo(const SlidingCase& c, std::ostream* os) {
+  *os << to_string(c.scheme) << ", tau/t* " << c.tau_over_tstar << ", dt/tau " << c.dt_over_tau;
+}
 
 class SlidingSphere : public ::testing::TestWithParam<SlidingCase> {};
 

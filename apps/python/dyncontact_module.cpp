@@ -1,0 +1,213 @@
+// The Python module `dyncontact`: solve a case (dict, JSON text or path) to a summary dict and
+// NumPy fields, the half-space operators, and the case model's input errors as Python
+// exceptions carrying the key. The solvers are the C++ ones (core/, nlp/), the run and its
+// summary the command line's (apps/tangential_run.hpp), so Python and `dyncontact solve` agree.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "case_model.hpp"
+#include "cli_common.hpp"
+#include "errors.hpp"
+#include "fields_writer.hpp"
+#include "linear_operator.hpp"
+#include "summary_writer.hpp"
+#include "tangential_run.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+/// JSON <-> Python through the json module (exact for numbers: both sides round-trip doubles).
+py::object to_python(const nlohmann::json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
+nlohmann::json from_python(const py::handle& o) {
+  return nlohmann::json::parse(py::module_::import("json").attr("dumps")(o).cast<std::string>());
+}
+
+/// A case given as a dict, JSON text, or a path (str or os.PathLike), validated.
+dc::Case case_from(const py::object& arg) {
+  if (py::isinstance<py::dict>(arg)) return dc::build_case(from_python(arg), ".");
+  const std::string text = py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first != std::string::npos && text[first] == '{') return dc::build_case(dc::parse_case_text(text, "case"), ".");
+  nlohmann::json doc = dc::read_case_file(text);
+  if (doc.is_object() && !doc.contains("name")) doc["name"] = std::filesystem::path(text).stem().string();
+  return dc::build_case(doc, ".");
+}
+
+/// A field on the grid as a NumPy array of shape (ny, nx) (3-D) or (nx,) (2-D); zeros when empty.
+template <typename T>
+py::array_t<T> grid_array(const dc::Grid& g, const std::vector<T>& v) {
+  std::vector<py::ssize_t> shape = g.dimension == 2 ? std::vector<py::ssize_t>{g.nx} : std::vector<py::ssize_t>{g.ny, g.nx};
+  py::array_t<T> a(shape);
+  T* out = a.mutable_data();
+  for (std::size_t i = 0; i < g.size(); ++i) out[i] = v.empty() ? T(0) : v[i];
+  return a;
+}
+
+py::dict fields_dict(const dc::Grid& g, const dc::cli::StaticFields& f) {
+  std::vector<double> x(g.size()), y(g.size());
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      x[static_cast<std::size_t>(j) * g.nx + i] = g.x0 + (i + 0.5) * g.dx;
+      y[static_cast<std::size_t>(j) * g.nx + i] = g.dimension == 2 ? 0.0 : g.y0 + (j + 0.5) * g.dy;
+    }
+  py::dict d;
+  d["x"] = grid_array(g, x);
+  d["y"] = grid_array(g, y);
+  d["p"] = grid_array(g, f.p);
+  d["tx"] = grid_array(g, f.tx);
+  d["ty"] = grid_array(g, f.ty);
+  d["sx"] = grid_array(g, f.sx);
+  d["sy"] = grid_array(g, f.sy);
+  d["state"] = grid_array(g, f.state);
+  return d;
+}
+
+py::dict solve(const py::object& case_arg, const py::object& out, bool progress) {
+  const dc::Case c = case_from(case_arg);
+  if (c.problem != dc::ProblemKind::normal && c.problem != dc::ProblemKind::tangential)
+    throw dc::InputError("problem", std::string("'") + dc::to_string(c.problem) +
+                                        "' is run by the command line (dyncontact solve); solve() takes normal "
+                                        "and tangential cases");
+  dc::cli::StaticRun run;
+  {
+    py::gil_scoped_release release;
+    run = dc::cli::run_static(c, progress);
+  }
+  nlohmann::json summary = run.summary;
+  if (!out.is_none()) {
+    const std::string dir = dc::cli::prepare_output_dir(c, py::str(py::module_::import("os").attr("fspath")(out)));
+    dc::cli::write_fields(dir, c.grid, run.fields.back());
+    summary["files"] = {{"summary", "summary.json"}, {"fields", "fields.csv"}};
+    dc::cli::write_summary(dir, summary);
+  }
+  py::dict result = to_python(summary);
+  result["fields"] = fields_dict(c.grid, run.fields.back());
+  return result;
+}
+
+/// A linear operator of the half-space, applied to NumPy vectors.
+class Operator {
+ public:
+  explicit Operator(std::unique_ptr<dc::LinearOperator> op) : op_(std::move(op)) {}
+  py::array_t<double> apply(const py::array_t<double, py::array::c_style | py::array::forcecast>& x) const {
+    if (static_cast<std::size_t>(x.size()) != op_->cols())
+      throw dc::InputError("x", "expected " + std::to_string(op_->cols()) + " values, got " + std::to_string(x.size()));
+    py::array_t<double> y(static_cast<py::ssize_t>(op_->rows()));
+    {
+      py::gil_scoped_release release;
+      op_->apply(x.data(), y.mutable_data());
+    }
+    return y;
+  }
+  std::size_t rows() const { return op_->rows(); }
+  std::size_t cols() const { return op_->cols(); }
+  std::string kind() const { return op_->kind(); }
+
+ private:
+  std::shared_ptr<dc::LinearOperator> op_;
+};
+
+dc::OperatorKind kind_of(const std::string& kind) {
+  if (kind == "dense") return dc::OperatorKind::dense;
+  if (kind == "fft") return dc::OperatorKind::fft;
+  if (kind == "auto") return dc::OperatorKind::automatic;
+  throw dc::InputError("kind", "expected auto, dense or fft, got '" + kind + "'");
+}
+
+}  // namespace
+
+PYBIND11_MODULE(dyncontact, m) {
+  m.doc() =
+      "dyncontact: frictional contact between an elastic body and an elastic half-space (after Spector & "
+      "Batra), solved as convex programs with certified results.\n\n"
+      "  solve(case)                    solve a normal or tangential case (dict, JSON text or path): the\n"
+      "                                 summary as a dict (keys of summary.json) with 'fields' (NumPy)\n"
+      "  Grid, Materials, HalfSpace     the discretised half-space and its influence operators\n"
+      "  InputError                     bad input; .key names the case key (e.g. 'grid.nx')\n\n"
+      "Example:\n"
+      "  import dyncontact, json\n"
+      "  r = dyncontact.solve(json.load(open('examples/hertz-sphere.json')))\n"
+      "  r['normal_force'], r['max_pressure'], r['fields']['p'].shape";
+
+  static py::exception<dc::InputError> input_error(m, "InputError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const dc::InputError& e) {
+      py::object err = py::handle(input_error.ptr())(e.what());
+      err.attr("key") = e.key();
+      PyErr_SetObject(input_error.ptr(), err.ptr());
+    }
+  });
+
+  m.def("solve", &solve, py::arg("case"), py::arg("out") = py::none(), py::arg("progress") = false,
+        "solve(case, out=None, progress=False) -> dict\n\n"
+        "Solves a normal or tangential case given as a dict, a JSON string or a path to a case file\n"
+        "(the format of CASES.md; `dyncontact example NAME` prints complete ones). Returns the\n"
+        "summary (the keys of summary.json: normal_force, approach, max_pressure, contact_area,\n"
+        "tangential_force, solver with its certificate, ...) with 'fields': NumPy arrays x, y, p,\n"
+        "tx, ty, sx, sy, state of shape (ny, nx) (2-D: (nx,)). No files are written unless `out`\n"
+        "names a folder (summary.json and fields.csv). Raises InputError (a ValueError whose .key\n"
+        "names the case key) for bad input.");
+
+  py::class_<dc::Grid>(m, "Grid", "A uniform grid of rectangular elements on the contact plane (m).")
+      .def(py::init([](int nx, int ny, double x_min, double x_max, double y_min, double y_max, int dimension) {
+             return dc::Grid::make(dimension, nx, ny, x_min, x_max, y_min, y_max);
+           }),
+           py::arg("nx"), py::arg("ny"), py::arg("x_min"), py::arg("x_max"), py::arg("y_min") = 0.0,
+           py::arg("y_max") = 0.0, py::arg("dimension") = 3,
+           "Grid(nx, ny, x_min, x_max, y_min, y_max, dimension=3): nx x ny elements over the rectangle\n"
+           "(2-D plane strain: dimension=2, ny=1, the y bounds unused).")
+      .def_readonly("nx", &dc::Grid::nx)
+      .def_readonly("ny", &dc::Grid::ny)
+      .def_readonly("dx", &dc::Grid::dx)
+      .def_readonly("dy", &dc::Grid::dy)
+      .def_readonly("dimension", &dc::Grid::dimension)
+      .def("size", &dc::Grid::size, "number of elements")
+      .def("__repr__", [](const dc::Grid& g) {
+        return "Grid(nx=" + std::to_string(g.nx) + ", ny=" + std::to_string(g.ny) +
+               ", dimension=" + std::to_string(g.dimension) + ")";
+      });
+
+  py::class_<dc::MaterialPair>(m, "Materials", "The elastic constants of the body and of the half-space (base).")
+      .def(py::init([](double body_E, double body_nu, double base_E, double base_nu) {
+             return dc::MaterialPair{dc::Elastic::from_E_nu(body_E, body_nu, "materials.body"),
+                                     dc::Elastic::from_E_nu(base_E, base_nu, "materials.base")};
+           }),
+           py::arg("body_E"), py::arg("body_nu"), py::arg("base_E"), py::arg("base_nu"),
+           "Materials(body_E, body_nu, base_E, base_nu): Young's moduli (Pa) and Poisson ratios.")
+      .def_property_readonly("E_star", &dc::MaterialPair::E_star, "contact modulus E* (Pa)");
+
+  py::class_<Operator>(m, "Operator", "A linear influence operator of the half-space (matrix-free).")
+      .def("apply", &Operator::apply, py::arg("x"),
+           "apply(x) -> ndarray: the operator times x (e.g. surface displacement (m) from pressure (Pa)).")
+      .def_property_readonly("rows", &Operator::rows)
+      .def_property_readonly("cols", &Operator::cols)
+      .def_property_readonly("kind", &Operator::kind, "dense or fft");
+
+  py::class_<dc::HalfSpace>(m, "HalfSpace",
+                            "The elastic half-space discretised on a grid: its influence operators (Boussinesq-Cerruti, "
+                            "element-wise constant tractions).")
+      .def(py::init([](const dc::Grid& g, const dc::MaterialPair& mat) { return dc::HalfSpace(g, mat); }),
+           py::arg("grid"), py::arg("materials"))
+      .def(
+          "normal", [](const dc::HalfSpace& h, const std::string& kind) { return Operator(h.normal(kind_of(kind))); },
+          py::arg("kind") = "auto",
+          "normal(kind='auto') -> Operator: normal relative displacement (m) from pressure (Pa), the\n"
+          "compliance of both bodies (the paper's B31). kind: auto, dense or fft.")
+      .def(
+          "tangential",
+          [](const dc::HalfSpace& h, const std::string& kind) { return Operator(h.tangential(kind_of(kind))); },
+          py::arg("kind") = "auto",
+          "tangential(kind='auto') -> Operator: tangential relative displacement from tangential traction\n"
+          "(components stacked: all x, then all y; the paper's B22).");
+}

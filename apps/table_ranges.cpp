@@ -1,0 +1,59 @@
+#include "table_ranges.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "errors.hpp"
+
+namespace dc::cli {
+namespace {
+
+/// The whole of `s` as a finite number (throws InputError for `option` otherwise).
+double to_number(const std::string& option, const std::string& s) {
+  const char* begin = s.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(begin, &end);
+  if (s.empty() || end == begin || *end != '\0')
+    throw InputError(option, "'" + s + "' is not a number (give start:stop:count or a list a,b,c)");
+  if (errno == ERANGE || !std::isfinite(v)) throw InputError(option, "'" + s + "' is not a finite number");
+  return v;
+}
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(text);
+  while (std::getline(in, part, sep)) parts.push_back(part);
+  if (!text.empty() && text.back() == sep) parts.emplace_back();
+  return parts;
+}
+
+}  // namespace
+
+std::vector<double> parse_table_range(const std::string& option, const std::string& text) {
+  if (text.empty()) throw InputError(option, "empty range (give start:stop:count or a list a,b,c)");
+  if (text.find(':') != std::string::npos) {
+    const std::vector<std::string> p = split(text, ':');
+    if (p.size() != 3) throw InputError(option, "'" + text + "': a range is start:stop:count");
+    const double start = to_number(option, p[0]), stop = to_number(option, p[1]);
+    const double count = to_number(option, p[2]);
+    if (count != std::floor(count) || count < 1 || count > kMaxTableValues)
+      throw InputError(option, "'" + text + "': count must be a whole number from 1 to " +
+                                   std::to_string(kMaxTableValues));
+    const int n = static_cast<int>(count);
+    if (n == 1 && start != stop) throw InputError(option, "'" + text + "': one value needs start = stop");
+    std::vector<double> values(n);
+    for (int i = 0; i < n; ++i) values[i] = n == 1 ? start : start + (stop - start) * i / (n - 1);
+    return values;
+  }
+  std::vector<double> values;
+  for (const std::string& s : split(text, ',')) values.push_back(to_number(option, s));
+  if (values.size() > static_cast<std::size_t>(kMaxTableValues))
+    throw InputError(option, "more than " + std::to_string(kMaxTableValues) + " values");
+  return values;
+}
+
+}  // namespace dc::cli

@@ -1,0 +1,40 @@
+#pragma once
+// Many independent work units (the lines of a creep-force table, the runs of a sweep) spread
+// over the threads of this process and, when started by `mpirun`, over the ranks of the job.
+// Dynamic assignment: rank 0 hands out the next unit to whichever rank asks (uneven units
+// balance themselves); every result is gathered to rank 0 in unit order. A unit's result is a
+// JSON value whose numbers survive the transport exactly, so rank 0 sees the same values
+// whichever rank or thread computed them (a serial run writes the same files).
+//
+// Threads: DYNCONTACT_THREADS (default: the hardware's cores) per process without MPI; one
+// worker per rank under MPI (start one rank per core).
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace dc::cli {
+
+/// This process's place in an MPI job started by a launcher (mpirun, srun), read from the
+/// launcher's environment without starting MPI: {rank, size}; {0, 1} when not launched so.
+struct LaunchRank {
+  int rank = 0;
+  int size = 1;
+  bool root() const { return rank == 0; }
+};
+LaunchRank launch_rank();
+
+/// Whether this build can run across MPI ranks.
+bool built_with_mpi();
+
+/// Runs work(u) for every u in [0, units). Returns, on rank 0, the results in unit order; on
+/// other ranks an empty vector. `done(finished, units)` is called on rank 0 (from this thread)
+/// as results arrive. `work` must not throw (a unit reports its own failure in its result);
+/// if it does, the message becomes the unit's result {"error": message}.
+/// Under a launcher with several ranks, a build without MPI throws InputError (every rank
+/// would run the whole job alone).
+std::vector<nlohmann::json> run_distributed(std::size_t units, const std::function<nlohmann::json(std::size_t)>& work,
+                                            const std::function<void(std::size_t, std::size_t)>& done);
+
+}  // namespace dc::cli

@@ -1,0 +1,26 @@
+#pragma once
+// Interrupting a long run (SIGINT/SIGTERM): the signal handler only raises a flag; the solver
+// loops, marching steps and sweeps poll it and unwind with dc::Interrupted, so the command line
+// can write what was finished and exit 128 + signal.
+#include <atomic>
+
+namespace dc {
+
+/// Thrown where a run notices the interrupt. Deliberately not a std::exception: the
+/// `catch (const std::exception&)` of a backend or its fallback must not swallow it.
+struct Interrupted {
+  int signal = 0;  ///< the signal that asked for it (0: requested otherwise, e.g. a test)
+};
+
+/// Raises the flag (async-signal-safe: one lock-free atomic store).
+void request_interrupt(int signal) noexcept;
+/// Whether an interrupt was requested.
+bool interrupt_requested() noexcept;
+/// The signal of the request (0 if none or not from a signal).
+int interrupt_signal() noexcept;
+/// Clears the flag (tests).
+void clear_interrupt() noexcept;
+/// Throws Interrupted when the flag is raised; cheap enough for every solver iteration.
+void throw_if_interrupted();
+
+}  // namespace dc

@@ -1,0 +1,181 @@
+// SIGINT/SIGTERM sent to running solves, histories and sweeps: the program stops within a
+// second, writes complete files for what it finished (summary.json valid JSON with status
+// "interrupted", every CSV row whole) and exits 128 + signal (130, 143).
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+using Clock = std::chrono::steady_clock;
+using dc::test::slurp;
+
+struct Stopped {
+  int code = -1;
+  double seconds_after_signal = 0.0;
+  std::string err;
+};
+
+class CliInterrupt : public dc::test::CliTest {
+ protected:
+  std::string write(const json& doc, const std::string& name = "case.json") const {
+    std::ofstream(dir_ / name) << doc.dump(2);
+    return name;
+  }
+
+  /// Starts `dyncontact ARGS` in the test folder, waits until `ready()` (at most 60 s), sends
+  /// `signal` and waits for the exit.
+  template <class Ready>
+  Stopped interrupt(const std::vector<std::string>& args, int signal, Ready ready) const {
+    const fs::path err = dir_ / "stderr.txt";
+    const pid_t pid = fork();
+    if (pid == 0) {
+      if (chdir(dir_.c_str()) != 0) _exit(127);
+      const int out_fd = open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      const int err_fd = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      dup2(out_fd, 1);
+      dup2(err_fd, 2);
+      std::vector<char*> argv{const_cast<char*>(DYNCONTACT_BINARY)};
+      for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+      argv.push_back(nullptr);
+      execv(DYNCONTACT_BINARY, argv.data());
+      _exit(127);
+    }
+    Stopped s;
+    const auto start = Clock::now();
+    int status = 0;
+    while (!ready() && Clock::now() - start < std::chrono::seconds(60)) {
+      if (waitpid(pid, &status, WNOHANG) == pid) {  // finished before it could be interrupted
+        s.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        s.err = slurp(err);
+        ADD_FAILURE() << "the run ended before the signal: " << s.err;
+        return s;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    const auto sent = Clock::now();
+    kill(pid, signal);
+    waitpid(pid, &status, 0);
+    s.seconds_after_signal = std::chrono::duration<double>(Clock::now() - sent).count();
+    s.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    s.err = slurp(err);
+    return s;
+  }
+
+  /// Ready once stderr shows the progress line (the solve has run for a second).
+  auto after_progress() const {
+    return [this] { return slurp(dir_ / "stderr.txt").find("solving") != std::string::npos; };
+  }
+
+  /// Every line of a CSV file has the header's number of columns and ends with a newline.
+  void expect_whole_rows(const fs::path& file, std::size_t rows) const {
+    SCOPED_TRACE(file.string());
+    const std::string text = slurp(file);
+    ASSERT_FALSE(text.empty());
+    EXPECT_EQ(text.back(), '\n');
+    std::size_t lines = 0, columns = 0;
+    std::size_t start = 0;
+    while (start < text.size()) {
+      const std::size_t end = text.find('\n', start);
+      ASSERT_NE(end, std::string::npos);
+      const std::string line = text.substr(start, end - start);
+      const std::size_t c = std::count(line.begin(), line.end(), ',') + 1;
+      if (lines == 0) columns = c;
+      ASSERT_EQ(c, columns) << "line " << lines + 1 << ": " << line;
+      ++lines;
+      start = end + 1;
+    }
+    if (rows > 0) {
+      EXPECT_EQ(lines, rows + 1);
+    }
+  }
+};
+
+// A single long solve (native, and Ipopt: its callback stops it): nothing finished, a summary
+// that says so.
+TEST_F(CliInterrupt, LongSolveStopsWithinASecond) {
+  for (const char* backend : {"native", "ipopt"}) {
+    SCOPED_TRACE(backend);
+    json c = dc::test::example_json("hertz-sphere");
+    c["grid"] = backend == std::string("native") ? json{{"nx", 1024}, {"ny", 1024}, {"extent", 1.3}}
+                                                 : json{{"nx", 128}, {"ny", 128}, {"extent", 1.3}};
+    c["solver"] = {{"backend", backend}, {"max_iter", 100000}, {"tol", 1e-14}, {"fallback", false}};
+    const Stopped s = interrupt({"solve", write(c), "--out", "res"}, SIGINT, after_progress());
+    EXPECT_EQ(s.code, 130) << s.err;
+    EXPECT_LT(s.seconds_after_signal, 1.0);
+    const json summary = json::parse(slurp(dir_ / "res" / "summary.json"));
+    EXPECT_EQ(summary["status"], "interrupted");
+    EXPECT_FALSE(fs::exists(dir_ / "res" / "fields.csv"));
+  }
+}
+
+// A loading history: the finished steps are in summary.json and their fields files are whole.
+TEST_F(CliInterrupt, HistoryKeepsTheFinishedSteps) {
+  json c = dc::test::example_json("cattaneo-sphere");
+  json history = json::array();
+  for (int k = 0; k < 4000; ++k) history.push_back({{"force", {-0.01 * (k % 1000), 0.0}}});
+  c["tangential"] = {{"regime", "shift"}, {"history", history}};
+  c["grid"] = {{"nx", 16}, {"ny", 16}, {"extent", 1.2}};
+  c["solver"] = {{"backend", "native"}};
+  const std::string file = write(c);
+  const Stopped s = interrupt({"solve", file, "--out", "res"}, SIGTERM, [this] {
+    return slurp(dir_ / "stderr.txt").find("solving") != std::string::npos;
+  });
+  EXPECT_EQ(s.code, 143) << s.err;
+  EXPECT_LT(s.seconds_after_signal, 1.0);
+  const json summary = json::parse(slurp(dir_ / "res" / "summary.json"));
+  EXPECT_EQ(summary["status"], "interrupted");
+  ASSERT_TRUE(summary.contains("steps"));
+  const std::size_t finished = summary["steps"].size();
+  EXPECT_GT(finished, 0u);
+  EXPECT_LT(finished, 4000u);
+  for (std::size_t k = 0; k < finished; ++k)
+    expect_whole_rows(dir_ / "res" / summary["steps"][k]["fields"].get<std::string>(), 16 * 16);
+  EXPECT_FALSE(fs::exists(dir_ / "res" / ("fields_" + std::to_string(finished) + ".csv")));
+}
+
+// A sweep of dynamic runs: the runs finished are written, the interrupted one up to its last
+// whole step, the rest not started.
+TEST_F(CliInterrupt, SweepWritesWhatItFinished) {
+  json c = dc::test::example_json("paper-cylinder");
+  json values = json::array();
+  for (int k = 0; k < 2000; ++k) values.push_back(0.2 + 0.0001 * k);
+  c["sweep"] = {{"dimensionless.gamma_bar", values}};
+  c["dimensionless"]["t_bar_end"] = 0.5;
+  c["time"] = {{"dt", 1e-4}, {"scheme", "bdf2"}};
+  c["output"] = {{"plots", false}};
+  const std::string file = write(c);
+  const Stopped s = interrupt({"solve", file, "--out", "res"}, SIGINT,
+                              [this] { return fs::exists(dir_ / "res" / "timeseries_1.csv"); });
+  EXPECT_EQ(s.code, 130) << s.err;
+  EXPECT_LT(s.seconds_after_signal, 1.0);
+  const json summary = json::parse(slurp(dir_ / "res" / "summary.json"));
+  EXPECT_EQ(summary["status"], "interrupted");
+  const json& runs = summary["runs"];
+  ASSERT_GE(runs.size(), 2u);
+  EXPECT_LT(runs.size(), 2000u);
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const bool last = k + 1 == runs.size();
+    EXPECT_EQ(runs[k]["status"], last ? "interrupted" : "completed") << k;
+    expect_whole_rows(dir_ / "res" / runs[k]["timeseries"].get<std::string>(),
+                      runs[k]["steps"].get<std::size_t>() + 1);
+  }
+}
+
+}  // namespace
