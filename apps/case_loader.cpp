@@ -49,7 +49,7 @@ bool numbered(const std::string& name, const std::string& stem, const std::strin
 bool is_result_file(const std::string& name) {
   static const std::set<std::string> fixed = {
       "summary.json", "compare.json", "fields.csv", "timeseries.csv", "plots.gp", "plots.log",
-      "line_x.dat", "line_y.dat", "map.dat", "reference_x.dat", "reference_y.dat"};
+      "line_x.dat", "line_y.dat", "map.dat", "reference_x.dat", "reference_y.dat", "body.vtu"};
   static const char* figures[] = {"pressure_x", "pressure_y", "traction_x", "traction_y", "pressure_map",
                                   "contact_map", "F_bar", "l_bar", "v_bar"};
   if (fixed.count(name)) return true;

@@ -24,6 +24,8 @@ const std::vector<BundledExample>& bundled_examples() {
         {"cattaneo-carter-2d", "Cattaneo to Carter: a cylinder under 0.5 mu P starts rolling, 5 steps (2-D, rolling history)"},
         {"paper-cylinder", "the paper's Section 5: cylinder under a growing driving moment, sweep of its rate (Figs 4-6)"},
         {"paper-cylinder-si", "the paper's Section 5 cylinder in SI units: steel, R = 0.5 m, 10 m/s, until it slides"},
+        {"finite-hemisphere", "FE steel hemisphere (R = 10 mm) on steel, 3.3 kN: Hertz for the pair (finite)"},
+        {"finite-torsion", "FE steel hemisphere on steel, 100 N, twisting moment, mu = 0.3 (finite, torsion)"},
     };
     for (auto& e : list) {
       e.text = embedded_example_text(e.name);

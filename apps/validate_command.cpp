@@ -12,6 +12,7 @@
 #include "resource_estimate.hpp"
 #include "result_limits.hpp"
 #include "cli_common.hpp"
+#include "finite_run.hpp"
 #include "paper_cylinder_run.hpp"
 #include "commands.hpp"
 
@@ -127,7 +128,9 @@ int run_validate(const ValidateArgs& args) {
       std::fprintf(stderr, "warning: grid: fewer than 6 elements across the contact; refine the grid\n");
   }
   if (c.problem == ProblemKind::paper_cylinder) validate_paper_cylinder(c);
-  else if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential)
+  else if (c.problem == ProblemKind::finite && !finite_supported())
+    std::printf("note: this build has no finite-element support (needs libgmsh-dev, libsuitesparse-dev)\n");
+  else if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential && c.problem != ProblemKind::finite)
     std::printf("note: the solver for problem '%s' is not implemented in this build yet\n", to_string(c.problem));
   std::printf("valid\n");
   return kExitOk;

@@ -19,4 +19,7 @@ Grid read_grid(const nlohmann::json& j, const Case& c, bool has_normal);
 /// The profile must be able to touch inside the grid (else the load cannot be carried).
 void check_contact_in_grid(const Case& c);
 
+/// Problem finite (core/case_fe_body.cpp): fe_body, grid (x/y bounds) and normal, all required.
+void read_finite_blocks(const nlohmann::json& document, Case& c, const std::string& base_dir);
+
 }  // namespace dc

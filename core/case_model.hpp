@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "case_fe_body.hpp"
 #include "case_paper_cylinder.hpp"
 #include "case_tangential.hpp"
 #include "grid.hpp"
@@ -51,7 +52,7 @@ struct OutputSpec {
 //    use the block: in any other problem the block is an error naming it.
 // Solvers (nlp/, dynamics/) and the command line take these specs, never JSON.
 // Blocks still to come this way: "dynamic" problems (body, loads, time, normal_model,
-// contact_model) and "fe_body".
+// contact_model).
 
 struct Case {
   std::string schema = "dyncontact/1";
@@ -68,6 +69,7 @@ struct Case {
   std::optional<FrictionSpec> friction;
   std::optional<TangentialSpec> tangential;        ///< problem tangential
   std::optional<PaperCylinderSpec> paper_cylinder;  ///< problem paper_cylinder
+  std::optional<FeBodySpec> fe_body;                ///< problem finite
   SolverSpec solver;
   OutputSpec output;
   std::vector<std::string> blocks;  ///< the top-level keys the case file gave

@@ -38,12 +38,13 @@ struct TangentialProblem::Impl {
   MaterialPair materials;
   FrictionLaw friction;
   OperatorKind kind;
-  HalfSpace half_space;
+  std::optional<HalfSpace> half_space;  // empty with given operators
   int comps;                         // tangential components: 1 (2-D) or 2 (3-D)
   std::size_t N;
   bool coupled;                      // kappa != 0: normal and tangential interact (4.26)-(4.27)
   std::shared_ptr<const LinearOperator> C;   // B31
-  std::unique_ptr<LinearOperator> Ct;        // B22
+  std::shared_ptr<const LinearOperator> Ct;  // B22
+  bool given_operators = false;              // finite contact: C, Ct given, no rolling
   std::unique_ptr<LinearOperator> B21, B32;  // kappa terms (only when coupled)
   std::unique_ptr<LinearOperator> Ct_up, B21_up;  // rolling: upstream displacement
   std::unique_ptr<LinearOperator> D_conv;          // steady rolling: Ct - Ct_up
@@ -56,15 +57,29 @@ struct TangentialProblem::Impl {
   std::vector<double> tau_warm;              // warm start of the tangential program
 
   Impl(const Grid& g, const MaterialPair& m, std::vector<double> h, FrictionLaw f, OperatorKind k)
-      : grid(g), materials(m), friction(std::move(f)), kind(k), half_space(g, m),
+      : grid(g), materials(m), friction(std::move(f)), kind(k), half_space(std::in_place, g, m),
         comps(g.dimension == 2 ? 1 : 2), N(g.size()), coupled(m.kappa() != 0.0),
         heights(std::move(h)) {
-    C = half_space.normal(kind);
-    Ct = half_space.tangential(kind);
+    C = half_space->normal(kind);
+    Ct = half_space->tangential(kind);
     if (coupled) {
-      B21 = half_space.tangential_from_normal(kind);
-      B32 = half_space.normal_from_tangential(kind);
+      B21 = half_space->tangential_from_normal(kind);
+      B32 = half_space->normal_from_tangential(kind);
     }
+    normal = std::make_unique<NormalProblem>(C, grid, heights);
+    reset();
+  }
+
+  /// Given compliances (the finite-contact constructor), no coupling.
+  Impl(const Grid& g, std::shared_ptr<const LinearOperator> normal_c, std::shared_ptr<const LinearOperator> tangential_c,
+       std::vector<double> h, FrictionLaw f)
+      : grid(g), materials{Elastic::make_rigid(), Elastic::make_rigid()}, friction(std::move(f)),
+        kind(OperatorKind::automatic),
+        comps(g.dimension == 2 ? 1 : 2), N(g.size()), coupled(false), given_operators(true), heights(std::move(h)) {
+    C = std::move(normal_c);
+    Ct = std::move(tangential_c);
+    if (Ct->rows() != comps * N || Ct->cols() != comps * N)
+      throw std::invalid_argument("tangential problem: the tangential compliance does not fit the grid");
     normal = std::make_unique<NormalProblem>(C, grid, heights);
     reset();
   }
@@ -398,8 +413,8 @@ struct TangentialProblem::Impl {
                                                           const std::array<double, 3>& given_increment,
                                                           const SolverSpec& solver, const ProgressCallback& progress,
                                                           std::string& why_not) {
-    if (!D_conv) D_conv = half_space.tangential_convective(1, kind);
-    if (coupled && !B21_up) B21_up = half_space.tangential_from_normal_shifted(1, kind);
+    if (!D_conv) D_conv = half_space->tangential_convective(1, kind);
+    if (coupled && !B21_up) B21_up = half_space->tangential_from_normal_shifted(1, kind);
     const std::size_t n = comps * N;
     SteadyRollingProgram program;
     program.D = D_conv.get();
@@ -489,8 +504,8 @@ struct TangentialProblem::Impl {
     if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
     // Rolling in +x: the material now at x was at x + dx one step (dt = dx / V) earlier.
     if (!Ct_up) {
-      Ct_up = half_space.tangential_shifted(1, kind);
-      if (coupled) B21_up = half_space.tangential_from_normal_shifted(1, kind);
+      Ct_up = half_space->tangential_shifted(1, kind);
+      if (coupled) B21_up = half_space->tangential_from_normal_shifted(1, kind);
     }
     // Per step the rigid slip is v dt = dx (creepage - phi y, eta + phi x): increments dx * mode.
     std::array<double, 3> increment{};
@@ -523,6 +538,13 @@ TangentialProblem::TangentialProblem(const Grid& grid, const MaterialPair& mater
                                      FrictionLaw friction, OperatorKind kind)
     : impl_(std::make_shared<Impl>(grid, materials, std::move(heights), std::move(friction), kind)), grid_(grid) {}
 
+TangentialProblem::TangentialProblem(const Grid& grid, std::shared_ptr<const LinearOperator> normal_compliance,
+                                     std::shared_ptr<const LinearOperator> tangential_compliance,
+                                     std::vector<double> heights, FrictionLaw friction)
+    : impl_(std::make_shared<Impl>(grid, std::move(normal_compliance), std::move(tangential_compliance),
+                                   std::move(heights), std::move(friction))),
+      grid_(grid) {}
+
 void TangentialProblem::reset() { impl_->reset(); }
 
 TangentialSolution TangentialProblem::step(const TangentialLoad& load, const SolverSpec& solver,
@@ -544,6 +566,7 @@ TangentialSolution TangentialProblem::step(const TangentialLoad& load, const Sol
 TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, const SolverSpec& solver,
                                                      const ProgressCallback& progress) {
   Impl& s = *impl_;
+  if (s.given_operators) throw InputError("tangential.regime", "rolling is not available for a finite body");
   s.reset();
   if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
   // auto / native: the steady state directly (Newton); the convex-program backends, or Newton
@@ -621,6 +644,7 @@ TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, co
 TangentialSolution TangentialProblem::roll(const RollingLoad& load, double distance, const SolverSpec& solver,
                                            const ProgressCallback& progress) {
   Impl& s = *impl_;
+  if (s.given_operators) throw InputError("tangential.regime", "rolling is not available for a finite body");
   if (!std::isfinite(distance) || distance < 0.0)
     throw InputError("tangential.distance", "the rolling distance must be a finite length >= 0 (m)");
   if (distance == 0.0) {

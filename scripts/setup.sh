@@ -19,6 +19,7 @@ PACKAGES=(
   coinor-libipopt-dev libeigen3-dev libnlopt-dev libnlopt-cxx-dev libfftw3-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev gnuplot-nox
   pkg-config cmake g++ make
+  libgmsh-dev libsuitesparse-dev  # finite-element bodies (DYNCONTACT_WITH_FE)
 )
 
 say() { printf 'setup: %s\n' "$*" >&2; }
