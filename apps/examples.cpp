@@ -24,6 +24,8 @@ const std::vector<BundledExample>& bundled_examples() {
         {"cattaneo-carter-2d", "Cattaneo to Carter: a cylinder under 0.5 mu P starts rolling, 5 steps (2-D, rolling history)"},
         {"paper-cylinder", "the paper's Section 5: cylinder under a growing driving moment, sweep of its rate (Figs 4-6)"},
         {"paper-cylinder-si", "the paper's Section 5 cylinder in SI units: steel, R = 0.5 m, 10 m/s, until it slides"},
+        {"bowling-ball", "a bowling ball launched sliding at 3 m/s: rolls after 2v0/(7 mu g) at 5/7 v0 (3-D, dynamic)"},
+        {"ball-impact", "a steel ball dropped at 1 m/s on steel: Hertz impact, 69 us, 1.74 kN, rebound (3-D, dynamic)"},
         {"finite-hemisphere", "FE steel hemisphere (R = 10 mm) on steel, 3.3 kN: Hertz for the pair (finite)"},
         {"finite-torsion", "FE steel hemisphere on steel, 100 N, twisting moment, mu = 0.3 (finite, torsion)"},
     };

@@ -12,6 +12,7 @@
 #include "finite_run.hpp"
 #include "paper_cylinder_run.hpp"
 #include "commands.hpp"
+#include "dynamic_run.hpp"
 #include "fields_writer.hpp"
 #include "plot_writer.hpp"
 #include "result_limits.hpp"
@@ -75,6 +76,7 @@ void print_tangential(const Case& c, const nlohmann::json& s) {
 int run_solve(const SolveArgs& args) {
   const Case c = load_case(args.case_path, args.sets, args.backend);
   if (c.problem == ProblemKind::paper_cylinder) return run_paper_cylinder(c, prepare_output_dir(c, args.out), args.quiet);
+  if (c.problem == ProblemKind::dynamic) return run_dynamic(c, prepare_output_dir(c, args.out), args.quiet);
   if (c.problem == ProblemKind::finite) return run_finite(c, prepare_output_dir(c, args.out), args.quiet);
   if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential) not_implemented(c.problem);
   const std::string dir = prepare_output_dir(c, args.out);

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "case_model.hpp"
+#include "json_block.hpp"
 
 namespace dc {
 
@@ -18,6 +19,13 @@ Grid read_grid(const nlohmann::json& j, const Case& c, bool has_normal);
 
 /// The profile must be able to touch inside the grid (else the load cannot be carried).
 void check_contact_in_grid(const Case& c);
+
+/// {"value": v, "rate": r} at `parent.k` (both default 0): a load component v + r t.
+inline ValueRate read_value_rate(const JsonBlock& parent, const char* k) {
+  const JsonBlock v = parent.child(k);
+  v.allow({"value", "rate"});
+  return {v.number_or("value", 0.0), v.number_or("rate", 0.0)};
+}
 
 /// Problem finite (core/case_fe_body.cpp): fe_body, grid (x/y bounds) and normal, all required.
 void read_finite_blocks(const nlohmann::json& document, Case& c, const std::string& base_dir);

@@ -107,8 +107,10 @@ SolverSpec parse_solver(const json& j) {
 
 OutputSpec parse_output(const json& j) {
   JsonBlock o(j, "output");
-  o.allow({"dir", "fields", "plots"});
+  o.allow({"dir", "fields", "plots", "snapshot_every"});
   OutputSpec out;
+  out.snapshot_every = o.integer_or("snapshot_every", 0);
+  if (out.snapshot_every < 0) throw InputError("output.snapshot_every", "must be 0 (none) or a number of steps");
   out.dir = o.string_or("dir", "");
   out.fields = o.boolean_or("fields", true);
   out.plots = o.boolean_or("plots", true);
@@ -253,8 +255,8 @@ namespace {
 
 /// Which problems use each optional top-level block (the keys every problem takes - schema,
 /// name, description, problem, dimension, solver, output - are not listed). A block given to
-/// a problem that does not use it is an error naming it. `dynamic` and `finite` take every
-/// block until their readers list theirs here.
+/// a problem that does not use it is an error naming it. `finite` takes every block until its
+/// reader lists its own here.
 struct BlockUse {
   const char* block;
   std::vector<ProblemKind> problems;
@@ -262,15 +264,17 @@ struct BlockUse {
 const std::vector<BlockUse>& block_uses() {
   using P = ProblemKind;
   static const std::vector<BlockUse> uses = {
-      {"materials", {P::normal, P::tangential, P::paper_cylinder, P::finite}},
-      {"profile", {P::normal, P::tangential, P::paper_cylinder}},
-      {"grid", {P::normal, P::tangential, P::paper_cylinder, P::finite}},
+      {"materials", {P::normal, P::tangential, P::paper_cylinder, P::dynamic, P::finite}},
+      {"profile", {P::normal, P::tangential, P::paper_cylinder, P::dynamic}},
+      {"grid", {P::normal, P::tangential, P::paper_cylinder, P::dynamic, P::finite}},
       {"normal", {P::normal, P::tangential, P::paper_cylinder, P::finite}},
-      {"friction", {P::tangential, P::paper_cylinder, P::finite}},
+      {"friction", {P::tangential, P::paper_cylinder, P::dynamic, P::finite}},
       {"tangential", {P::tangential, P::finite}},
-      {"body", {P::paper_cylinder}},
-      {"loads", {P::paper_cylinder}},
-      {"time", {P::paper_cylinder}},
+      {"body", {P::paper_cylinder, P::dynamic}},
+      {"loads", {P::paper_cylinder, P::dynamic}},
+      {"time", {P::paper_cylinder, P::dynamic}},
+      {"normal_model", {P::dynamic}},
+      {"contact_model", {P::dynamic}},
       {"traction_model", {P::paper_cylinder}},
       {"dimensionless", {P::paper_cylinder}},
       {"sweep", {P::paper_cylinder}},
@@ -280,7 +284,6 @@ const std::vector<BlockUse>& block_uses() {
 }
 
 void reject_unused_blocks(const JsonBlock& top, ProblemKind problem) {
-  if (problem == ProblemKind::dynamic) return;
   for (const BlockUse& use : block_uses()) {
     if (!top.has(use.block)) continue;
     if (std::find(use.problems.begin(), use.problems.end(), problem) != use.problems.end()) continue;
@@ -301,7 +304,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   JsonBlock top(document, "");
   top.allow({"schema", "name", "description", "problem", "dimension", "materials", "profile", "grid", "normal",
              "friction", "tangential", "fe_body", "body", "loads", "time", "traction_model", "dimensionless",
-             "solver", "sweep", "output"});
+             "solver", "sweep", "output", "normal_model", "contact_model"});
   Case c;
   c.source = document;
   for (auto it = document.begin(); it != document.end(); ++it) c.blocks.push_back(it.key());
@@ -327,7 +330,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   }
   const bool has_profile = required("profile");
   if (has_profile) c.profile = read_profile(top.at("profile"), c.dimension, base_dir);
-  const bool has_normal = required("normal");
+  bool has_normal = required("normal");
   if (has_normal) c.normal = read_normal(top.at("normal"), "normal");
   if (top.has("friction") || c.problem == ProblemKind::tangential)
     c.friction = parse_friction(top.at("friction"));
@@ -337,6 +340,10 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   }
   if (top.has("solver")) c.solver = parse_solver(top.at("solver"));
   if (top.has("output")) c.output = parse_output(top.at("output"));
+  if (c.problem == ProblemKind::dynamic) {
+    c.dynamic = read_dynamic(document, c);
+    if (!has_normal) has_normal = dynamic_sizing_load(*c.dynamic, c, c.normal);
+  }
   if (finite) read_finite_blocks(document, c, base_dir);  // core/case_fe_body.cpp
   if (required("grid") && !finite) {
     if (!has_profile) throw InputError("profile", "missing required key (the grid needs a profile)");

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "case_fe_body.hpp"
+#include "case_dynamic.hpp"
 #include "case_paper_cylinder.hpp"
 #include "case_tangential.hpp"
 #include "grid.hpp"
@@ -41,6 +42,7 @@ struct OutputSpec {
   std::string dir;       ///< empty: out/<name>
   bool fields = true;
   bool plots = true;
+  int snapshot_every = 0;  ///< dynamic: the contact fields every k steps (0: none)
 };
 
 // Reading a block (the pattern every block follows; core/case_model.cpp):
@@ -51,8 +53,7 @@ struct OutputSpec {
 //  - build_case() calls the reader, and kBlockUses (case_model.cpp) lists the problems that
 //    use the block: in any other problem the block is an error naming it.
 // Solvers (nlp/, dynamics/) and the command line take these specs, never JSON.
-// Blocks still to come this way: "dynamic" problems (body, loads, time, normal_model,
-// contact_model).
+// Blocks still to come this way: none.
 
 struct Case {
   std::string schema = "dyncontact/1";
@@ -70,6 +71,7 @@ struct Case {
   std::optional<TangentialSpec> tangential;        ///< problem tangential
   std::optional<PaperCylinderSpec> paper_cylinder;  ///< problem paper_cylinder
   std::optional<FeBodySpec> fe_body;                ///< problem finite
+  std::optional<DynamicSpec> dynamic;               ///< problem dynamic
   SolverSpec solver;
   OutputSpec output;
   std::vector<std::string> blocks;  ///< the top-level keys the case file gave

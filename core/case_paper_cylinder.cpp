@@ -4,6 +4,7 @@
 
 #include <limits>
 
+#include "case_blocks.hpp"
 #include "case_model.hpp"
 #include "errors.hpp"
 #include "json_block.hpp"
@@ -28,12 +29,6 @@ void read_dimensionless(const JsonBlock& d, PaperCylinderSpec& s) {
     if (e.is_string() && e.get<std::string>() == "inf") s.eta = std::numeric_limits<double>::infinity();
     else s.eta = d.number("eta");
   }
-}
-
-ValueRate value_rate(const JsonBlock& parent, const char* k) {
-  const JsonBlock v = parent.child(k);
-  v.allow({"value", "rate"});
-  return {v.number_or("value", 0.0), v.number_or("rate", 0.0)};
 }
 
 /// body, loads, time of the dimensional inputs; the model's own limits on the derived
@@ -70,11 +65,11 @@ void read_dimensional(const JsonBlock& top, const Case& c, PaperCylinderSpec& s)
   loads.allow({"force", "moment"});
   const JsonBlock force = loads.child("force");
   force.allow({"x", "z"});
-  b.force_z = value_rate(force, "z");
-  if (force.has("x")) b.force_x = value_rate(force, "x");
+  b.force_z = read_value_rate(force, "z");
+  if (force.has("x")) b.force_x = read_value_rate(force, "x");
   const JsonBlock moment = loads.child("moment");
   moment.allow({"y"});
-  b.moment_y = value_rate(moment, "y");
+  b.moment_y = read_value_rate(moment, "y");
   if (b.force_z.rate != 0.0) throw InputError("loads.force.z.rate", "the paper's model keeps the normal load constant");
   if (b.force_x.rate != 0.0) throw InputError("loads.force.x.rate", "the paper's model takes a constant T_ex");
   if (!(-b.force_z.value > 0.0))

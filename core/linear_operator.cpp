@@ -1,12 +1,10 @@
 #include "linear_operator.hpp"
 
 #include <algorithm>
-#include <cstdlib>
-#include <mutex>
-#include <thread>
 #include <stdexcept>
 
-#include <fftw3.h>
+#include "fft_planning.hpp"
+#include "padded_fft.hpp"
 
 namespace dc {
 namespace {
@@ -63,114 +61,60 @@ class DenseConvolution final : public ConvolutionBase {
   Eigen::MatrixXd matrix_;
 };
 
-/// Transforms of at least this many points are planned with FFTW_MEASURE and threads.
-constexpr std::size_t kLargeTransform = 1024u * 1024u;
-
-std::mutex& planner_mutex() {
-  static std::mutex m;
-  return m;
-}
-
-/// Threads for large transforms: the hardware's cores (DYNCONTACT_THREADS overrides).
-int fft_threads() {
-  static const int threads = [] {
-    fftw_init_threads();
-    int n = static_cast<int>(std::thread::hardware_concurrency());
-    if (const char* env = std::getenv("DYNCONTACT_THREADS")) n = std::atoi(env);
-    return std::max(1, n);
-  }();
-  return threads;
-}
-
-/// Smallest n' >= n whose prime factors are 2, 3, 5 and 7 (fast FFT lengths).
-int fft_size(int n) {
-  for (int m = n;; ++m) {
-    int r = m;
-    for (int p : {2, 3, 5, 7})
-      while (r % p == 0) r /= p;
-    if (r == 1) return m;
-  }
-}
-
 /// Zero-padded (linear, not circular) convolution by FFTW: the kernel spectra and plans are
-/// made once; every apply() does n_in forward and n_out inverse transforms.
+/// made once; every apply() does n_in forward and n_out inverse transforms (padded_fft.hpp).
 class FftConvolution final : public ConvolutionBase {
  public:
   FftConvolution(const Grid& grid, std::vector<KernelTable> blocks, int n_out, int n_in)
-      : ConvolutionBase(grid, std::move(blocks), n_out, n_in) {
-    mx_ = grid_.nx == 1 ? 1 : fft_size(2 * grid_.nx - 1);
-    my_ = grid_.ny == 1 ? 1 : fft_size(2 * grid_.ny - 1);
-    mxc_ = mx_ / 2 + 1;
-    const std::size_t nreal = static_cast<std::size_t>(mx_) * my_;
-    const std::size_t ncplx = static_cast<std::size_t>(mxc_) * my_;
-    real_ = fftw_alloc_real(nreal);
-    cplx_ = fftw_alloc_complex(ncplx);
-    {
-      // Planning is not thread-safe in FFTW; large transforms are measured and threaded.
-      std::lock_guard<std::mutex> lock(planner_mutex());
-      const bool large = nreal >= kLargeTransform;
-      fftw_plan_with_nthreads(large ? fft_threads() : 1);
-      const unsigned flags = large ? FFTW_MEASURE : FFTW_ESTIMATE;
-      forward_ = fftw_plan_dft_r2c_2d(my_, mx_, real_, cplx_, flags);
-      inverse_ = fftw_plan_dft_c2r_2d(my_, mx_, cplx_, real_, flags);
-    }
-    if (!forward_ || !inverse_) throw std::runtime_error("FFTW could not plan the convolution");
+      : ConvolutionBase(grid, std::move(blocks), n_out, n_in),
+        fft_(grid_.nx, grid_.ny, grid_.nx == 1 ? 1 : fft_good_size(2 * grid_.nx - 1),
+             grid_.ny == 1 ? 1 : fft_good_size(2 * grid_.ny - 1)) {
+    const int mx = fft_.mx(), my = fft_.my();
+    const std::size_t ncplx = fft_.spectrum_size();
+    const double norm = 1.0 / (static_cast<double>(mx) * my);
     kernel_spectra_.resize(2 * blocks_.size() * ncplx);
+    std::vector<double> box(static_cast<std::size_t>(mx) * my), spectrum;
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
-      std::fill(real_, real_ + nreal, 0.0);
+      std::fill(box.begin(), box.end(), 0.0);
       const KernelTable& t = blocks_[b];
       for (int dj = -(grid_.ny - 1); dj <= grid_.ny - 1; ++dj)
         for (int di = -(grid_.nx - 1); di <= grid_.nx - 1; ++di)
-          real_[wrap(di, mx_) + static_cast<std::size_t>(mx_) * wrap(dj, my_)] = t.at(di, dj);
-      fftw_execute(forward_);
-      for (std::size_t k = 0; k < ncplx; ++k) {
-        kernel_spectra_[2 * (b * ncplx + k)] = cplx_[k][0] / double(nreal);
-        kernel_spectra_[2 * (b * ncplx + k) + 1] = cplx_[k][1] / double(nreal);
-      }
+          box[wrap(di, mx) + static_cast<std::size_t>(mx) * wrap(dj, my)] = t.at(di, dj);
+      fft_.periodic_forward(box, spectrum);
+      for (std::size_t k = 0; k < 2 * ncplx; ++k) kernel_spectra_[2 * b * ncplx + k] = spectrum[k] * norm;
     }
     if (keep_spectra()) input_spectra_.resize(2 * static_cast<std::size_t>(n_in_) * ncplx);
   }
-  ~FftConvolution() override {
-    fftw_destroy_plan(forward_);
-    fftw_destroy_plan(inverse_);
-    fftw_free(real_);
-    fftw_free(cplx_);
-  }
-  FftConvolution(const FftConvolution&) = delete;
-  FftConvolution& operator=(const FftConvolution&) = delete;
 
   void apply(const double* x, double* y) const override {
     const std::size_t N = grid_.size();
-    const std::size_t nreal = static_cast<std::size_t>(mx_) * my_;
-    const std::size_t ncplx = static_cast<std::size_t>(mxc_) * my_;
+    const std::size_t ncplx = fft_.spectrum_size();
+    double* spectrum = fft_.spectrum();
+    if (!keep_spectra()) {  // one block: multiply in place
+      fft_.forward(x);
+      multiply(kernel_spectra_.data(), spectrum, ncplx);
+      fft_.inverse(y);
+      return;
+    }
     for (int c = 0; c < n_in_; ++c) {
-      std::fill(real_, real_ + nreal, 0.0);
-      for (int j = 0; j < grid_.ny; ++j)
-        std::copy_n(x + c * N + grid_.index(0, j), grid_.nx, real_ + static_cast<std::size_t>(mx_) * j);
-      fftw_execute(forward_);
-      if (keep_spectra()) std::copy_n(&cplx_[0][0], 2 * ncplx, input_spectra_.data() + 2 * c * ncplx);
+      fft_.forward(x + c * N);
+      std::copy_n(spectrum, 2 * ncplx, input_spectra_.data() + 2 * c * ncplx);
     }
     for (int r = 0; r < n_out_; ++r) {
       // Spectral product, written out (std::complex's operator* guards against inf/nan and is
       // several times slower in this loop).
-      if (!keep_spectra()) {
-        multiply(kernel_spectra_.data() + 2 * r * ncplx, ncplx);
-      } else {
-        for (std::size_t k = 0; k < ncplx; ++k) {
-          double re = 0.0, im = 0.0;
-          for (int c = 0; c < n_in_; ++c) {
-            const double* kern = kernel_spectra_.data() + 2 * ((r * n_in_ + c) * ncplx + k);
-            const double* in = input_spectra_.data() + 2 * (c * ncplx + k);
-            re += kern[0] * in[0] - kern[1] * in[1];
-            im += kern[0] * in[1] + kern[1] * in[0];
-          }
-          cplx_[k][0] = re;
-          cplx_[k][1] = im;
+      for (std::size_t k = 0; k < ncplx; ++k) {
+        double re = 0.0, im = 0.0;
+        for (int c = 0; c < n_in_; ++c) {
+          const double* kern = kernel_spectra_.data() + 2 * ((r * n_in_ + c) * ncplx + k);
+          const double* in = input_spectra_.data() + 2 * (c * ncplx + k);
+          re += kern[0] * in[0] - kern[1] * in[1];
+          im += kern[0] * in[1] + kern[1] * in[0];
         }
+        spectrum[2 * k] = re;
+        spectrum[2 * k + 1] = im;
       }
-      fftw_execute(inverse_);
-      for (int j = 0; j < grid_.ny; ++j)
-        std::copy_n(real_ + static_cast<std::size_t>(mx_) * j, grid_.nx, y + r * N + grid_.index(0, j));
+      fft_.inverse(y + r * N);
     }
   }
   std::string kind() const override { return "fft"; }
@@ -179,20 +123,17 @@ class FftConvolution final : public ConvolutionBase {
   static std::size_t wrap(int d, int m) { return static_cast<std::size_t>(d < 0 ? d + m : d); }
   /// A single block multiplies in place; several keep the input spectra.
   bool keep_spectra() const { return n_in_ > 1 || n_out_ > 1; }
-  /// cplx_ *= kernel (interleaved re/im), in place.
-  void multiply(const double* kern, std::size_t ncplx) const {
+  /// s *= kernel (both interleaved re/im), in place.
+  static void multiply(const double* kern, double* s, std::size_t ncplx) {
     for (std::size_t k = 0; k < ncplx; ++k) {
-      const double re = cplx_[k][0], im = cplx_[k][1];
-      cplx_[k][0] = kern[2 * k] * re - kern[2 * k + 1] * im;
-      cplx_[k][1] = kern[2 * k] * im + kern[2 * k + 1] * re;
+      const double re = s[2 * k], im = s[2 * k + 1];
+      s[2 * k] = kern[2 * k] * re - kern[2 * k + 1] * im;
+      s[2 * k + 1] = kern[2 * k] * im + kern[2 * k + 1] * re;
     }
   }
 
-  int mx_ = 1, my_ = 1, mxc_ = 1;
-  double* real_ = nullptr;
-  fftw_complex* cplx_ = nullptr;
-  fftw_plan forward_ = nullptr, inverse_ = nullptr;
-  std::vector<double> kernel_spectra_;               ///< interleaved re/im, one spectrum per block
+  mutable PaddedFft fft_;
+  std::vector<double> kernel_spectra_;               ///< interleaved re/im, one spectrum per block, 1/(mx my) included
   mutable std::vector<double> input_spectra_;        ///< interleaved re/im, one per input
 };
 

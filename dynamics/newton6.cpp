@@ -42,12 +42,14 @@ NewtonResult solve_newton6(const System6& system, Vector6d& x, double scale,
       out.status = NewtonStatus::max_iterations;
       return out;
     }
-    for (int j = 0; j < 6; ++j) {  // forward differences, one column per unknown
-      Vector6d xp = x;
-      const double h = fd_relative * std::max(std::abs(x(j)), scale);
-      xp(j) += h;
-      jacobian.col(j) = (system.residual(xp) - r) / (xp(j) - x(j));
-      ++out.evaluations;
+    if (!system.jacobian(x, jacobian)) {
+      for (int j = 0; j < 6; ++j) {  // forward differences, one column per unknown
+        Vector6d xp = x;
+        const double h = fd_relative * std::max(std::abs(x(j)), scale);
+        xp(j) += h;
+        jacobian.col(j) = (system.residual(xp) - r) / (xp(j) - x(j));
+        ++out.evaluations;
+      }
     }
     const Eigen::FullPivLU<Matrix6d> lu(jacobian);
     if (!jacobian.allFinite() || !lu.isInvertible()) {

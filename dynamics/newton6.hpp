@@ -14,6 +14,13 @@ class System6 {
  public:
   virtual ~System6() = default;
   virtual Vector6d residual(const Vector6d& x) const = 0;
+  /// dr/dx at x, right after residual(x) was evaluated there; false: not available (forward
+  /// differences are used, 6 more residuals).
+  virtual bool jacobian(const Vector6d& x, Matrix6d& J) const {
+    (void)x;
+    (void)J;
+    return false;
+  }
 };
 
 struct NewtonOptions {

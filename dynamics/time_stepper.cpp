@@ -28,9 +28,9 @@ Bdf bdf2(double ratio) {
 /// The residual of one step in the unknowns x = (V_{K+1}, rho Omega_{K+1}), in m/s.
 class StepResidual final : public System6 {
  public:
-  StepResidual(const RigidBody& body, const WrenchFunction& wrench, const RigidBodyState& now,
-               const RigidBodyState* before, const Bdf& c, double dt)
-      : body_(body), wrench_(wrench), beta_(c.b * dt), time_(now.time + dt),
+  StepResidual(const RigidBody& body, const WrenchFunction& wrench, const WrenchJacobianFunction* jacobian,
+               const RigidBodyState& now, const RigidBodyState* before, const Bdf& c, double dt)
+      : body_(body), wrench_(wrench), wrench_jacobian_(jacobian), beta_(c.b * dt), time_(now.time + dt),
         rho_(body.gyration_radius()), q_now_(now.orientation),
         scale_inverse_inertia_(rho_ * body.inertia_world(now.orientation).inverse()) {
     position_history_ = c.a0 * now.position;
@@ -75,9 +75,28 @@ class StepResidual final : public System6 {
     return r;
   }
 
+  /// dr/dx from the wrench's sensitivity: R = history + beta V, Omega = x_tail / rho; the
+  /// orientation's dependence on Omega (O(beta Omega) relative) is left out of d(I_world Omega).
+  bool jacobian(const Vector6d& x, Matrix6d& J) const override {
+    if (!wrench_jacobian_ || !*wrench_jacobian_) return false;
+    const StepKinematics k = kinematics(x);
+    const WrenchJacobian d = (*wrench_jacobian_)(k);
+    if (!d.valid) return false;
+    const Eigen::Matrix<double, 6, 3> dV = beta_ * d.position + d.velocity;  // d(F, M)/dV
+    const Eigen::Matrix<double, 6, 3> dW = d.omega / rho_;                    // d(F, M)/d(rho Omega)
+    const double beta_m = beta_ / body_.mass();
+    J.block<3, 3>(0, 0) = Eigen::Matrix3d::Identity() - beta_m * dV.topRows<3>();
+    J.block<3, 3>(0, 3) = -beta_m * dW.topRows<3>();
+    J.block<3, 3>(3, 0) = -beta_ * scale_inverse_inertia_ * dV.bottomRows<3>();
+    J.block<3, 3>(3, 3) =
+        scale_inverse_inertia_ * (body_.inertia_world(k.orientation) / rho_ - beta_ * dW.bottomRows<3>());
+    return J.allFinite();
+  }
+
  private:
   const RigidBody& body_;
   const WrenchFunction& wrench_;
+  const WrenchJacobianFunction* wrench_jacobian_;
   double beta_, time_, rho_;
   Eigen::Quaterniond q_now_;
   Eigen::Matrix3d scale_inverse_inertia_;
@@ -100,6 +119,11 @@ bool RigidBodyStepper::continues_history(const RigidBodyState& state) const {
 }
 
 StepReport RigidBodyStepper::step(RigidBodyState& state, double dt, const WrenchFunction& wrench) {
+  return step(state, dt, wrench, WrenchJacobianFunction());
+}
+
+StepReport RigidBodyStepper::step(RigidBodyState& state, double dt, const WrenchFunction& wrench,
+                                  const WrenchJacobianFunction& jacobian) {
   if (!(std::isfinite(dt) && dt > 0.0)) throw InputError("dt", "must be a positive finite step");
   if (!(std::abs(state.orientation.norm() - 1.0) <= 1e-9))
     throw InputError("state.orientation", "must be a unit quaternion");
@@ -108,7 +132,7 @@ StepReport RigidBodyStepper::step(RigidBodyState& state, double dt, const Wrench
   const bool multistep = options_.scheme == Scheme::bdf2 && continues_history(state);
   report.scheme_used = multistep ? Scheme::bdf2 : Scheme::bdf1;
   const Bdf c = multistep ? bdf2(dt / (last_.time - previous_.time)) : Bdf{1.0, 0.0, 1.0};
-  const StepResidual system(body_, wrench, state, multistep ? &previous_ : nullptr, c, dt);
+  const StepResidual system(body_, wrench, &jacobian, state, multistep ? &previous_ : nullptr, c, dt);
 
   Vector6d x;  // initial guess: the start-of-step velocities
   x << state.velocity, system.rho() * state.omega;

@@ -44,6 +44,10 @@ class RigidBodyStepper {
   /// unchanged and the report says why. bdf2 uses the state before the last step as its history
   /// when `state` is exactly the one this stepper produced last; otherwise it restarts with bdf1.
   [[nodiscard]] StepReport step(RigidBodyState& state, double dt, const WrenchFunction& wrench);
+  /// The same with the wrench's sensitivity for Newton's Jacobian (no finite differences: one
+  /// wrench evaluation per Newton iteration and line-search trial).
+  [[nodiscard]] StepReport step(RigidBodyState& state, double dt, const WrenchFunction& wrench,
+                                const WrenchJacobianFunction& jacobian);
 
   /// Forgets the history (the next bdf2 step is a bdf1 start step).
   void reset() { has_history_ = false; }

@@ -28,4 +28,16 @@ struct Wrench {
 /// of up to a few pointers without allocating.
 using WrenchFunction = std::function<Wrench(const StepKinematics&)>;
 
+/// The sensitivity of the wrench (rows F, M) to the end-of-step position R, velocity V and
+/// angular velocity Omega (columns x, y, z; world frame); the orientation's share is left out.
+struct WrenchJacobian {
+  Eigen::Matrix<double, 6, 3> position = Eigen::Matrix<double, 6, 3>::Zero();
+  Eigen::Matrix<double, 6, 3> velocity = Eigen::Matrix<double, 6, 3>::Zero();
+  Eigen::Matrix<double, 6, 3> omega = Eigen::Matrix<double, 6, 3>::Zero();
+  bool valid = true;  ///< false: not available (Newton falls back to finite differences)
+};
+
+/// Called right after the WrenchFunction at the same kinematics (it may reuse that evaluation).
+using WrenchJacobianFunction = std::function<WrenchJacobian(const StepKinematics&)>;
+
 }  // namespace dc::dynamics

@@ -1,6 +1,7 @@
 #pragma once
 // Which backends to try, in order, for a requested backend name and problem size.
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,7 @@ struct TimedOutcome {
   SolveOutcome outcome;
   double time_s = 0.0;
 };
-using NativeSolver = SolveOutcome (*)(const QuadraticProgram&, const SolveOptions&);
+using NativeSolver = std::function<SolveOutcome(const QuadraticProgram&, const SolveOptions&)>;
 TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp, const SolveOptions& options,
                          NativeSolver native);
 

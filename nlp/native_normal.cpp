@@ -9,48 +9,19 @@ namespace dc {
 
 SolveOutcome solve_normal_native(const QuadraticProgram& qp, const SolveOptions& options) {
   const std::size_t n = qp.c.size();
-  if (qp.equalities.size() > 1 || !qp.disks.empty())
-    throw std::invalid_argument("native normal solver: at most one equality and no disks");
-  const bool force_control = qp.equalities.size() == 1;
-
-  std::vector<char> free(n, 1);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!qp.lower.empty() && qp.lower[i] != 0.0)
-      throw std::invalid_argument("native normal solver: lower bounds must be 0");
-    if (!qp.upper.empty() && qp.upper[i] <= 0.0) free[i] = 0;
-  }
-  const std::size_t n_free = static_cast<std::size_t>(std::count(free.begin(), free.end(), 1));
+  const NormalQpForm form = read_normal_qp(qp);
+  const bool force_control = form.force_control;
+  const std::vector<char>& free = form.free;
+  const std::size_t n_free = form.n_free;
   SolveOutcome out;
   if (n_free == 0) {
     out.x.assign(n, 0.0);
     out.message = "no element can carry load";
     return out;
   }
-  double total = 0.0;  // sum x required under force control
-  if (force_control) {
-    const auto& eq = qp.equalities.front();
-    double a0 = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (free[i]) {
-        if (a0 == 0.0) a0 = eq.a[i];
-        if (std::abs(eq.a[i] - a0) > 1e-12 * std::abs(a0))
-          throw std::invalid_argument("native normal solver: equality weights must be equal");
-      }
-    total = eq.b / a0;
-    if (!(total > 0.0)) throw std::invalid_argument("native normal solver: the load must be positive");
-  }
-
-  std::vector<double> x(n, 0.0), g(n), t(n, 0.0), r(n), x_old(n);
-  if (qp.x0.size() == n)
-    for (std::size_t i = 0; i < n; ++i) x[i] = free[i] ? std::max(qp.x0[i], 0.0) : 0.0;
-  double sum_x = std::accumulate(x.begin(), x.end(), 0.0);
-  if (force_control) {
-    if (sum_x <= 0.0) {
-      for (std::size_t i = 0; i < n; ++i) x[i] = free[i] ? total / n_free : 0.0;
-    } else {
-      for (double& v : x) v *= total / sum_x;
-    }
-  }
+  const double total = form.total;  // sum x required under force control
+  std::vector<double> x = normal_start(qp, form), g(n), t(n, 0.0), r(n), x_old(n);
+  double sum_x = 0.0;
 
   double g_norm_old = 1.0, shift = 0.0;
   bool restart = true;
@@ -141,13 +112,7 @@ SolveOutcome solve_normal_native(const QuadraticProgram& qp, const SolveOptions&
   if (!out.success && out.message.empty()) out.message = "iteration limit reached";
   out.x = std::move(x);
   out.objective = qp.objective(out.x.data());
-  if (force_control) {
-    const auto& eq = qp.equalities.front();
-    double a0 = 0.0;
-    for (std::size_t i = 0; i < n && a0 == 0.0; ++i)
-      if (free[i]) a0 = eq.a[i];
-    out.equality_multipliers = {shift / a0};
-  }
+  if (force_control) out.equality_multipliers = {shift / form.a0};
   return out;
 }
 

@@ -45,6 +45,11 @@ void NormalProblem::set_heights(std::vector<double> heights) {
     throw InputError("profile", "no element of the grid can touch the body");
 }
 
+void NormalProblem::set_warm_start(std::vector<double> pressure) {
+  if (pressure.size() != grid_.size()) throw std::invalid_argument("normal problem: one warm-start pressure per element");
+  warm_start_ = std::move(pressure);
+}
+
 Certificate NormalProblem::certify(const std::vector<double>& p, double approach, const NormalSpec& control) const {
   Certificate cert;
   const std::size_t n = grid_.size();
@@ -124,7 +129,11 @@ NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverSpec&
   const auto order = backend_order(solver.backend, n, solver.fallback);
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::string& backend = order[k];
-    const TimedOutcome run = run_backend(backend, qp, options, solve_normal_native);
+    if (backend == "native" && !preconditioner_)
+      preconditioner_ = std::make_shared<NormalPreconditioner>(*compliance_, grid_);
+    const TimedOutcome run = run_backend(backend, qp, options, [&](const QuadraticProgram& q, const SolveOptions& o) {
+      return solve_normal_preconditioned(q, o, *preconditioner_, s.c0);
+    });
     const SolveOutcome& outcome = run.outcome;
     const double elapsed = run.time_s;
 

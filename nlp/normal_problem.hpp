@@ -8,6 +8,7 @@
 
 #include "case_model.hpp"
 #include "linear_operator.hpp"
+#include "normal_preconditioner.hpp"
 #include "quadratic_program.hpp"
 #include "solver_report.hpp"
 
@@ -38,6 +39,11 @@ class NormalProblem {
   Certificate certify(const std::vector<double>& pressure, double approach, const NormalSpec& control) const;
   /// Rigid-body shift of the profile between solves (dynamic steps move the body).
   void set_heights(std::vector<double> heights);
+  /// Warm start: every converged solve starts the next one (load histories, time steps) from
+  /// its pressure. set_warm_start() gives another starting pressure (Pa, one per element; the
+  /// next solve starts there), clear_warm_start() makes the next solve cold.
+  void set_warm_start(std::vector<double> pressure);
+  void clear_warm_start() { warm_start_.clear(); }
 
   const LinearOperator& compliance() const { return *compliance_; }
   const Grid& grid() const { return grid_; }
@@ -48,6 +54,8 @@ class NormalProblem {
   Grid grid_;
   std::vector<double> heights_;
   std::vector<double> warm_start_;
+  /// The native solver's FFT preconditioner: built at the first native solve, then reused.
+  std::shared_ptr<const NormalPreconditioner> preconditioner_;
 };
 
 /// The whole normal case: grid, profile, operator, solve.

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
 
+#include "anderson_mixing.hpp"
 #include "backend_choice.hpp"
 #include "errors.hpp"
 #include "scaled_operator.hpp"
@@ -48,6 +50,8 @@ struct TangentialProblem::Impl {
   std::unique_ptr<LinearOperator> B21, B32;  // kappa terms (only when coupled)
   std::unique_ptr<LinearOperator> Ct_up, B21_up;  // rolling: upstream displacement
   std::unique_ptr<LinearOperator> D_conv;          // steady rolling: Ct - Ct_up
+  // convected steps: Ct and kappa B21 shifted by whole elements along x (built once per shift)
+  std::map<int, std::pair<std::unique_ptr<LinearOperator>, std::unique_ptr<LinearOperator>>> shifted;
   std::unique_ptr<NormalProblem> normal;
   std::vector<double> heights;
 
@@ -109,6 +113,28 @@ struct TangentialProblem::Impl {
       b21->apply(p, w);
       for (std::size_t i = 0; i < u.size(); ++i) u[i] += w[i];
     }
+  }
+
+  /// The previous relative displacement taken `shift` elements downstream along x (the material
+  /// now at x was at x + shift dx at the start of the step, (3.8)): linear interpolation between
+  /// the neighbouring whole-element shifts, each exact also beyond the grid edge.
+  void convected_displacement(double shift, std::vector<double>& u) {
+    const int n0 = static_cast<int>(std::floor(shift));
+    const double theta = shift - n0;
+    auto at = [&](int s, std::vector<double>& out) {
+      if (s == 0) return displacement(p_prev, tau_prev, out, *Ct, B21.get());
+      auto& ops = shifted[s];
+      if (!ops.first) {
+        ops.first = half_space->tangential_shifted(s, kind);
+        if (coupled) ops.second = half_space->tangential_from_normal_shifted(s, kind);
+      }
+      displacement(p_prev, tau_prev, out, *ops.first, ops.second.get());
+    };
+    at(n0, u);
+    if (theta <= 0.0) return;
+    std::vector<double> u1;
+    at(n0 + 1, u1);
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] = (1.0 - theta) * u[i] + theta * u1[i];
   }
 
   // The last normal solution and what it was solved for: rolling and histories with kappa = 0
@@ -323,18 +349,24 @@ struct TangentialProblem::Impl {
   /// with the gap shifted by kappa B32 tau of the previous iterate, the bound f(p), then
   /// `inner(p, f, tau)` updates tau (false: it gave up, the loop stops and returns false).
   /// kappa = 0: p does not depend on tau, so f(p) is final after one pass.
+  /// kappa != 0: the alternation is a fixed point tau = G(tau), accelerated by Anderson mixing
+  /// of the tau fed to (4.26); both problems start from the previous step's solution (warm).
+  /// It stops on the certificate: the pressure was solved with kappa B32 tau_in, and the new
+  /// tau moves that gap by kappa B32 (tau - tau_in); once this is below a hundredth of
+  /// certificate_tol (in the certificate's units, gap / C_00 / max p), p and tau certify together.
   template <class Inner>
   bool outer_loop(TangentialSolution& sol, const NormalSpec& normal_load, const SolverSpec& solver,
                   std::vector<double>& tau, std::vector<double>& f, Inner&& inner) {
-    std::vector<double> p_old, tau_old;
+    std::vector<double> p_old, tau_old, wz, tau_in = tau;
     f.assign(N, 0.0);
     const int max_outer = coupled ? 100 : 1;
     const double outer_tol = std::max(1e-9, 10.0 * solver.tol);
+    const double c0 = C->diagonal(0);
+    AndersonMixing mixer;
     for (int m = 1; m <= max_outer; ++m) {
       std::vector<double> h = heights;  // (4.26)
       if (coupled) {
-        std::vector<double> wz;
-        B32->apply(tau, wz);
+        B32->apply(tau_in, wz);
         for (std::size_t i = 0; i < N; ++i) h[i] += wz[i];
       }
       sol.normal = solve_normal(std::move(h), normal_load, solver);
@@ -352,25 +384,38 @@ struct TangentialProblem::Impl {
       p_old = p;
       tau_old = tau;
       if (max_outer == 1) break;
-      if (m > 1 && change < outer_tol) break;
+      // The gap error the last tau leaves in the pressure's problem (certificate units).
+      std::vector<double> dtau(tau.size());
+      for (std::size_t i = 0; i < tau.size(); ++i) dtau[i] = tau[i] - tau_in[i];
+      B32->apply(dtau, wz);
+      double gap_error = 0.0;
+      for (std::size_t i = 0; i < N; ++i)
+        if (std::isfinite(heights[i])) gap_error = std::max(gap_error, std::abs(wz[i]));
+      const double p_max = max_abs(p);
+      gap_error /= c0 * (p_max > 0.0 ? p_max : 1.0);
+      sol.outer.coupling_residual = gap_error;
+      if (gap_error <= 0.01 * solver.certificate_tol || (m > 1 && change < outer_tol)) break;
       if (m == max_outer) {
         sol.outer.converged = false;
         sol.outer.last_change = change;
+        break;
       }
+      tau_in = mixer.next(tau_in, tau);
     }
     return true;
   }
 
-  /// One step with the outer loop (4.26)-(4.27) / (3.31)-(3.32). `upstream` selects the
-  /// convective (rolling) form of the previous displacement; rigid slips are increments.
+  /// One step with the outer loop (4.26)-(4.27) / (3.31)-(3.32); rigid slips are increments.
+  /// `shift` (elements, >= 0) is the travel of the step: 0 quasi-static, 1 a marching step.
   TangentialSolution solve_step(const NormalSpec& normal_load, const std::array<ModeControl, 3>& modes,
-                                const std::array<double, 3>& given_increment, bool upstream,
+                                const std::array<double, 3>& given_increment, double shift,
                                 const SolverSpec& solver, const ProgressCallback& progress) {
     const std::size_t n = comps * N;
-    const LinearOperator& ct_prev = upstream ? *Ct_up : *Ct;
-    const LinearOperator* b21_prev = upstream ? B21_up.get() : B21.get();
     std::vector<double> u_prev;
-    displacement(p_prev, tau_prev, u_prev, ct_prev, b21_prev);
+    if (shift == 1.0 && Ct_up)
+      displacement(p_prev, tau_prev, u_prev, *Ct_up, B21_up.get());
+    else
+      convected_displacement(shift, u_prev);
 
     TangentialSolution sol;
     std::vector<double> tau = tau_warm.size() == n ? tau_warm : std::vector<double>(n, 0.0);
@@ -518,7 +563,7 @@ struct TangentialProblem::Impl {
     March m;
     for (m.steps = 1; m.steps <= max_steps; ++m.steps) {
       const std::vector<double> input = tau_prev;
-      m.sol = solve_step(load.normal, load.modes, increment, true, step_solver, {});
+      m.sol = solve_step(load.normal, load.modes, increment, 1.0, step_solver, {});
       if (m.sol.report.status != SolveStatus::converged && m.first_unconverged == 0) m.first_unconverged = m.steps;
       if (m.sol.report.status == SolveStatus::failed) break;
       for (int k = 0; k < 3; ++k) amplitude_prev[k] += m.sol.amplitudes[k];
@@ -557,7 +602,7 @@ TangentialSolution TangentialProblem::step(const TangentialLoad& load, const Sol
   std::array<double, 3> increment{};
   for (int k = 0; k < 3; ++k)
     if (load.modes[k].kind == ModeControl::Kind::amplitude) increment[k] = load.modes[k].value - s.amplitude_prev[k];
-  TangentialSolution sol = s.solve_step(load.normal, load.modes, increment, false, solver, progress);
+  TangentialSolution sol = s.solve_step(load.normal, load.modes, increment, 0.0, solver, progress);
   for (int k = 0; k < 3; ++k) sol.amplitudes[k] += s.amplitude_prev[k];
   s.amplitude_prev = sol.amplitudes;
   return sol;
@@ -651,7 +696,7 @@ TangentialSolution TangentialProblem::roll(const RollingLoad& load, double dista
     // No travel, no convective term: the quasi-static step (2.16) of the same controls; a
     // creepage applies no rigid slip over zero distance, a prescribed force is carried by a shift.
     if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
-    TangentialSolution sol = s.solve_step(load.normal, load.modes, {0.0, 0.0, 0.0}, false, solver, progress);
+    TangentialSolution sol = s.solve_step(load.normal, load.modes, {0.0, 0.0, 0.0}, 0.0, solver, progress);
     for (int k = 0; k < 3; ++k) s.amplitude_prev[k] += sol.amplitudes[k];
     return sol;  // amplitudes: the rigid shift (m, m, rad) of this step; marching_steps = 0
   }
@@ -677,6 +722,36 @@ TangentialSolution TangentialProblem::roll(const RollingLoad& load, double dista
   for (int k = 0; k < 3; ++k) sol.amplitudes[k] /= s.grid.dx;
   return sol;
 }
+
+TangentialSolution TangentialProblem::convected_step(const NormalSpec& normal, const std::array<double, 3>& increment,
+                                                   double travel, const SolverSpec& solver) {
+  Impl& s = *impl_;
+  if (!std::isfinite(travel)) throw InputError("travel", "must be finite");
+  if (s.given_operators && travel != 0.0)
+    throw InputError("travel", "a finite body's contact is not convected (no shifted compliances)");
+  std::array<ModeControl, 3> modes{};
+  for (int k = 0; k < 3; ++k) modes[k].value = increment[k];
+  TangentialSolution sol = s.solve_step(normal, modes, increment, travel / s.grid.dx, solver, {});
+  for (int k = 0; k < 3; ++k) s.amplitude_prev[k] += sol.amplitudes[k];
+  return sol;
+}
+
+TangentialMemory TangentialProblem::memory() const {
+  const Impl& s = *impl_;
+  return {s.tau_prev, s.p_prev, s.tau_warm, s.amplitude_prev};
+}
+
+void TangentialProblem::restore(const TangentialMemory& m) {
+  Impl& s = *impl_;
+  s.tau_prev = m.tau;
+  s.p_prev = m.pressure;
+  s.tau_warm = m.warm_start;
+  s.amplitude_prev = m.amplitudes;
+}
+
+void TangentialProblem::set_heights(std::vector<double> heights) { impl_->heights = std::move(heights); }
+
+const LinearOperator& TangentialProblem::tangential_compliance() const { return *impl_->Ct; }
 
 Certificate TangentialProblem::certify_friction(const Grid& grid, const std::vector<double>& tx,
                                                 const std::vector<double>& ty, const std::vector<double>& sx,

@@ -36,6 +36,9 @@ namespace dc {
 struct OuterLoopReport {
   int iterations = 0;      ///< outer (p, tau) iterations
   double last_change = 0;  ///< relative change of (p, tau) in the last iteration
+  /// kappa != 0: max |kappa B32 (tau - tau_in)| / (C_00 max p), the gap error the last
+  /// tangential update leaves in the normal problem (the loop stops below certificate_tol / 100)
+  double coupling_residual = 0;
   bool converged = true;
 };
 
@@ -56,6 +59,13 @@ struct TangentialSolution {
   int newton_iterations = 0;         ///< steady rolling by Newton: its iterations (all outer passes)
   bool rolling = false;              ///< amplitudes are creepages / spin (steady or transient rolling), not shifts
   double distance = 0.0;             ///< roll(): distance rolled, marching_steps * dx (m)
+};
+
+/// The loading history of a TangentialProblem (the state its next step starts from): saved
+/// before a trial step and restored when the step is not accepted (dynamic steps).
+struct TangentialMemory {
+  std::vector<double> tau, pressure, warm_start;
+  std::array<double, 3> amplitudes{};
 };
 
 /// Set up once (operators, plans), then step: the state (previous relative displacement)
@@ -92,6 +102,21 @@ class TangentialProblem {
                           const ProgressCallback& progress = {});
   /// Forget the loading history (back to the unloaded state).
   void reset();
+
+  /// One step of a moving contact ((3.8), dynamic problems): the rigid-slip increments of the
+  /// step given (x, y (m), rotation about z (rad)), the previous relative displacement taken
+  /// `travel` (m, either sign) downstream along x - the material now at x was at x + travel when
+  /// the step began; not a whole number of elements: linear interpolation between the two
+  /// neighbouring whole-element shifts (their operators are built once per shift). The normal
+  /// load is `normal` on the current heights. The memory advances (restore() to undo).
+  TangentialSolution convected_step(const NormalSpec& normal, const std::array<double, 3>& increment, double travel,
+                                    const SolverSpec& solver);
+  TangentialMemory memory() const;
+  void restore(const TangentialMemory& memory);
+  /// The body's gap profile on the grid (a moving body changes it between steps).
+  void set_heights(std::vector<double> heights);
+  /// B22, the tangential compliance (sensitivities of a solution with its active set fixed).
+  const LinearOperator& tangential_compliance() const;
 
   const Grid& grid() const { return grid_; }
   /// Certificate of a traction field for given slip increments and bounds (for tests).

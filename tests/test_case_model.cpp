@@ -293,7 +293,16 @@ TEST(CaseModel, LooselyParsedProblemKinds) {
   apply_override(dyn, "problem=dynamic");
   apply_override(dyn, "time={\"dt\": 1e-4, \"t_end\": 0.1}");
   apply_override(dyn, "body={\"mass\": 1}");
-  EXPECT_EQ(build_case(dyn).problem, ProblemKind::dynamic);
+  expect_input_error([&] { build_case(dyn); }, "body.inertia");  // the dynamic blocks are read strictly
+  apply_override(dyn, "body.inertia=[1e-4, 1e-4, 1e-4]");
+  expect_input_error([&] { build_case(dyn); }, "normal");  // the body's motion sets the normal load
+  dyn.erase("normal");
+  apply_override(dyn, "loads.force.z.value=-10");
+  const Case d = build_case(dyn);
+  EXPECT_EQ(d.problem, ProblemKind::dynamic);
+  ASSERT_TRUE(d.dynamic.has_value());
+  EXPECT_EQ(d.dynamic->force[2].value, -10.0);
+  EXPECT_EQ(d.dynamic->position[2], d.profile.radius);  // starts touching
 }
 
 TEST(CaseModel, ContactPointOutsideGridIsAnError) {

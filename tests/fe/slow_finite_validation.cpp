@@ -12,10 +12,8 @@ namespace {
 
 constexpr double kE = 2.1e11, kNu = 0.3;
 
-TEST(FiniteValidation, StiffFlatCylinderIsBoussinesqPunch) {
-  // Rigid flat punch of radius a: P = 2 a E* d (E* of the half-space alone). The grid holds
-  // the disk as a staircase of 32 elements across; tolerance 3 % on the approach.
-  const double a = 0.005, P = 1e5;
+/// A flat-ended cylinder of radius and height a, 1000 times stiffer than the half-space.
+FeBodySpec stiff_flat_cylinder(double a) {
   FeBodySpec s;
   s.shape = FeShape::cylinder;
   s.radius = a;
@@ -23,9 +21,18 @@ TEST(FiniteValidation, StiffFlatCylinderIsBoussinesqPunch) {
   s.elements = {6, 6, 3};
   s.contact_size = a / 6.0;
   s.material = {fe::isotropic_stiffness(1000.0 * kE, kNu, "test"), 7800.0};
-  const double L = 1.25 * a;
-  const Grid g = Grid::make(3, 40, 40, -L, L, -L, L);
-  FiniteContact fc(s, g, Elastic::from_E_nu(kE, kNu));
+  return s;
+}
+
+/// 40 x 40 elements over +-1.25 a: the punch as a staircase of 32 elements across.
+Grid punch_grid(double a) { return Grid::make(3, 40, 40, -1.25 * a, 1.25 * a, -1.25 * a, 1.25 * a); }
+
+TEST(FiniteValidation, StiffFlatCylinderIsBoussinesqPunch) {
+  // Rigid flat punch of radius a: P = 2 a E* d (E* of the half-space alone). The grid holds
+  // the disk as a staircase of 32 elements across; tolerance 3 % on the approach.
+  const double a = 0.005, P = 1e5;
+  const Grid g = punch_grid(a);
+  FiniteContact fc(stiff_flat_cylinder(a), g, Elastic::from_E_nu(kE, kNu));
   SolverSpec solver;
   solver.backend = "native";
   const FiniteNormalSolution sol = fc.solve_normal({Control::force, P}, solver);

@@ -1,0 +1,142 @@
+// The dynamic blocks (CASES.md: body, loads, time, normal_model, contact_model) read into
+// DynamicSpec, and the load that sizes the grid of a dynamic case.
+#include "case_dynamic.hpp"
+
+#include <cmath>
+
+#include "case_blocks.hpp"
+#include "case_model.hpp"
+#include "errors.hpp"
+#include "hertz.hpp"
+#include "json_block.hpp"
+
+namespace dc {
+namespace {
+
+std::array<double, 3> vector3(const JsonBlock& o, const char* k) {
+  const auto v = o.numbers(k);
+  if (v.size() != 3) throw InputError(o.key(k), "must be [x, y, z]");
+  return {v[0], v[1], v[2]};
+}
+
+void read_body(const JsonBlock& body, const Case& c, DynamicSpec& s) {
+  body.allow({"mass", "inertia", "radius", "initial"});
+  s.mass = body.positive("mass");
+  const json& inertia = body.at("inertia");
+  if (inertia.is_number()) {
+    const double i = body.positive("inertia");
+    s.inertia = {i, i, i};
+  } else {
+    s.inertia = vector3(body, "inertia");
+    for (int k = 0; k < 3; ++k)
+      if (!(s.inertia[k] > 0.0))
+        throw InputError("body.inertia[" + std::to_string(k) + "]", "principal moments must be positive");
+  }
+  if (body.has("radius")) {
+    s.radius = body.positive("radius");
+  } else if (c.profile.type == ProfileType::sphere || c.profile.type == ProfileType::cylinder) {
+    s.radius = c.profile.radius;  // a ball or a wheel: the centre of mass at the centre
+  } else {
+    throw InputError("body.radius", "missing required key (the height of the centre of mass over the lowest point "
+                                    "of the profile; only a sphere or cylinder profile implies it)");
+  }
+  if (body.has("initial")) {
+    const JsonBlock init = body.child("initial");
+    init.allow({"position", "velocity", "omega"});
+    if (init.has("position")) {
+      s.position = vector3(init, "position");
+      s.has_position = true;
+    }
+    if (init.has("velocity")) s.velocity = vector3(init, "velocity");
+    if (init.has("omega")) s.omega = vector3(init, "omega");
+  }
+  if (!s.has_position) s.position = {0.0, 0.0, s.radius};
+  if (c.dimension == 2) {
+    // Plane strain: motion in the x-z plane, rotation about y only.
+    if (s.velocity[1] != 0.0) throw InputError("body.initial.velocity[1]", "a 2-D body moves in the x-z plane (0)");
+    if (s.omega[0] != 0.0 || s.omega[2] != 0.0)
+      throw InputError("body.initial.omega", "a 2-D body turns about y only ([0, w, 0])");
+  }
+}
+
+void read_loads(const JsonBlock& loads, const Case& c, DynamicSpec& s) {
+  loads.allow({"force", "moment"});
+  static const char* axes[] = {"x", "y", "z"};
+  for (const char* block : {"force", "moment"}) {
+    if (!loads.has(block)) continue;
+    const JsonBlock b = loads.child(block);
+    b.allow({"x", "y", "z"});
+    auto& out = std::string(block) == "force" ? s.force : s.moment;
+    for (int k = 0; k < 3; ++k)
+      if (b.has(axes[k])) out[k] = read_value_rate(b, axes[k]);
+  }
+  if (c.dimension == 2) {
+    auto zero = [](const ValueRate& v) { return v.value == 0.0 && v.rate == 0.0; };
+    if (!zero(s.force[1])) throw InputError("loads.force.y", "a 2-D case has no load along y");
+    if (!zero(s.moment[0]) || !zero(s.moment[2]))
+      throw InputError("loads.moment", "a 2-D case takes a moment about y only");
+  }
+}
+
+void read_time(const JsonBlock& time, DynamicSpec& s) {
+  time.allow({"dt", "t_end", "scheme"});
+  s.dt = time.positive("dt");
+  s.t_end = time.positive("t_end");
+  if (s.t_end / s.dt > 1e8) throw InputError("time.dt", "over 1e8 steps to time.t_end");
+  s.bdf2 = time.choice("scheme", "bdf2", {"bdf1", "bdf2"}) == "bdf2";
+}
+
+}  // namespace
+
+DynamicSpec read_dynamic(const nlohmann::json& document, const Case& c) {
+  const JsonBlock top(document, "");
+  for (const char* k : {"materials", "profile", "grid", "body", "time"})
+    if (!top.has(k)) throw InputError(k, "missing required key (a dynamic case needs it)");
+  DynamicSpec s;
+  read_body(top.child("body"), c, s);
+  if (top.has("loads")) read_loads(top.child("loads"), c, s);
+  read_time(top.child("time"), s);
+  const std::string normal = top.choice("normal_model", "dynamic", {"dynamic", "quasi_static"});
+  s.normal_model = normal == "dynamic" && c.dimension == 3 ? NormalModel::dynamic : NormalModel::quasi_static;
+  if (s.normal_model == NormalModel::quasi_static && !(-s.force[2].value > 0.0))
+    throw InputError("loads.force.z", "a quasi-static normal model (and every 2-D case) needs a vertical load "
+                                      "pressing the body down: value < 0");
+  const std::string contact = top.choice("contact_model", "auto", {"transient", "steady", "auto"});
+  s.contact_model = contact == "transient" ? ContactModel::transient
+                    : contact == "steady"  ? ContactModel::steady
+                                           : ContactModel::automatic;
+  return s;
+}
+
+bool dynamic_sizing_load(const DynamicSpec& s, const Case& c, NormalSpec& load) {
+  double P = std::max(0.0, -s.force[2].value);
+  if (c.dimension == 3 && s.velocity[2] < 0.0 && c.profile.type != ProfileType::table &&
+      c.profile.type != ProfileType::flat_punch) {
+    // Hertz impact (Johnson 11.4): delta_max = (15 m v^2 / (16 E* sqrt(R)))^(2/5), P = 4/3 E* sqrt(R) delta^(3/2).
+    double A = 0.0, B = 0.0;
+    c.profile.quadratic_coefficients(A, B);
+    if (A > 0.0 && B > 0.0) {
+      const double R = 0.5 / std::sqrt(A * B), E = c.materials.E_star();
+      const double v = s.velocity[2];
+      const double delta = std::pow(15.0 * s.mass * v * v / (16.0 * E * std::sqrt(R)), 0.4);
+      P = std::max(P, 4.0 / 3.0 * E * std::sqrt(R) * std::pow(delta, 1.5));
+    }
+  }
+  if (!(P > 0.0) || !std::isfinite(P)) return false;
+  load.control = Control::force;
+  load.value = P;
+  return true;
+}
+
+const char* to_string(NormalModel model) { return model == NormalModel::dynamic ? "dynamic" : "quasi_static"; }
+
+const char* to_string(ContactModel model) {
+  switch (model) {
+    case ContactModel::transient: return "transient";
+    case ContactModel::steady: return "steady";
+    case ContactModel::automatic: return "auto";
+  }
+  return "unknown";
+}
+
+}  // namespace dc

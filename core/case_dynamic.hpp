@@ -1,0 +1,51 @@
+#pragma once
+// The blocks of a "dynamic" case (CASES.md): the massive body (mass, inertia, initial motion),
+// the external loads (value + rate t per component), the time stepping and the contact models.
+// Read into DynamicSpec; the stepper and the contact wrench (dynamics/) never see JSON.
+#include <array>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "case_paper_cylinder.hpp"
+#include "normal_spec.hpp"
+
+namespace dc {
+
+/// How the normal contact follows the body: `dynamic` - the approach from the body's height
+/// (3-D); `quasi_static` - the normal force from the vertical balance (the body's height does
+/// not move; always so in 2-D, where plane strain fixes the approach only up to a reference).
+enum class NormalModel { dynamic, quasi_static };
+/// The tangential traction of a step: `transient` - (3.8), the previous traction carried over
+/// the step's travel; `steady` - the steady-rolling solution at the step's creepage and spin;
+/// `automatic` - transient when the travel V dt is below a quarter of the contact half-length.
+enum class ContactModel { transient, steady, automatic };
+
+struct DynamicSpec {
+  double mass = 0.0;                        ///< body.mass (kg; 2-D kg/m)
+  std::array<double, 3> inertia{};          ///< body.inertia: principal moments about x, y, z (kg m^2; 2-D per m)
+  double radius = 0.0;                      ///< body.radius: height of the centre of mass over the lowest point (m)
+  std::array<double, 3> position{}, velocity{}, omega{};  ///< body.initial
+  bool has_position = false;                ///< else the body starts touching: z = radius
+  std::array<ValueRate, 3> force{}, moment{};  ///< loads.force.{x,y,z}, loads.moment.{x,y,z}
+  double dt = 0.0, t_end = 0.0;             ///< time (s)
+  bool bdf2 = false;                        ///< time.scheme
+  NormalModel normal_model = NormalModel::dynamic;
+  ContactModel contact_model = ContactModel::automatic;
+};
+
+struct Case;
+
+/// Reads the dynamic blocks of `document` (body, loads, time, normal_model, contact_model);
+/// `c` holds the common blocks already read. Throws InputError naming the key.
+DynamicSpec read_dynamic(const nlohmann::json& document, const Case& c);
+
+/// The normal load that sizes a dynamic case's `grid.extent` when it has no `normal` block: the
+/// larger of the static vertical load (-loads.force.z) and, in 3-D, the peak force of a Hertz
+/// impact at the initial downward speed (Johnson 11.4); false when neither is positive.
+bool dynamic_sizing_load(const DynamicSpec& spec, const Case& c, NormalSpec& load);
+
+const char* to_string(NormalModel model);
+const char* to_string(ContactModel model);
+
+}  // namespace dc

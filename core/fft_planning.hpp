@@ -1,0 +1,23 @@
+#pragma once
+// FFTW planning shared by every transform of the library: one planner lock (FFTW's planner
+// is not thread-safe), the thread count, and the transform lengths FFTW handles fast.
+// Plans are made with FFTW_ESTIMATE only: the same input gives the same result on every run
+// (FFTW_MEASURE may pick a different algorithm, and so different round-off, from run to run).
+#include <cstddef>
+#include <mutex>
+
+namespace dc {
+
+/// Lock held while creating or destroying FFTW plans.
+std::mutex& fft_planner_mutex();
+
+/// Threads used by the transforms: the hardware's cores, or DYNCONTACT_THREADS when set (>= 1).
+int fft_threads();
+
+/// Threads for a transform of `points` real values: 1 below the size where threads pay off.
+int fft_threads_for(std::size_t points);
+
+/// Smallest m >= n whose prime factors are 2, 3, 5 and 7 (lengths FFTW transforms fast).
+int fft_good_size(int n);
+
+}  // namespace dc

@@ -1,0 +1,62 @@
+#include "normal_preconditioner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "fft_planning.hpp"
+
+namespace dc {
+
+NormalPreconditioner::NormalPreconditioner(const LinearOperator& compliance, const Grid& grid)
+    : n_(grid.size()),
+      fft_(grid.nx, grid.ny, fft_good_size(grid.nx), grid.ny == 1 ? 1 : fft_good_size(grid.ny)),
+      work_(grid.size()) {
+  if (compliance.rows() != n_ || compliance.cols() != n_)
+    throw std::invalid_argument("normal preconditioner: operator and grid sizes differ");
+  // The kernel K(di, dj) = response at offset (di, dj) of a unit load at the centre (ic, jc).
+  const int ic = grid.nx / 2, jc = grid.ny / 2;
+  std::vector<double> unit(n_, 0.0), response;
+  unit[grid.index(ic, jc)] = 1.0;
+  compliance.apply(unit, response);
+  const int mx = fft_.mx(), my = fft_.my();
+  // Periodic kernel on the box: offsets in (-m/2, m/2]; those beyond the grid take the value
+  // of the nearest offset the grid holds (a preconditioner needs the shape, not every digit).
+  std::vector<double> box(static_cast<std::size_t>(mx) * my);
+  for (int bj = 0; bj < my; ++bj)
+    for (int bi = 0; bi < mx; ++bi) {
+      const int di = bi <= mx / 2 ? bi : bi - mx, dj = bj <= my / 2 ? bj : bj - my;
+      const int i = std::clamp(ic + di, 0, grid.nx - 1), j = std::clamp(jc + dj, 0, grid.ny - 1);
+      box[bi + static_cast<std::size_t>(mx) * bj] = response[grid.index(i, j)];
+    }
+  std::vector<double> spectrum;
+  fft_.periodic_forward(box, spectrum);
+  // The kernel is even, so its spectrum is real; truncation can leave a few tiny or negative
+  // values far in the tail: bound them below by a small fraction of the largest.
+  const std::size_t ncplx = fft_.spectrum_size();
+  double s_max = 0.0;
+  for (std::size_t k = 0; k < ncplx; ++k) s_max = std::max(s_max, spectrum[2 * k]);
+  if (!(s_max > 0.0)) throw std::invalid_argument("normal preconditioner: the kernel's spectrum is not positive");
+  double s_min_positive = s_max;
+  for (std::size_t k = 0; k < ncplx; ++k)
+    if (spectrum[2 * k] > 0.0) s_min_positive = std::min(s_min_positive, spectrum[2 * k]);
+  const double floor = std::max(s_min_positive, 1e-6 * s_max);
+  inverse_symbol_.resize(ncplx);
+  const double norm = static_cast<double>(mx) * my;
+  for (std::size_t k = 0; k < ncplx; ++k) inverse_symbol_[k] = 1.0 / (std::max(spectrum[2 * k], floor) * norm);
+}
+
+void NormalPreconditioner::apply(const double* r, const char* active, double scale, double* z) const {
+  for (std::size_t i = 0; i < n_; ++i) work_[i] = active[i] ? r[i] : 0.0;
+  fft_.forward(work_.data());
+  double* s = fft_.spectrum();
+  const std::size_t ncplx = fft_.spectrum_size();
+  for (std::size_t k = 0; k < ncplx; ++k) {
+    s[2 * k] *= inverse_symbol_[k];
+    s[2 * k + 1] *= inverse_symbol_[k];
+  }
+  fft_.inverse(z);
+  for (std::size_t i = 0; i < n_; ++i) z[i] = active[i] ? scale * z[i] : 0.0;
+}
+
+}  // namespace dc

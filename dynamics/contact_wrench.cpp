@@ -1,0 +1,198 @@
+#include "contact_wrench.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "errors.hpp"
+#include "friction_law.hpp"
+#include "profile.hpp"
+
+namespace dc::dynamics {
+
+ContactWrench::ContactWrench(const Case& c)
+    : case_(c), spec_(*c.dynamic), solver_(c.solver), heights_(profile_heights(c.profile, c.grid)) {
+  // Every step is one warm-started program: the native solver is the fastest at any size.
+  if (solver_.backend == "auto") solver_.backend = "native";
+  const OperatorKind kind = c.solver.operator_kind == "dense" ? OperatorKind::dense
+                            : c.solver.operator_kind == "fft" ? OperatorKind::fft
+                                                              : OperatorKind::automatic;
+  if (c.friction)
+    tangential_ = std::make_unique<TangentialProblem>(c.grid, c.materials, heights_,
+                                                      FrictionLaw::from_spec(*c.friction), kind);
+  else
+    normal_ = std::make_unique<NormalProblem>(c.grid, c.materials, heights_, kind);
+  if (tangential_) committed_ = tangential_->memory();
+  steady_ = spec_.contact_model == ContactModel::steady;
+  model_resolved_ = spec_.contact_model != ContactModel::automatic;
+}
+
+const char* ContactWrench::model_used() const { return steady_ ? "steady" : "transient"; }
+
+void ContactWrench::begin_step(double dt) { dt_ = dt; }
+
+NormalSpec ContactWrench::normal_load(const StepKinematics& k, double vertical_load) const {
+  if (spec_.normal_model == NormalModel::quasi_static) return {Control::force, std::max(0.0, -vertical_load)};
+  // (2.6): the lowest point of the body is radius below the centre of mass; the base is z = 0.
+  return {Control::approach, spec_.radius - k.position.z()};
+}
+
+void ContactWrench::no_contact() {
+  state_ = ContactState{};
+  if (tangential_) tangential_->reset();
+}
+
+Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
+  if (tangential_) tangential_->restore(committed_);
+  last_ = k;
+  const NormalSpec load = normal_load(k, vertical_load);
+  lever_ = spec_.normal_model == NormalModel::quasi_static ? spec_.radius : k.position.z();
+  if (!(load.value > 0.0)) {
+    no_contact();
+    return state_.wrench;
+  }
+  ++solves_;
+  const Grid& g = case_.grid;
+  const std::size_t N = g.size();
+  const double A = g.area();
+  const double h = lever_;
+  // Rigid slip of the body over the step at the grid point (x, y, -h) from the centre of mass:
+  // (V + Omega x r) dt = (a_x - a_z y, a_y + a_z x), the tangential problem's rigid modes.
+  const Eigen::Vector3d& V = k.velocity;
+  const Eigen::Vector3d& W = k.omega;
+  const std::array<double, 3> increment = {(V.x() - h * W.y()) * dt_, (V.y() + h * W.x()) * dt_, W.z() * dt_};
+  const std::vector<double>* pressure = nullptr;
+  state_ = ContactState{};
+  if (tangential_) {
+    auto solve = [&](const SolverSpec& solver) {
+      if (steady_ && V.x() > 0.0) {
+        RollingLoad rolling;
+        rolling.normal = load;
+        rolling.velocity = V.x();
+        for (int m = 0; m < 3; ++m) rolling.modes[m].value = increment[m] / (V.x() * dt_);
+        solution_ = tangential_->steady_rolling(rolling, solver);
+      } else {
+        solution_ = tangential_->convected_step(load, increment, V.x() * dt_, solver);
+      }
+    };
+    solve(solver_);
+    if (solution_.report.status == SolveStatus::not_converged && solver_.tol > 1e-14) {
+      // Converged but not certified (a nearly stuck contact: the certificate divides by a
+      // tiny slip): once more from the same memory with a 1000 times tighter tolerance.
+      tangential_->restore(committed_);
+      SolverSpec tight = solver_;
+      tight.tol = std::max(1e-15, 1e-3 * solver_.tol);
+      solve(tight);
+    }
+    pressure = &solution_.normal.pressure;
+    state_.fields = &solution_;
+    state_.certificate = solution_.report.certificate.worst();
+    state_.converged = solution_.report.status == SolveStatus::converged;
+    if (!state_.converged) {
+      char cert[160];
+      std::snprintf(cert, sizeof cert, "certificate %.3g (tolerance %.3g), normal solve %s", state_.certificate,
+                    solver_.certificate_tol, to_string(solution_.normal.report.status));
+      state_.message = solution_.report.message + "; " + cert;
+    }
+    state_.approach = solution_.normal.approach;
+    state_.n_stick = solution_.n_stick;
+    state_.n_slip = solution_.n_slip;
+  } else {
+    normal_->set_heights(heights_);
+    normal_solution_ = normal_->solve(load, solver_);
+    pressure = &normal_solution_.pressure;
+    state_.certificate = normal_solution_.report.certificate.worst();
+    state_.converged = normal_solution_.report.status == SolveStatus::converged;
+    if (!state_.converged) state_.message = normal_solution_.report.message;
+    state_.approach = normal_solution_.approach;
+  }
+  // Resultants about the centre of mass: r = (x, y, -h), f = (tau_x, tau_y, p) A.
+  Eigen::Vector3d F = Eigen::Vector3d::Zero(), M = Eigen::Vector3d::Zero();
+  for (std::size_t e = 0; e < N; ++e) {
+    const double p = (*pressure)[e];
+    const double tx = tangential_ ? solution_.tx[e] : 0.0, ty = tangential_ ? solution_.ty[e] : 0.0;
+    if (p <= 0.0 && tx == 0.0 && ty == 0.0) continue;
+    if (p > 0.0) ++state_.n_contact;
+    const int i = static_cast<int>(e % g.nx), j = static_cast<int>(e / g.nx);
+    const Eigen::Vector3d r(g.xc(i), g.yc(j), -h), f(tx * A, ty * A, p * A);
+    F += f;
+    M += r.cross(f);
+  }
+  state_.in_contact = state_.n_contact > 0;
+  state_.contact_area = state_.n_contact * A;
+  state_.stick_fraction = state_.n_contact > 0 ? static_cast<double>(state_.n_stick) / state_.n_contact : 0.0;
+  state_.creepage = V.x() != 0.0 ? increment[0] / (std::abs(V.x()) * dt_) : 0.0;
+  state_.wrench = {F, M};
+  if (!model_resolved_ && state_.in_contact) {
+    // auto: transient while the step's travel resolves the contact (a quarter of its half-length).
+    const double half_length = g.dimension == 2 ? 0.5 * state_.contact_area : std::sqrt(state_.contact_area / M_PI);
+    steady_ = std::abs(V.x()) * dt_ > 0.25 * half_length;
+    model_resolved_ = true;
+  }
+  return state_.wrench;
+}
+
+WrenchJacobian ContactWrench::jacobian() {
+  WrenchJacobian J;
+  if (!state_.in_contact) return J;
+  if (steady_ && tangential_) {
+    J.valid = false;  // the steady solution's sensitivity: finite differences
+    return J;
+  }
+  const double h = lever_;
+  const Eigen::Vector3d& F = state_.wrench.force;
+  // Normal stiffness dP/d(delta) with the contact set fixed: a flat punch of the contact's
+  // footprint, 2 E* sqrt(A/pi) (exact for a circle); R_z up is delta down.
+  double kn = 0.0;
+  if (spec_.normal_model == NormalModel::dynamic)
+    kn = 2.0 * case_.materials.E_star() * std::sqrt(state_.contact_area / M_PI);
+  if (kn > 0.0 && F.z() > 0.0) {
+    // The pressure's centroid, and the slipping traction (proportional to p) follow the load.
+    const double mx = -state_.wrench.moment.y() + h * F.x(), my = state_.wrench.moment.x() - h * F.y();
+    const double xbar = mx / F.z(), ybar = my / F.z();
+    Eigen::Vector3d dF(0.0, 0.0, -kn);
+    if (tangential_) {
+      double sx = 0.0, sy = 0.0;
+      for (std::size_t e = 0; e < solution_.state.size(); ++e)
+        if (solution_.state[e] == 2) {
+          sx += solution_.tx[e];
+          sy += solution_.ty[e];
+        }
+      dF.x() = -kn * sx * case_.grid.area() / F.z();
+      dF.y() = -kn * sy * case_.grid.area() / F.z();
+    }
+    J.position.col(2).head<3>() = dF;
+    J.position.col(2).tail<3>() = Eigen::Vector3d(h * dF.y() + ybar * dF.z(), -h * dF.x() - xbar * dF.z(), 0.0);
+  }
+  if (!tangential_) return J;
+  // G = d(F_x, F_y, M_z)/d(a_x, a_y, a_z), a = dt (V_x - h W_y, V_y + h W_x, W_z).
+  const Eigen::Matrix3d G = sensitivity_.compute(tangential_->tangential_compliance(), case_.grid, solution_);
+  Eigen::Matrix<double, 6, 3> da;  // the wrench rows per unit increment a_l
+  for (int l = 0; l < 3; ++l) {
+    da(0, l) = G(0, l);
+    da(1, l) = G(1, l);
+    da(2, l) = 0.0;
+    da(3, l) = h * G(1, l);   // M_x = y p + h tau_y
+    da(4, l) = -h * G(0, l);  // M_y = -h tau_x - x p
+    da(5, l) = G(2, l);
+  }
+  J.velocity.col(0) = dt_ * da.col(0);
+  J.velocity.col(1) = dt_ * da.col(1);
+  J.omega.col(0) = dt_ * h * da.col(1);
+  J.omega.col(1) = -dt_ * h * da.col(0);
+  J.omega.col(2) = dt_ * da.col(2);
+  return J;
+}
+
+void ContactWrench::accept(const StepKinematics& k, double vertical_load) {
+  const bool same = k.time == last_.time && k.position == last_.position && k.velocity == last_.velocity &&
+                    k.omega == last_.omega;
+  if (!same) evaluate(k, vertical_load);
+  if (tangential_) committed_ = tangential_->memory();
+}
+
+void ContactWrench::reject() {
+  if (tangential_) tangential_->restore(committed_);
+}
+
+}  // namespace dc::dynamics

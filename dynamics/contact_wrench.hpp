@@ -1,0 +1,83 @@
+#pragma once
+// The contact resultant of one step of the moving body (issue: the paper's (3.8)-(3.10)): from
+// trial end-of-step kinematics (R, q, V, Omega), the approach and the undeformed gap (2.6) on a
+// grid that follows the body (its origin under the centre of mass), the rigid slip V + Omega x r
+// of each element over the step, the normal pressure (4.7), the tangential traction (4.8) with
+// the memory of the previous step carried over the step's travel V_x dt, and the resultant force
+// and moment about the centre of mass. The memory is committed only when the step is accepted.
+// Operators and plans are set up once (constructor); solves are warm-started from the last.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "case_model.hpp"
+#include "contact_sensitivity.hpp"
+#include "normal_problem.hpp"
+#include "tangential_problem.hpp"
+#include "wrench.hpp"
+
+namespace dc::dynamics {
+
+/// What the last evaluation found (the contact at the trial kinematics).
+struct ContactState {
+  Wrench wrench;                 ///< the contact's force and moment about the centre of mass
+  bool in_contact = false;
+  double approach = 0.0;         ///< m (quasi-static / 2-D: from the force-controlled solve)
+  double contact_area = 0.0;     ///< m^2 (2-D: contact length, m)
+  double stick_fraction = 0.0;   ///< stick area / contact area (0 without contact)
+  int n_contact = 0, n_stick = 0, n_slip = 0;
+  double creepage = 0.0;         ///< rigid slip velocity at the contact centre / |V_x| along x (0 when V_x = 0)
+  double certificate = 0.0;      ///< worst residual of the contact solve (0 without contact)
+  bool converged = true;
+  std::string message;           ///< why not converged
+  const TangentialSolution* fields = nullptr;  ///< the last solution (null without friction or contact)
+};
+
+class ContactWrench {
+ public:
+  /// The case's grid, materials, profile, friction (optional: frictionless), body and models.
+  explicit ContactWrench(const Case& c);
+
+  /// Starts a step of length dt at time t (the memory of the accepted state is kept).
+  void begin_step(double dt);
+  /// The contact wrench at trial end-of-step kinematics; `vertical_load` is the applied vertical
+  /// force at t_{K+1} (the quasi-static normal model balances it).
+  Wrench evaluate(const StepKinematics& k, double vertical_load);
+  /// The sensitivity of the last evaluation (stick/slip set fixed), for Newton's Jacobian.
+  WrenchJacobian jacobian();
+  /// The step is accepted at `k`: the memory becomes the state at its end (re-solved if the
+  /// last evaluation was elsewhere).
+  void accept(const StepKinematics& k, double vertical_load);
+  /// The step was rejected: back to the memory of the last accepted state.
+  void reject();
+
+  const ContactState& state() const { return state_; }
+  /// The tangential model actually used ("transient" or "steady"; auto resolved on the first step).
+  const char* model_used() const;
+  int solves() const { return solves_; }
+
+ private:
+  NormalSpec normal_load(const StepKinematics& k, double vertical_load) const;
+  void no_contact();
+
+  const Case& case_;
+  const DynamicSpec& spec_;
+  SolverSpec solver_;
+  std::vector<double> heights_;
+  std::unique_ptr<NormalProblem> normal_;          // frictionless
+  std::unique_ptr<TangentialProblem> tangential_;  // with friction
+  TangentialMemory committed_;
+  TangentialSensitivity sensitivity_;
+  TangentialSolution solution_;
+  NormalSolution normal_solution_;
+  ContactState state_;
+  StepKinematics last_{};
+  double dt_ = 0.0;
+  double lever_ = 0.0;  // height of the centre of mass over the contact plane at the last evaluation
+  bool steady_ = false;
+  bool model_resolved_ = false;
+  int solves_ = 0;
+};
+
+}  // namespace dc::dynamics

@@ -1,0 +1,153 @@
+#include "dynamic_simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dc::dynamics {
+namespace {
+
+StepperOptions stepper_options(const Case& c) {
+  StepperOptions o;
+  o.scheme = c.dynamic->bdf2 ? Scheme::bdf2 : Scheme::bdf1;
+  // The contact resultant is accurate to about the contact solver's tolerance: ask the step's
+  // residual for a little less than that, relative to the body's speeds.
+  o.newton.rel_tol = std::max(1e-10, 10.0 * c.solver.tol);
+  o.newton.max_iterations = 40;
+  return o;
+}
+
+RigidBody make_body(const DynamicSpec& s) {
+  return RigidBody::principal(s.mass, s.inertia[0], s.inertia[1], s.inertia[2], "body");
+}
+
+Eigen::Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+
+}  // namespace
+
+RigidBodyState initial_state(const DynamicSpec& s) {
+  RigidBodyState st;
+  st.position = vec(s.position);
+  st.velocity = vec(s.velocity);
+  st.omega = vec(s.omega);
+  return st;
+}
+
+DynamicSimulation::DynamicSimulation(const Case& c)
+    : case_(c), spec_(*c.dynamic), stepper_(make_body(*c.dynamic), stepper_options(c)), contact_(c) {}
+
+Wrench DynamicSimulation::external(double t) const {
+  Wrench w;
+  for (int k = 0; k < 3; ++k) {
+    w.force[k] = spec_.force[k].value + spec_.force[k].rate * t;
+    w.moment[k] = spec_.moment[k].value + spec_.moment[k].rate * t;
+  }
+  return w;
+}
+
+DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSample&)>& on_step) {
+  DynamicResult result;
+  RigidBodyState state = initial_state(spec_);
+  result.initial = state;
+  const RigidBody& body = stepper_.body();
+  const double ke0 = kinetic_energy(body, state);
+  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
+  double impulse_size = 0.0, external_work = 0.0, contact_work = 0.0;
+  const int n_steps = std::max(1, static_cast<int>(std::ceil(spec_.t_end / spec_.dt - 1e-9)));
+  constexpr int kMaxHalvings = 6;
+
+  for (int step = 1; step <= n_steps; ++step) {
+    const double t_target = std::min(spec_.t_end, step * spec_.dt);
+    DynamicSample sample;
+    // One step of the nominal dt, or 2^m sub-steps of it after failures (halving, then back).
+    bool ok = false;
+    std::string why;
+    for (int halvings = 0; halvings <= kMaxHalvings && !ok; ++halvings) {
+      if (halvings > 0) ++result.rejected_steps;
+      const int parts = 1 << halvings;
+      const RigidBodyState start = state;
+      const double h = (t_target - state.time) / parts;
+      ok = true;
+      Eigen::Vector3d imp = Eigen::Vector3d::Zero();
+      double imp_size = 0.0, w_ext = 0.0, w_contact = 0.0;
+      for (int part = 0; part < parts && ok; ++part) {
+        contact_.begin_step(h);
+        const int solves_before = contact_.solves();
+        auto wrench = [&](const StepKinematics& k) {
+          const Wrench ext = external(k.time);
+          const Wrench con = contact_.evaluate(k, ext.force.z());
+          return Wrench{ext.force + con.force, ext.moment + con.moment};
+        };
+        auto jacobian = [&](const StepKinematics&) { return contact_.jacobian(); };
+        const RigidBodyState before = state;
+        const StepReport report = stepper_.step(state, h, wrench, jacobian);
+        sample.newton_iterations += report.iterations;
+        if (!report.converged()) {
+          contact_.reject();
+          why = std::string("the step's Newton iteration did not converge (") + to_string(report.status) +
+                ", residual " + std::to_string(report.residual) + " m/s)";
+          ok = false;
+          break;
+        }
+        const StepKinematics end{state.position, state.orientation, state.velocity, state.omega, state.time};
+        const Wrench ext = external(state.time);
+        contact_.accept(end, ext.force.z());
+        sample.contact_solves += contact_.solves() - solves_before;
+        const ContactState& cs = contact_.state();
+        if (!cs.converged) {
+          why = "the contact solve did not converge (" + cs.message + ")";
+          ok = false;
+          break;
+        }
+        const Wrench& con = cs.wrench;
+        const Eigen::Vector3d F = ext.force + con.force;
+        imp += h * F;
+        imp_size += h * F.norm();
+        // Work: the end-of-step wrench over the step's displacement and rotation (the scheme's own).
+        const Eigen::Vector3d dR = state.position - before.position;
+        const Eigen::Vector3d dTheta = h * state.omega;
+        w_ext += ext.force.dot(dR) + ext.moment.dot(dTheta);
+        w_contact += con.force.dot(dR) + con.moment.dot(dTheta);
+      }
+      if (!ok) {
+        state = start;
+        stepper_.reset();
+        continue;
+      }
+      impulse += imp;
+      impulse_size += imp_size;
+      external_work += w_ext;
+      contact_work += w_contact;
+    }
+    result.newton_iterations += sample.newton_iterations;
+    result.contact_solves += sample.contact_solves;
+    if (!ok) {
+      result.status = "stopped at t = " + std::to_string(state.time) + " s: " + why;
+      break;
+    }
+    const ContactState& cs = contact_.state();
+    result.steps = step;
+    result.worst_certificate = std::max(result.worst_certificate, cs.certificate);
+    result.last_certificate = cs.certificate;
+    sample.state = state;
+    sample.contact = cs.wrench;
+    sample.external = external(state.time);
+    sample.contact_state = cs;
+    sample.kinetic_energy = kinetic_energy(body, state);
+    sample.external_work = external_work;
+    sample.contact_work = contact_work;
+    sample.step = step;
+    if (on_step) on_step(sample);
+  }
+  result.contact_model = contact_.model_used();
+  result.final = state;
+  result.completed = result.steps == n_steps;
+  const Eigen::Vector3d dp = body.mass() * (state.velocity - result.initial.velocity);
+  result.momentum_imbalance =
+      (dp - impulse).norm() / std::max({impulse_size, body.mass() * state.velocity.norm(), 1e-300});
+  const double ke = kinetic_energy(body, state);
+  result.energy_imbalance = std::abs(ke - ke0 - external_work - contact_work) /
+                            std::max({ke0, ke, std::abs(external_work), std::abs(contact_work), 1e-300});
+  return result;
+}
+
+}  // namespace dc::dynamics

@@ -1,0 +1,63 @@
+#pragma once
+// The run of a "dynamic" case: the rigid body (2.20)-(2.21) stepped by (3.9)-(3.10) with the
+// contact wrench (contact_wrench.hpp) solved at the end-of-step kinematics inside every Newton
+// iteration, the external loads value + rate t, step halving on a failed step, and the
+// bookkeeping of the run (momentum and energy balances, worst certificate).
+#include <functional>
+#include <string>
+
+#include "case_model.hpp"
+#include "contact_wrench.hpp"
+#include "rigid_body.hpp"
+#include "time_stepper.hpp"
+
+namespace dc::dynamics {
+
+/// One accepted step.
+struct DynamicSample {
+  RigidBodyState state;       ///< at the end of the step
+  Wrench contact;             ///< the contact's force and moment about the centre of mass
+  Wrench external;            ///< the applied loads at the end of the step
+  ContactState contact_state; ///< approach, area, stick/slip, creepage, certificate (fields: the last solution)
+  double kinetic_energy = 0.0;
+  double external_work = 0.0;  ///< of the applied loads since t = 0 (J)
+  double contact_work = 0.0;   ///< of the contact wrench since t = 0 (J)
+  int newton_iterations = 0;   ///< of this step
+  int contact_solves = 0;      ///< of this step (retries included)
+  int step = 0;                ///< 1-based
+};
+
+struct DynamicResult {
+  bool completed = false;        ///< reached t_end with every step converged
+  std::string status = "converged";  ///< or why and when it stopped
+  int steps = 0, rejected_steps = 0;  ///< accepted steps; step halvings after a failed step
+  int newton_iterations = 0, contact_solves = 0;
+  std::string contact_model;     ///< transient | steady (auto resolved)
+  double worst_certificate = 0.0, last_certificate = 0.0;
+  double momentum_imbalance = 0.0;  ///< |m dV - sum dt F| / max(sum dt |F|, m |V|) over the run (bdf1: round-off)
+  double energy_imbalance = 0.0;    ///< |KE_end - KE_0 - W_external - W_contact| / max(KE, |W|)
+  RigidBodyState initial, final;
+};
+
+class DynamicSimulation {
+ public:
+  explicit DynamicSimulation(const Case& c);
+  /// Runs to t_end; `on_step` after every accepted step (output, progress). Never throws for
+  /// non-convergence: the result says where and why it stopped.
+  DynamicResult run(const std::function<void(const DynamicSample&)>& on_step);
+
+  const RigidBody& body() const { return stepper_.body(); }
+  /// The applied force and moment at time t (loads: value + rate t).
+  Wrench external(double t) const;
+
+ private:
+  const Case& case_;
+  const DynamicSpec& spec_;
+  RigidBodyStepper stepper_;
+  ContactWrench contact_;
+};
+
+/// The body's initial state from the case (position, velocity, omega; orientation identity).
+RigidBodyState initial_state(const DynamicSpec& spec);
+
+}  // namespace dc::dynamics

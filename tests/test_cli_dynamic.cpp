@@ -1,0 +1,92 @@
+// `dyncontact solve` / `validate` on problem "dynamic": the files and summary keys of the
+// contract, bad keys named with exit 2, and a run that cannot converge stopping cleanly with
+// exit 3 and the time series so far.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace dc::test {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+class CliDynamic : public CliTest {
+ protected:
+  /// The ball-impact example, coarse and short, with `edit` applied; returns the file name.
+  std::string case_file(const std::function<void(json&)>& edit = {}) const {
+    json doc = example_json("ball-impact");
+    doc["grid"]["nx"] = doc["grid"]["ny"] = 12;
+    doc["time"]["dt"] = 2e-6;
+    doc["output"] = {{"plots", false}};
+    if (edit) edit(doc);
+    std::ofstream(dir_ / "case.json") << doc.dump(2);
+    return "case.json";
+  }
+  void expect_rejected(const std::function<void(json&)>& edit, const std::string& key) const {
+    const std::string file = case_file(edit);
+    for (const std::string& command : {"validate " + file, "solve " + file + " --out rejected -q"}) {
+      const CliResult r = run(command);
+      EXPECT_EQ(r.code, 2) << command << r.err;
+      EXPECT_NE(r.err.find(key), std::string::npos) << command << ": " << r.err;
+    }
+  }
+};
+
+TEST_F(CliDynamic, WritesSummaryAndTimeseries) {
+  const CliResult r = run("solve " + case_file() + " --out out -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json s = json::parse(slurp(dir_ / "out" / "summary.json"));
+  EXPECT_EQ(s["problem"], "dynamic");
+  EXPECT_EQ(s["status"], "completed");
+  EXPECT_EQ(s["steps"], 40);
+  EXPECT_EQ(s["timeseries"], "timeseries.csv");
+  for (const char* k : {"time", "position", "velocity", "omega"}) EXPECT_TRUE(s["final"].contains(k)) << k;
+  EXPECT_EQ(s["models"]["normal_model"], "dynamic");
+  EXPECT_GT(s["final"]["velocity"][2].get<double>(), 0.0);  // rebounded
+  EXPECT_LE(s["solver"]["certificate"]["worst"].get<double>(), 1e-6);
+  std::istringstream csv(slurp(dir_ / "out" / "timeseries.csv"));
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("t,x,y,z,vx,vy,vz,wx,wy,wz,Fx,Fy,Fz,Mx,My,Mz,creepage,stick_fraction", 0), 0u) << header;
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, 40);
+}
+
+TEST_F(CliDynamic, BadInputIsNamed) {
+  expect_rejected([](json& d) { d["body"]["mass"] = -1.0; }, "body.mass");
+  expect_rejected([](json& d) { d["body"]["spin"] = 1.0; }, "body.spin");
+  expect_rejected([](json& d) { d["time"]["scheme"] = "rk4"; }, "time.scheme");
+  expect_rejected([](json& d) { d["contact_model"] = "fast"; }, "contact_model");
+  expect_rejected([](json& d) { d["normal"] = {{"force", 10.0}}; }, "normal");
+  expect_rejected([](json& d) { d["loads"] = {{"force", {{"w", {{"value", 1.0}}}}}}; }, "loads.force.w");
+  expect_rejected([](json& d) { d.erase("time"); }, "time");
+  expect_rejected([](json& d) { d["normal_model"] = "quasi_static"; }, "loads.force.z");
+}
+
+TEST_F(CliDynamic, UnconvergedStepStopsWithPartialResults) {
+  // One iteration of the contact solver cannot certify a contact: the run stops at the first
+  // step in contact with the time series so far and exit 3.
+  const CliResult r = run("solve " + case_file([](json& d) {
+                            d["body"]["initial"]["position"] = {0, 0, 0.01 + 5e-6};
+                            d["solver"] = {{"max_iter", 1}, {"fallback", false}};
+                          }) + " --out out -q");
+  EXPECT_EQ(r.code, 3) << r.err;
+  const json s = json::parse(slurp(dir_ / "out" / "summary.json"));
+  EXPECT_EQ(s["status"], "stopped");
+  EXPECT_NE(s["message"].get<std::string>().find("contact solve"), std::string::npos) << s["message"];
+  EXPECT_GT(s["steps"].get<int>(), 0);  // the free flight before the contact
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "timeseries.csv"));
+}
+
+}  // namespace
+}  // namespace dc::test
