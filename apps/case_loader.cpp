@@ -50,7 +50,7 @@ bool is_result_file(const std::string& name) {
   static const std::set<std::string> fixed = {
       "summary.json", "compare.json", "fields.csv", "timeseries.csv", "plots.gp", "plots.log",
       "line_x.dat", "line_y.dat", "map.dat", "reference_x.dat", "reference_y.dat",
-      "table.csv", "table.json", "table_Fx.dat", "table_Fy.dat"};
+      "table.csv", "table.json", "table_Fx.dat", "table_Fy.dat", "body.vtu"};
   static const char* figures[] = {"pressure_x", "pressure_y", "traction_x", "traction_y", "pressure_map",
                                   "contact_map", "F_bar", "l_bar", "v_bar",
                                   // dynamic

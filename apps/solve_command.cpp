@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli_common.hpp"
+#include "finite_run.hpp"
 #include "paper_cylinder_run.hpp"
 #include "commands.hpp"
 #include "dynamic_run.hpp"
@@ -78,6 +79,7 @@ int run_solve(const SolveArgs& args) {
   const Case c = load_case(args.case_path, args.sets, args.backend);
   if (c.problem == ProblemKind::paper_cylinder) return run_paper_cylinder(c, prepare_output_dir(c, args.out), args.quiet);
   if (c.problem == ProblemKind::dynamic) return run_dynamic(c, prepare_output_dir(c, args.out), args.quiet);
+  if (c.problem == ProblemKind::finite) return run_finite(c, prepare_output_dir(c, args.out), args.quiet);
   if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential) not_implemented(c.problem);
   const std::string dir = prepare_output_dir(c, args.out);
 

@@ -12,6 +12,7 @@
 #include "resource_estimate.hpp"
 #include "result_limits.hpp"
 #include "cli_common.hpp"
+#include "finite_run.hpp"
 #include "paper_cylinder_run.hpp"
 #include "commands.hpp"
 
@@ -131,7 +132,9 @@ int run_validate(const ValidateArgs& args) {
     std::printf("dynamic: %.6g s in steps of %.6g s (%s), normal model %s, contact model %s, %s\n", c.dynamic->t_end,
                 c.dynamic->dt, c.dynamic->bdf2 ? "bdf2" : "bdf1", to_string(c.dynamic->normal_model),
                 to_string(c.dynamic->contact_model), c.friction ? "with friction" : "frictionless");
-  else if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential)
+  else if (c.problem == ProblemKind::finite && !finite_supported())
+    std::printf("note: this build has no finite-element support (needs libgmsh-dev, libsuitesparse-dev)\n");
+  else if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential && c.problem != ProblemKind::finite)
     std::printf("note: the solver for problem '%s' is not implemented in this build yet\n", to_string(c.problem));
   std::printf("valid\n");
   return kExitOk;

@@ -33,4 +33,7 @@ inline ValueRate read_value_rate(const JsonBlock& parent, const char* k) {
   return {v.number_or("value", 0.0), v.number_or("rate", 0.0)};
 }
 
+/// Problem finite (core/case_fe_body.cpp): fe_body, grid (x/y bounds) and normal, all required.
+void read_finite_blocks(const nlohmann::json& document, Case& c, const std::string& base_dir);
+
 }  // namespace dc

@@ -38,8 +38,14 @@ Elastic parse_elastic(const json& j, const std::string& path) {
   return hasE ? Elastic::from_E_nu(o.number("E"), nu, path) : Elastic::from_G_nu(o.number("G"), nu, path);
 }
 
-MaterialPair parse_materials(const json& j) {
+/// `body_from_mesh` (problem finite): the body's elasticity is its mesh's (fe_body), so the
+/// block gives the half-space ("base") only and the pair's body is rigid.
+MaterialPair parse_materials(const json& j, bool body_from_mesh = false) {
   JsonBlock o(j, "materials");
+  if (body_from_mesh) {
+    o.allow({"base"});
+    return MaterialPair{Elastic::make_rigid(), parse_elastic(o.at("base"), "materials.base")};
+  }
   o.allow({"body", "base", "allow_large_strain"});
   (void)o.boolean_or("allow_large_strain", false);  // read into Case by build_case
   MaterialPair m;
@@ -258,12 +264,12 @@ struct BlockUse {
 const std::vector<BlockUse>& block_uses() {
   using P = ProblemKind;
   static const std::vector<BlockUse> uses = {
-      {"materials", {P::normal, P::tangential, P::paper_cylinder, P::dynamic}},
+      {"materials", {P::normal, P::tangential, P::paper_cylinder, P::dynamic, P::finite}},
       {"profile", {P::normal, P::tangential, P::paper_cylinder, P::dynamic}},
-      {"grid", {P::normal, P::tangential, P::paper_cylinder, P::dynamic}},
-      {"normal", {P::normal, P::tangential, P::paper_cylinder}},
-      {"friction", {P::tangential, P::paper_cylinder, P::dynamic}},
-      {"tangential", {P::tangential}},
+      {"grid", {P::normal, P::tangential, P::paper_cylinder, P::dynamic, P::finite}},
+      {"normal", {P::normal, P::tangential, P::paper_cylinder, P::finite}},
+      {"friction", {P::tangential, P::paper_cylinder, P::dynamic, P::finite}},
+      {"tangential", {P::tangential, P::finite}},
       {"body", {P::paper_cylinder, P::dynamic}},
       {"loads", {P::paper_cylinder, P::dynamic}},
       {"time", {P::paper_cylinder, P::dynamic}},
@@ -272,13 +278,12 @@ const std::vector<BlockUse>& block_uses() {
       {"traction_model", {P::paper_cylinder}},
       {"dimensionless", {P::paper_cylinder}},
       {"sweep", {P::paper_cylinder}},
-      {"fe_body", {}},
+      {"fe_body", {P::finite}},
   };
   return uses;
 }
 
 void reject_unused_blocks(const JsonBlock& top, ProblemKind problem) {
-  if (problem == ProblemKind::finite) return;
   for (const BlockUse& use : block_uses()) {
     if (!top.has(use.block)) continue;
     if (std::find(use.problems.begin(), use.problems.end(), problem) != use.problems.end()) continue;
@@ -318,9 +323,10 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   // Blocks the static problems need; the other kinds take them when present.
   const bool static_problem = c.problem == ProblemKind::normal || c.problem == ProblemKind::tangential;
   auto required = [&](const char* k) { return static_problem || top.has(k); };
+  const bool finite = c.problem == ProblemKind::finite;
   if (required("materials")) {
-    c.materials = parse_materials(top.at("materials"));
-    c.allow_large_strain = JsonBlock(top.at("materials"), "materials").boolean_or("allow_large_strain", false);
+    c.materials = parse_materials(top.at("materials"), finite);
+    if (!finite) c.allow_large_strain = JsonBlock(top.at("materials"), "materials").boolean_or("allow_large_strain", false);
   }
   const bool has_profile = required("profile");
   if (has_profile) c.profile = read_profile(top.at("profile"), c.dimension, base_dir);
@@ -338,7 +344,8 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
     c.dynamic = read_dynamic(document, c);
     if (!has_normal) has_normal = dynamic_sizing_load(*c.dynamic, c, c.normal);
   }
-  if (required("grid")) {
+  if (finite) read_finite_blocks(document, c, base_dir);  // core/case_fe_body.cpp
+  if (required("grid") && !finite) {
     if (!has_profile) throw InputError("profile", "missing required key (the grid needs a profile)");
     c.grid = read_grid(top.at("grid"), c, has_normal);
     c.allow_edge_contact = JsonBlock(top.at("grid"), "grid").boolean_or("allow_edge_contact", false);
@@ -347,7 +354,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   if (c.problem == ProblemKind::paper_cylinder) c.paper_cylinder = read_paper_cylinder(document, c);
 
   // Blocks of the dynamic and finite problems: shape only, until their readers are here.
-  for (const char* k : {"fe_body", "body", "loads", "time", "dimensionless", "sweep"})
+  for (const char* k : {"body", "loads", "time", "dimensionless", "sweep"})
     if (top.has(k) && !top.at(k).is_object())
       throw InputError(k, "expected an object, got " + describe(top.at(k)));
   if (top.has("traction_model")) (void)top.choice("traction_model", "numerical", {"numerical", "carter_poritsky"});

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "case_fe_body.hpp"
 #include "case_dynamic.hpp"
 #include "case_paper_cylinder.hpp"
 #include "case_tangential.hpp"
@@ -52,7 +53,7 @@ struct OutputSpec {
 //  - build_case() calls the reader, and kBlockUses (case_model.cpp) lists the problems that
 //    use the block: in any other problem the block is an error naming it.
 // Solvers (nlp/, dynamics/) and the command line take these specs, never JSON.
-// Blocks still to come this way: "fe_body".
+// Blocks still to come this way: none.
 
 struct Case {
   std::string schema = "dyncontact/1";
@@ -69,6 +70,7 @@ struct Case {
   std::optional<FrictionSpec> friction;
   std::optional<TangentialSpec> tangential;        ///< problem tangential
   std::optional<PaperCylinderSpec> paper_cylinder;  ///< problem paper_cylinder
+  std::optional<FeBodySpec> fe_body;                ///< problem finite
   std::optional<DynamicSpec> dynamic;               ///< problem dynamic
   SolverSpec solver;
   OutputSpec output;

@@ -42,12 +42,13 @@ struct TangentialProblem::Impl {
   MaterialPair materials;
   FrictionLaw friction;
   OperatorKind kind;
-  HalfSpace half_space;
+  std::optional<HalfSpace> half_space;  // empty with given operators
   int comps;                         // tangential components: 1 (2-D) or 2 (3-D)
   std::size_t N;
   bool coupled;                      // kappa != 0: normal and tangential interact (4.26)-(4.27)
   std::shared_ptr<const LinearOperator> C;   // B31
-  std::unique_ptr<LinearOperator> Ct;        // B22
+  std::shared_ptr<const LinearOperator> Ct;  // B22
+  bool given_operators = false;              // finite contact: C, Ct given, no rolling
   std::unique_ptr<LinearOperator> B21, B32;  // kappa terms (only when coupled)
   std::unique_ptr<LinearOperator> Ct_up, B21_up;  // rolling: upstream displacement
   std::unique_ptr<LinearOperator> D_conv;          // steady rolling: Ct - Ct_up
@@ -63,15 +64,29 @@ struct TangentialProblem::Impl {
   bool native_first = false;                 // auto while marching: native first at any size
 
   Impl(const Grid& g, const MaterialPair& m, std::vector<double> h, FrictionLaw f, OperatorKind k)
-      : grid(g), materials(m), friction(std::move(f)), kind(k), half_space(g, m),
+      : grid(g), materials(m), friction(std::move(f)), kind(k), half_space(std::in_place, g, m),
         comps(g.dimension == 2 ? 1 : 2), N(g.size()), coupled(m.kappa() != 0.0),
         heights(std::move(h)) {
-    C = half_space.normal(kind);
-    Ct = half_space.tangential(kind);
+    C = half_space->normal(kind);
+    Ct = half_space->tangential(kind);
     if (coupled) {
-      B21 = half_space.tangential_from_normal(kind);
-      B32 = half_space.normal_from_tangential(kind);
+      B21 = half_space->tangential_from_normal(kind);
+      B32 = half_space->normal_from_tangential(kind);
     }
+    normal = std::make_unique<NormalProblem>(C, grid, heights);
+    reset();
+  }
+
+  /// Given compliances (the finite-contact constructor), no coupling.
+  Impl(const Grid& g, std::shared_ptr<const LinearOperator> normal_c, std::shared_ptr<const LinearOperator> tangential_c,
+       std::vector<double> h, FrictionLaw f)
+      : grid(g), materials{Elastic::make_rigid(), Elastic::make_rigid()}, friction(std::move(f)),
+        kind(OperatorKind::automatic),
+        comps(g.dimension == 2 ? 1 : 2), N(g.size()), coupled(false), given_operators(true), heights(std::move(h)) {
+    C = std::move(normal_c);
+    Ct = std::move(tangential_c);
+    if (Ct->rows() != comps * N || Ct->cols() != comps * N)
+      throw std::invalid_argument("tangential problem: the tangential compliance does not fit the grid");
     normal = std::make_unique<NormalProblem>(C, grid, heights);
     reset();
   }
@@ -113,8 +128,8 @@ struct TangentialProblem::Impl {
       if (s == 0) return displacement(p_prev, tau_prev, out, *Ct, B21.get());
       auto& ops = shifted[s];
       if (!ops.first) {
-        ops.first = half_space.tangential_shifted(s, kind);
-        if (coupled) ops.second = half_space.tangential_from_normal_shifted(s, kind);
+        ops.first = half_space->tangential_shifted(s, kind);
+        if (coupled) ops.second = half_space->tangential_from_normal_shifted(s, kind);
       }
       displacement(p_prev, tau_prev, out, *ops.first, ops.second.get());
     };
@@ -539,8 +554,8 @@ struct TangentialProblem::Impl {
                                                           const std::array<double, 3>& given_increment,
                                                           const SolverSpec& solver, const ProgressCallback& progress,
                                                           std::string& why_not) {
-    if (!D_conv) D_conv = half_space.tangential_convective(1, kind);
-    if (coupled && !B21_up) B21_up = half_space.tangential_from_normal_shifted(1, kind);
+    if (!D_conv) D_conv = half_space->tangential_convective(1, kind);
+    if (coupled && !B21_up) B21_up = half_space->tangential_from_normal_shifted(1, kind);
     const std::size_t n = comps * N;
     SteadyRollingProgram program;
     program.D = D_conv.get();
@@ -635,8 +650,8 @@ struct TangentialProblem::Impl {
     if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
     // Rolling in +x: the material now at x was at x + dx one step (dt = dx / V) earlier.
     if (!Ct_up) {
-      Ct_up = half_space.tangential_shifted(1, kind);
-      if (coupled) B21_up = half_space.tangential_from_normal_shifted(1, kind);
+      Ct_up = half_space->tangential_shifted(1, kind);
+      if (coupled) B21_up = half_space->tangential_from_normal_shifted(1, kind);
     }
     // Per step the rigid slip is v dt = dx (creepage - phi y, eta + phi x): increments dx * mode.
     std::array<double, 3> increment{};
@@ -679,6 +694,13 @@ void TangentialProblem::forget_starting_points() {
   impl_->normal_cache.reset();
 }
 
+TangentialProblem::TangentialProblem(const Grid& grid, std::shared_ptr<const LinearOperator> normal_compliance,
+                                     std::shared_ptr<const LinearOperator> tangential_compliance,
+                                     std::vector<double> heights, FrictionLaw friction)
+    : impl_(std::make_shared<Impl>(grid, std::move(normal_compliance), std::move(tangential_compliance),
+                                   std::move(heights), std::move(friction))),
+      grid_(grid) {}
+
 void TangentialProblem::reset() { impl_->reset(); }
 
 TangentialSolution TangentialProblem::step(const TangentialLoad& load, const SolverSpec& solver,
@@ -700,6 +722,7 @@ TangentialSolution TangentialProblem::step(const TangentialLoad& load, const Sol
 TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, const SolverSpec& solver,
                                                      const ProgressCallback& progress) {
   Impl& s = *impl_;
+  if (s.given_operators) throw InputError("tangential.regime", "rolling is not available for a finite body");
   s.reset();
   if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
   // auto / native: the steady state directly (Newton); the convex-program backends, or Newton
@@ -777,6 +800,7 @@ TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, co
 TangentialSolution TangentialProblem::roll(const RollingLoad& load, double distance, const SolverSpec& solver,
                                            const ProgressCallback& progress) {
   Impl& s = *impl_;
+  if (s.given_operators) throw InputError("tangential.regime", "rolling is not available for a finite body");
   if (!std::isfinite(distance) || distance < 0.0)
     throw InputError("tangential.distance", "the rolling distance must be a finite length >= 0 (m)");
   if (distance == 0.0) {
@@ -814,6 +838,8 @@ TangentialSolution TangentialProblem::convected_step(const NormalSpec& normal, c
                                                    double travel, const SolverSpec& solver) {
   Impl& s = *impl_;
   if (!std::isfinite(travel)) throw InputError("travel", "must be finite");
+  if (s.given_operators && travel != 0.0)
+    throw InputError("travel", "a finite body's contact is not convected (no shifted compliances)");
   std::array<ModeControl, 3> modes{};
   for (int k = 0; k < 3; ++k) modes[k].value = increment[k];
   TangentialSolution sol = s.solve_step(normal, modes, increment, travel / s.grid.dx, solver, {});

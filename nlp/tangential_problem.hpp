@@ -75,6 +75,12 @@ class TangentialProblem {
  public:
   TangentialProblem(const Grid& grid, const MaterialPair& materials, std::vector<double> heights,
                     FrictionLaw friction, OperatorKind kind = OperatorKind::automatic);
+  /// Given compliances (finite contact: half-space plus a finite body, nlp/finite/): normal
+  /// (N x N) and tangential (2N x 2N in 3-D). No normal-tangential coupling (kappa = 0: the
+  /// Goodman approximation) and quasi-static steps only (rolling throws InputError).
+  TangentialProblem(const Grid& grid, std::shared_ptr<const LinearOperator> normal_compliance,
+                    std::shared_ptr<const LinearOperator> tangential_compliance, std::vector<double> heights,
+                    FrictionLaw friction);
 
   /// One quasi-static step (shift/torsion/loading history).
   TangentialSolution step(const TangentialLoad& load, const SolverSpec& solver,

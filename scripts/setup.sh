@@ -24,6 +24,7 @@ PACKAGES=(
   pkg-config cmake g++ make
   libopenmpi-dev openmpi-bin
   python3-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib
+  libgmsh-dev libsuitesparse-dev  # finite-element bodies (DYNCONTACT_WITH_FE)
 )
 FUZZ_PACKAGES=(clang libclang-rt-dev)
 if [[ "${DYNCONTACT_WITH_FUZZ:-0}" == 1 ]]; then PACKAGES+=("${FUZZ_PACKAGES[@]}"); fi

@@ -1,0 +1,132 @@
+#include "finite_run.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "errors.hpp"
+
+#ifdef DYNCONTACT_WITH_FE
+#include "fields_writer.hpp"
+#include "finite_contact.hpp"
+#include "progress.hpp"
+#include "static_fields.hpp"
+#include "summary_writer.hpp"
+#include "tangential_run.hpp"
+#include "vtu_writer.hpp"
+#endif
+
+namespace dc::cli {
+
+#ifdef DYNCONTACT_WITH_FE
+
+bool finite_supported() { return true; }
+
+namespace {
+
+/// The tangential steps (shift, torsion, histories) on the finite body; the summary of the last
+/// step with "steps" for a history, as for the tangential problem.
+nlohmann::json solve_tangential_steps(const Case& c, FiniteContact& fc, Progress& reporter,
+                                      StaticFields& last_fields, Eigen::VectorXd& body_u, SolverReport& report) {
+  TangentialProblem& problem = fc.tangential_problem(FrictionLaw::from_spec(*c.friction));
+  const TangentialSpec& t = *c.tangential;
+  const std::vector<TangentialLoad> loads = t.has_history ? t.history : std::vector<TangentialLoad>{t.load};
+  nlohmann::json summary, steps = nlohmann::json::array();
+  report.status = SolveStatus::converged;
+  for (std::size_t k = 0; k < loads.size(); ++k) {
+    const TangentialSolution sol = problem.step(loads[k], c.solver, reporter.callback());
+    Case step_case = c;
+    step_case.normal = loads[k].normal;
+    last_fields = tangential_fields(sol, std::max(c.solver.certificate_tol, 1e-12));
+    summary = tangential_summary(step_case, sol, last_fields);
+    summary["step"] = static_cast<int>(k);
+    steps.push_back(summary);
+    if (sol.report.status != SolveStatus::converged || k + 1 == loads.size()) report = sol.report;
+    if (k + 1 == loads.size()) body_u = fc.body_displacement(sol.tx, sol.ty, sol.normal.pressure);
+  }
+  if (t.has_history) summary["steps"] = steps;
+  summary.erase("step");
+  return summary;
+}
+
+}  // namespace
+
+int run_finite(const Case& c, const std::string& dir, bool quiet) {
+  const auto start = std::chrono::steady_clock::now();
+  FiniteContact fc(*c.fe_body, c.grid, c.materials.base,
+                   c.solver.operator_kind == "dense" ? OperatorKind::dense
+                   : c.solver.operator_kind == "fft" ? OperatorKind::fft
+                                                      : OperatorKind::automatic);
+  if (!quiet)
+    std::fprintf(stderr, "body: %zu dofs, %zu elements; meshed in %.3g s, factorised in %.3g s\n", fc.body().dofs(),
+                 fc.body().mesh().elements.size(), fc.mesh_seconds(), fc.body().factorisation_seconds());
+  nlohmann::json s;
+  StaticFields fields;
+  Eigen::VectorXd body_u;
+  SolverReport report;
+  {
+    Progress reporter("solving " + c.name + " (" + c.solver.backend + ")", !quiet);
+    if (c.tangential) {
+      s = solve_tangential_steps(c, fc, reporter, fields, body_u, report);
+    } else {
+      FiniteNormalSolution sol = fc.solve_normal(c.normal, c.solver, reporter.callback());
+      fields = normal_fields(sol.contact.pressure, std::max(c.solver.certificate_tol, 1e-12));
+      s = normal_summary(c, sol.contact, fields);
+      body_u = sol.body_displacement;
+      report = sol.contact.report;
+    }
+    reporter.finish();
+  }
+  report.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  s["solver"]["time_s"] = report.time_s;
+  double max_u = 0.0;
+  for (Eigen::Index k = 0; k + 2 < body_u.size(); k += 3) max_u = std::max(max_u, body_u.segment<3>(k).norm());
+  s["body_dofs"] = fc.body().dofs();
+  s["body_elements"] = fc.body().mesh().elements.size();
+  s["max_body_displacement"] = max_u;
+  s["mesh_time_s"] = fc.mesh_seconds();
+  s["factorisation_time_s"] = fc.body().factorisation_seconds();
+  nlohmann::json files = {{"summary", "summary.json"}, {"body", "body.vtu"}};
+  if (c.output.fields) {
+    write_fields(dir, c.grid, fields);
+    files["fields"] = "fields.csv";
+  }
+  write_body_vtu((std::filesystem::path(dir) / "body.vtu").string(), fc.body().mesh(), body_u,
+                 fc.body().element_stress(body_u));
+  s["files"] = files;
+  const std::string summary_path = write_summary(dir, s);
+  if (!quiet) {
+    std::printf("%s: %s (%s, %d iterations, %.3g s; certificate %.2e)\n", c.name.c_str(), to_string(report.status),
+                report.backend.c_str(), report.iterations, report.time_s, report.certificate.worst());
+    std::printf("  %-16s %-12.5g N\n  %-16s %-12.5g m\n  %-16s %-12.5g Pa\n  %-16s %-12.5g m\n", "normal force",
+                s["normal_force"].get<double>(), "approach", s["approach"].get<double>(), "max pressure",
+                s["max_pressure"].get<double>(), "body displ.", max_u);
+    if (c.tangential)
+      std::printf("  %-16s [%.5g, %.5g] N, moment %.5g N m\n", "tangential force",
+                  s["tangential_force"][0].get<double>(), s["tangential_force"][1].get<double>(),
+                  s["twisting_moment"].get<double>());
+    std::printf("wrote %s\n", summary_path.c_str());
+    std::fflush(stdout);
+  }
+  if (report.status != SolveStatus::converged) {
+    if (c.solver.accept_unconverged) return kExitOk;
+    std::cerr << "error: solver: did not converge (" << report.message << "); results written to " << dir << "\n";
+    return kExitUnconverged;
+  }
+  return kExitOk;
+}
+
+#else
+
+bool finite_supported() { return false; }
+
+int run_finite(const Case&, const std::string&, bool) {
+  throw InputError("problem", "'finite' needs finite-element support: this build has none (install libgmsh-dev and "
+                              "libsuitesparse-dev, then reconfigure with -DDYNCONTACT_WITH_FE=ON)");
+}
+
+#endif
+
+}  // namespace dc::cli

@@ -1,0 +1,38 @@
+#pragma once
+// The finite-element body of a case (CASES.md "fe_body"): shape or mesh file, mesh sizes,
+// materials per region (nonhomogeneous), density. Read from JSON here; core/fe builds it.
+#include <array>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "elastic_stiffness.hpp"
+
+namespace dc {
+
+enum class FeShape { block, cylinder, hemisphere, mesh };
+
+/// Elements whose centroid lies below `z_below` (measured from the body's lowest point) take
+/// this material instead of the body's.
+struct FeRegionSpec {
+  double z_below = 0.0;
+  fe::BodyMaterial material;
+};
+
+struct FeBodySpec {
+  FeShape shape = FeShape::hemisphere;
+  std::array<double, 3> size{0.0, 0.0, 0.0};  ///< block: lx, ly, height
+  double radius = 0.0;                        ///< cylinder, hemisphere
+  double height = 0.0;                        ///< cylinder
+  std::string mesh_file;                      ///< shape mesh: a Gmsh file (tetrahedra)
+  std::array<int, 3> elements{8, 8, 8};       ///< divisions of the extent: the coarse element size
+  double contact_size = 0.0;                  ///< element size at the contact (0: coarse / 4)
+  fe::BodyMaterial material;
+  std::vector<FeRegionSpec> regions;
+};
+
+/// Reads the "fe_body" block (key prefix "fe_body"); paths relative to `case_dir`.
+FeBodySpec read_fe_body(const nlohmann::json& block, const std::string& case_dir);
+
+}  // namespace dc

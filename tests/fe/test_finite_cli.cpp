@@ -1,0 +1,60 @@
+// problem "finite" from the command line: the bundled finite-hemisphere example solves, writes
+// summary.json with the body's keys and body.vtu, and follows Hertz for the pair; bad fe_body
+// input is an input error naming the key.
+#include <cmath>
+#include <fstream>
+#include <functional>
+
+#include <gtest/gtest.h>
+
+#include "cli_runner.hpp"
+#include "hertz.hpp"
+#include "material.hpp"
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+class FiniteCli : public dc::test::CliTest {
+ protected:
+  std::string case_file(const std::function<void(json&)>& edit) const {
+    json doc = dc::test::example_json("finite-hemisphere");
+    edit(doc);
+    std::ofstream(dir_ / "case.json") << doc.dump(2);
+    return "case.json";
+  }
+  void expect_rejected(const std::function<void(json&)>& edit, const std::string& key) const {
+    const dc::test::CliResult r = run("solve " + case_file(edit));
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("error: " + key + ":"), std::string::npos) << "stderr: " << r.err;
+  }
+};
+
+TEST_F(FiniteCli, HemisphereExampleSolvesWithBodyOutputs) {
+  const dc::test::CliResult r = run("solve " + dc::test::shell_quote(dc::test::example_path("finite-hemisphere")) +
+                                    " --out out");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json s = json::parse(dc::test::slurp(dir_ / "out" / "summary.json"));
+  EXPECT_EQ(s["problem"], "finite");
+  EXPECT_GT(s["body_dofs"].get<int>(), 1000);
+  EXPECT_GT(s["max_body_displacement"].get<double>(), 0.0);
+  EXPECT_GE(s["factorisation_time_s"].get<double>(), 0.0);
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "body.vtu"));
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "fields.csv"));
+  // Hertz for the pair (both steel): peak pressure within 5 % (the mesh error, see test_finite_contact).
+  const dc::MaterialPair pair{dc::Elastic::from_E_nu(2.1e11, 0.3), dc::Elastic::from_E_nu(2.1e11, 0.3)};
+  const json c = dc::test::example_json("finite-hemisphere");
+  const auto h = dc::hertz::sphere(c["fe_body"]["radius"].get<double>(), c["normal"]["force"].get<double>(), pair.E_star());
+  EXPECT_NEAR(s["max_pressure"].get<double>(), h.p0, 0.05 * h.p0);
+}
+
+TEST_F(FiniteCli, BadBodyInputNamesTheKey) {
+  expect_rejected([](json& d) { d["fe_body"]["shape"] = "mesh"; d["fe_body"]["mesh"] = "missing.msh"; }, "fe_body.mesh");
+  expect_rejected([](json& d) { d["fe_body"]["material"]["nu"] = 0.6; }, "fe_body.material.nu");
+  expect_rejected([](json& d) { d["fe_body"].erase("density"); }, "fe_body.density");
+  expect_rejected([](json& d) { d["fe_body"]["radius"] = -1.0; }, "fe_body.radius");
+  expect_rejected([](json& d) { d["fe_body"]["colour"] = "red"; }, "fe_body.colour");
+  expect_rejected([](json& d) { d.erase("fe_body"); }, "fe_body");
+  expect_rejected([](json& d) { d["profile"] = {{"type", "sphere"}, {"radius", 0.01}}; }, "profile");
+  // The grid far from the body: no face over it.
+  expect_rejected([](json& d) { d["grid"]["x"] = {0.5, 0.6}; }, "fe_body");
+}

@@ -1,0 +1,93 @@
+// Finite contact, normal: an FE hemisphere large against its contact reproduces Hertz for the
+// pair (the body's compliance from the mesh, the half-space's from Boussinesq), a stiff body
+// Hertz with the half-space alone; a softer body gives a larger contact.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "finite_contact.hpp"
+#include "hertz.hpp"
+
+namespace dc {
+namespace {
+
+constexpr double kR = 0.01;        // hemisphere radius (m)
+constexpr double kE = 2.1e11, kNu = 0.3;
+
+FeBodySpec hemisphere(double E_body, double nu_body, double contact_size) {
+  FeBodySpec s;
+  s.shape = FeShape::hemisphere;
+  s.radius = kR;
+  s.elements = {8, 8, 4};
+  s.contact_size = contact_size;
+  s.material = {fe::isotropic_stiffness(E_body, nu_body, "test"), 7800.0};
+  return s;
+}
+
+struct Measured {
+  double p0, a, force, approach;
+  std::size_t dofs;
+};
+
+/// Solves the hemisphere under force P on a grid of 2*half cells covering 1.5 a_hertz.
+Measured press(const FeBodySpec& body, double P, double a_expected, int half = 12) {
+  const double L = 1.5 * a_expected;
+  const Grid g = Grid::make(3, 2 * half, 2 * half, -L, L, -L, L);
+  FiniteContact fc(body, g, Elastic::from_E_nu(kE, kNu));
+  SolverSpec solver;
+  solver.backend = "native";
+  const FiniteNormalSolution s = fc.solve_normal({Control::force, P}, solver);
+  EXPECT_EQ(s.contact.report.status, SolveStatus::converged) << s.contact.report.message;
+  Measured m{0.0, 0.0, s.contact.force, s.contact.approach, fc.body().dofs()};
+  std::size_t n_contact = 0;
+  for (double p : s.contact.pressure) {
+    m.p0 = std::max(m.p0, p);
+    n_contact += p > 0.0 ? 1 : 0;
+  }
+  m.a = std::sqrt(static_cast<double>(n_contact) * g.area() / M_PI);
+  return m;
+}
+
+TEST(FiniteContact, StiffHemisphereOnHalfSpaceIsHertzWithTheHalfSpaceAlone) {
+  // A body 1000x stiffer: E* is the half-space's. Tolerances: p0 3 % (grid a/8 and the
+  // faceted sphere), contact radius within one grid cell.
+  const double a_target = 0.06 * kR;
+  const double Es = kE / (1.0 - kNu * kNu);
+  const double P = 4.0 * Es * a_target * a_target * a_target / (3.0 * kR);
+  const auto h = hertz::sphere(kR, P, Es);
+  const Measured m = press(hemisphere(1000.0 * kE, kNu, 0.25 * h.a), P, h.a);
+  const double dx = 3.0 * h.a / 24.0;
+  EXPECT_NEAR(m.force, P, 1e-6 * P);
+  EXPECT_NEAR(m.p0, h.p0, 0.03 * h.p0);
+  EXPECT_NEAR(m.a, h.a, dx);
+}
+
+TEST(FiniteContact, HemisphereOfTheHalfSpacesMaterialIsHertzForThePair) {
+  // Both compliances: the body's from the mesh. Local quantities (p0, a) follow Hertz with
+  // E* of the pair within the mesh error (5 % on p0 with contact elements a/4).
+  const double a_target = 0.06 * kR;
+  const MaterialPair pair{Elastic::from_E_nu(kE, kNu), Elastic::from_E_nu(kE, kNu)};
+  const double Es = pair.E_star();
+  const double P = 4.0 * Es * a_target * a_target * a_target / (3.0 * kR);
+  const auto h = hertz::sphere(kR, P, Es);
+  const Measured m = press(hemisphere(kE, kNu, 0.25 * h.a), P, h.a);
+  const double dx = 3.0 * h.a / 24.0;
+  EXPECT_NEAR(m.p0, h.p0, 0.05 * h.p0);
+  EXPECT_NEAR(m.a, h.a, dx);
+  // The approach holds the body's global compliance as well: larger than the local Hertz value.
+  EXPECT_GT(m.approach, 0.9 * h.approach);
+}
+
+TEST(FiniteContact, SofterBodyGivesLargerContactAndLowerPressure) {
+  const double P = 2000.0;
+  const double Es = kE / (1.0 - kNu * kNu);
+  const auto h = hertz::sphere(kR, P, Es);
+  const Measured stiff = press(hemisphere(kE, kNu, 0.4 * h.a), P, 1.3 * h.a, 8);
+  const Measured soft = press(hemisphere(0.3 * kE, kNu, 0.4 * h.a), P, 1.3 * h.a, 8);
+  EXPECT_GT(soft.a, stiff.a);
+  EXPECT_LT(soft.p0, 0.9 * stiff.p0);
+  EXPECT_GT(soft.approach, stiff.approach);
+}
+
+}  // namespace
+}  // namespace dc
