@@ -866,7 +866,8 @@ const LinearOperator& TangentialProblem::tangential_compliance() const { return 
 
 const LinearOperator& TangentialProblem::convective_compliance() {
   Impl& s = *impl_;
-  if (!s.D_conv) s.D_conv = s.half_space.tangential_convective(1, s.kind);
+  if (!s.half_space) throw InputError("tangential.regime", "convection is not available for a finite body");
+  if (!s.D_conv) s.D_conv = s.half_space->tangential_convective(1, s.kind);
   return *s.D_conv;
 }
 
