@@ -71,7 +71,14 @@ nlohmann::json solve_table_line(const Case& c, const TableAxes& axes, std::size_
     const double values[3] = {cx, cy, spin};
     for (int k = 0; k < 3; ++k) load.modes[k] = {ModeControl::Kind::amplitude, values[k]};
     try {
-      const TangentialSolution s = problem.steady_rolling(load, c.solver);
+      TangentialSolution s = problem.steady_rolling(load, c.solver);
+      // A warm start across the saturation (full slip → stick) can leave Newton short of the
+      // steady state: the point is then solved again from a fresh problem and zero traction.
+      if (s.report.status != SolveStatus::converged && !load.warm_start.empty()) {
+        problem = make_tangential_problem(c);
+        load.warm_start.clear();
+        s = problem.steady_rolling(load, c.solver);
+      }
       rows.push_back(row_json(s, c.grid.area()));
       // The next point starts from this one's traction when it is a proven steady state.
       if (rows.back()["status"] == "converged") {
