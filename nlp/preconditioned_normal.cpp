@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "interrupt.hpp"
 #include "native_solvers.hpp"
 
 namespace dc {
@@ -88,6 +89,7 @@ SolveOutcome solve_normal_preconditioned(const QuadraticProgram& qp, const Solve
   constexpr int kRefresh = 25;  // recompute w = Q x at least this often (round-off)
   int since_refresh = 0;
   for (int it = 1; it <= options.max_iter; ++it) {
+    throw_if_interrupted();
     out.iterations = it;
     if (!w_current || since_refresh >= kRefresh) {
       qp.Q->apply(x.data(), w.data());
