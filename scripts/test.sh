@@ -5,7 +5,7 @@
 #   scripts/test.sh --sanitize   only the unit suites built with AddressSanitizer and
 #                                UndefinedBehaviorSanitizer (build-sanitize/; any report fails)
 #   scripts/test.sh --fuzz S     only the fuzz targets for S seconds in total (scripts/fuzz.sh)
-# Options combine (.ci/run: --all --sanitize --fuzz 60; the parts run in that order).
+# Options combine (the parts run in the order --all, --sanitize, --fuzz).
 # Any other argument is passed to ctest, e.g. scripts/test.sh -R Hertz, scripts/test.sh -V.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
