@@ -68,6 +68,113 @@ void TangentialSensitivity::solve_stick(const LinearOperator& op, bool symmetric
   }
 }
 
+void TangentialSensitivity::slip_response(const LinearOperator& Ct, const Grid& grid, const TangentialSolution& s,
+                                          int l, std::vector<double>& tau) const {
+  const std::size_t N = grid.size();
+  const int comps = grid.dimension == 2 ? 1 : 2;
+  tau.assign(comps * N, 0.0);
+  if (comps == 1) return;
+  for (std::size_t e = 0; e < N; ++e) {
+    if (s.state[e] != 2) continue;
+    const double sx = s.sx[e], sy = s.sy[e], slip = std::hypot(sx, sy);
+    if (!(slip > 0.0)) continue;
+    // In series with the element's own compliance: a barely slipping element is no stiffer
+    // than a sticking one.
+    const double ux = sx / slip, uy = sy / slip, k = s.bound[e] / (slip + s.bound[e] * Ct.diagonal(e));
+    const double mx = mode(grid, l, e, 0), my = mode(grid, l, e, 1);
+    const double along = mx * ux + my * uy;
+    tau[e] = -k * (mx - along * ux);
+    tau[N + e] = -k * (my - along * uy);
+  }
+}
+
+Eigen::Matrix3d TangentialSensitivity::compute_coupled(const LinearOperator& Ct, const LinearOperator& C,
+                                                       const LinearOperator& B21, const LinearOperator& B32,
+                                                       bool force_control, const FrictionLaw& law, const Grid& grid,
+                                                       const TangentialSolution& s) {
+  Eigen::Matrix3d G = Eigen::Matrix3d::Zero();
+  const std::size_t N = grid.size();
+  const int comps = grid.dimension == 2 ? 1 : 2;
+  const int modes = grid.dimension == 2 ? 1 : 3;
+  const std::size_t n = comps * N, m = n + N + 1;  // unknowns: dtau (stick), dp (contact), d delta
+  const std::vector<double>& p = s.normal.pressure;
+  if (s.state.size() != N || p.size() != N) return G;
+  auto stick = [&](std::size_t e) { return s.state[e] == 1; };
+  auto slip = [&](std::size_t e) { return s.state[e] == 2; };
+  auto contact = [&](std::size_t e) { return p[e] > 0.0; };
+  // Slipping elements: |tau| = f(p), so dtau = f'(p) dp tau/|tau| (central difference of the law).
+  slope_.assign(n, 0.0);
+  for (std::size_t e = 0; e < N; ++e) {
+    if (!slip(e)) continue;
+    const double mag = comps == 1 ? std::abs(s.tx[e]) : std::hypot(s.tx[e], s.ty[e]);
+    if (!(mag > 0.0)) continue;
+    const double h = 1e-6 * p[e];
+    const double df = (law.bound(p[e] + h) - law.bound(p[e] - h)) / (2.0 * h);
+    slope_[e] = df * s.tx[e] / mag;
+    if (comps == 2) slope_[N + e] = df * s.ty[e] / mag;
+  }
+  const double c0 = C.diagonal(0);
+  full_.assign(n, 0.0);
+  wt_.assign(n, 0.0);
+  wn_.assign(N, 0.0);
+  dp_.assign(N, 0.0);
+  extra_t_.assign(n, 0.0);
+  extra_n_.assign(N, 0.0);
+  // The traction of a trial vector: its stick part, plus the slipping elements' f'(p) dp.
+  auto traction = [&](const std::vector<double>& in) {
+    for (std::size_t e = 0; e < N; ++e) {
+      dp_[e] = contact(e) ? in[n + e] : 0.0;
+      for (int c = 0; c < comps; ++c) {
+        const std::size_t i = c * N + e;
+        full_[i] = stick(e) ? in[i] : slope_[i] * dp_[e];
+      }
+    }
+  };
+  const VectorMap apply = [&](const std::vector<double>& in, std::vector<double>& out) {
+    traction(in);
+    Ct.apply(full_, wt_);
+    B21.apply(dp_, extra_t_);
+    C.apply(dp_, wn_);
+    B32.apply(full_, extra_n_);
+    out.assign(m, 0.0);
+    double sum = 0.0;
+    for (std::size_t e = 0; e < N; ++e) {
+      for (int c = 0; c < comps; ++c) {
+        const std::size_t i = c * N + e;
+        out[i] = stick(e) ? wt_[i] + extra_t_[i] : in[i];  // ds = 0 on the stick set
+      }
+      out[n + e] = contact(e) ? wn_[e] + extra_n_[e] - in[n + N] : in[n + e];  // closed gap
+      if (contact(e)) sum += dp_[e];
+    }
+    out[n + N] = force_control ? c0 * sum : in[n + N];  // the load or the approach held
+  };
+  b_.assign(m, 0.0);
+  x_.assign(m, 0.0);
+  for (int l = 0; l < modes; ++l) {
+    slip_response(Ct, grid, s, l, tau0_);
+    Ct.apply(tau0_, wt_);
+    B32.apply(tau0_, wn_);
+    for (std::size_t e = 0; e < N; ++e) {
+      for (int c = 0; c < comps; ++c) {
+        const std::size_t i = c * N + e;
+        b_[i] = stick(e) ? -(mode(grid, l, e, c) + wt_[i]) : 0.0;
+      }
+      b_[n + e] = contact(e) ? -wn_[e] : 0.0;
+    }
+    b_[n + N] = 0.0;
+    std::fill(x_.begin(), x_.end(), 0.0);
+    gmres(apply, {}, b_, x_, 1e-8, 60, 600);
+    traction(x_);
+    for (int k = 0; k < modes; ++k) {
+      double sum = 0.0;
+      for (std::size_t e = 0; e < N; ++e)
+        for (int c = 0; c < comps; ++c) sum += mode(grid, k, e, c) * (full_[c * N + e] + tau0_[c * N + e]);
+      G(k, l) = sum * grid.area();
+    }
+  }
+  return G;
+}
+
 Eigen::Matrix3d TangentialSensitivity::assemble(const LinearOperator& op, bool symmetric, const LinearOperator& Ct,
                                                 const Grid& grid, const TangentialSolution& s) {
   Eigen::Matrix3d G = Eigen::Matrix3d::Zero();
@@ -83,21 +190,10 @@ Eigen::Matrix3d TangentialSensitivity::assemble(const LinearOperator& op, bool s
   for (int l = 0; l < modes; ++l) {
     solve_stick(op, symmetric, grid, s, l);
     // Slip set: the traction turns with the slip direction (3-D).
-    for (std::size_t e = 0; e < N; ++e) {
-      if (s.state[e] != 2) continue;
-      x_[e] = 0.0;
-      if (comps == 1) continue;
-      x_[N + e] = 0.0;
-      const double sx = s.sx[e], sy = s.sy[e], slip = std::hypot(sx, sy);
-      if (!(slip > 0.0)) continue;
-      // In series with the element's own compliance: a barely slipping element is no stiffer
-      // than a sticking one.
-      const double ux = sx / slip, uy = sy / slip, k = s.bound[e] / (slip + s.bound[e] * Ct.diagonal(e));
-      const double mx = mode(grid, l, e, 0), my = mode(grid, l, e, 1);
-      const double along = mx * ux + my * uy;
-      x_[e] = -k * (mx - along * ux);
-      x_[N + e] = -k * (my - along * uy);
-    }
+    slip_response(Ct, grid, s, l, tau0_);
+    for (std::size_t e = 0; e < N; ++e)
+      if (s.state[e] == 2)
+        for (int c = 0; c < comps; ++c) x_[c * N + e] = tau0_[c * N + e];
     for (int k = 0; k < modes; ++k) {
       double sum = 0.0;
       for (std::size_t e = 0; e < N; ++e)

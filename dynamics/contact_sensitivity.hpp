@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "friction_law.hpp"
 #include "grid.hpp"
 #include "linear_operator.hpp"
 #include "tangential_problem.hpp"
@@ -23,6 +24,14 @@ class TangentialSensitivity {
   Eigen::Matrix3d compute(const LinearOperator& Ct, const Grid& grid, const TangentialSolution& s);
   /// The same for a steady-rolling solution (slip per element of travel ds = D tau + dx xi m,
   /// D = B22 - S B22 not symmetric: GMRES on the stick set): d R_k / d xi_l per unit creepage / spin.
+  /// kappa != 0 (dissimilar materials): the same with the pressure following the traction, the
+  /// contact set fixed ((4.2)-(4.3) linearised): on the contact set C dp + kappa B32 dtau = d delta,
+  /// with sum dp = 0 (`force_control`) or d delta = 0 (the approach given); stick elements
+  /// B22 dtau + kappa B21 dp = -m_l; slipping elements' traction also follows the bound,
+  /// f'(p) dp along tau. One GMRES solve (the coupled system is not symmetric) per rigid mode.
+  Eigen::Matrix3d compute_coupled(const LinearOperator& Ct, const LinearOperator& C, const LinearOperator& B21,
+                                  const LinearOperator& B32, bool force_control, const FrictionLaw& law,
+                                  const Grid& grid, const TangentialSolution& s);
   Eigen::Matrix3d compute_steady(const LinearOperator& D, const LinearOperator& Ct, const Grid& grid,
                                  const TangentialSolution& s);
 
@@ -31,7 +40,11 @@ class TangentialSensitivity {
   void solve_stick(const LinearOperator& op, bool symmetric, const Grid& grid, const TangentialSolution& s, int l);
   Eigen::Matrix3d assemble(const LinearOperator& op, bool symmetric, const LinearOperator& Ct, const Grid& grid,
                            const TangentialSolution& s);
+  /// The slipping elements' response to rigid mode l alone (their traction turns with the slip).
+  void slip_response(const LinearOperator& Ct, const Grid& grid, const TangentialSolution& s, int l,
+                     std::vector<double>& tau) const;
   std::vector<double> x_, r_, p_, q_, full_, out_;
+  std::vector<double> tau0_, wt_, wn_, dp_, b_, slope_, extra_t_, extra_n_;
 };
 
 }  // namespace dc::dynamics
