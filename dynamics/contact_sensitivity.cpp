@@ -88,87 +88,110 @@ void TangentialSensitivity::slip_response(const LinearOperator& Ct, const Grid& 
   }
 }
 
-Eigen::Matrix3d TangentialSensitivity::compute_coupled(const LinearOperator& Ct, const LinearOperator& C,
-                                                       const LinearOperator& B21, const LinearOperator& B32,
-                                                       bool force_control, const FrictionLaw& law, const Grid& grid,
-                                                       const TangentialSolution& s) {
+Eigen::Matrix3d TangentialSensitivity::compute_full(const LinearOperator& Ct, const Coupling& coupling,
+                                                    const FrictionLaw& law, const Grid& grid,
+                                                    const TangentialSolution& s) {
   Eigen::Matrix3d G = Eigen::Matrix3d::Zero();
   const std::size_t N = grid.size();
   const int comps = grid.dimension == 2 ? 1 : 2;
   const int modes = grid.dimension == 2 ? 1 : 3;
-  const std::size_t n = comps * N, m = n + N + 1;  // unknowns: dtau (stick), dp (contact), d delta
+  const bool coupled = coupling.C && coupling.B21 && coupling.B32;
+  // Unknowns: dtau (every element; 0 off the contact), then with coupling dp and d delta.
+  const std::size_t n = comps * N, m = coupled ? n + N + 1 : n;
   const std::vector<double>& p = s.normal.pressure;
   if (s.state.size() != N || p.size() != N) return G;
   auto stick = [&](std::size_t e) { return s.state[e] == 1; };
   auto slip = [&](std::size_t e) { return s.state[e] == 2; };
   auto contact = [&](std::size_t e) { return p[e] > 0.0; };
-  // Slipping elements: |tau| = f(p), so dtau = f'(p) dp tau/|tau| (central difference of the law).
+  // Slipping elements: tau = -f(p) ds/|ds|, so dtau = -(f/|ds|)(I - s s') d(ds) + f'(p) dp tau/|tau|
+  // (3-D; in 2-D only the second term). gain_ = f/|ds|, dir_ = s, slope_ = f'(p) tau/|tau|.
+  gain_.assign(N, 0.0);
+  dir_.assign(n, 0.0);
   slope_.assign(n, 0.0);
   for (std::size_t e = 0; e < N; ++e) {
     if (!slip(e)) continue;
     const double mag = comps == 1 ? std::abs(s.tx[e]) : std::hypot(s.tx[e], s.ty[e]);
-    if (!(mag > 0.0)) continue;
     const double h = 1e-6 * p[e];
-    const double df = (law.bound(p[e] + h) - law.bound(p[e] - h)) / (2.0 * h);
-    slope_[e] = df * s.tx[e] / mag;
-    if (comps == 2) slope_[N + e] = df * s.ty[e] / mag;
+    const double df = h > 0.0 ? (law.bound(p[e] + h) - law.bound(p[e] - h)) / (2.0 * h) : 0.0;
+    if (mag > 0.0) {
+      slope_[e] = df * s.tx[e] / mag;
+      if (comps == 2) slope_[N + e] = df * s.ty[e] / mag;
+    }
+    if (comps == 1) continue;
+    const double ds = std::hypot(s.sx[e], s.sy[e]);
+    if (!(ds > 0.0)) continue;
+    gain_[e] = s.bound[e] / ds;
+    dir_[e] = s.sx[e] / ds;
+    dir_[N + e] = s.sy[e] / ds;
   }
-  const double c0 = C.diagonal(0);
-  full_.assign(n, 0.0);
+  const double ct0 = Ct.diagonal(0), c0 = coupled ? coupling.C->diagonal(0) : 0.0;
   wt_.assign(n, 0.0);
-  wn_.assign(N, 0.0);
-  dp_.assign(N, 0.0);
   extra_t_.assign(n, 0.0);
+  wn_.assign(N, 0.0);
   extra_n_.assign(N, 0.0);
-  // The traction of a trial vector: its stick part, plus the slipping elements' f'(p) dp.
-  auto traction = [&](const std::vector<double>& in) {
+  dp_.assign(N, 0.0);
+  full_.assign(n, 0.0);
+  // The slip rows scaled by the element compliance, so that every row is a displacement (m).
+  auto slip_rows = [&](const std::vector<double>& in, const std::vector<double>& dds, std::vector<double>& out) {
     for (std::size_t e = 0; e < N; ++e) {
-      dp_[e] = contact(e) ? in[n + e] : 0.0;
+      if (!slip(e)) continue;
+      double along = 0.0;
+      if (comps == 2) along = dir_[e] * dds[e] + dir_[N + e] * dds[N + e];
       for (int c = 0; c < comps; ++c) {
         const std::size_t i = c * N + e;
-        full_[i] = stick(e) ? in[i] : slope_[i] * dp_[e];
+        const double turn = comps == 2 ? gain_[e] * (dds[i] - along * dir_[i]) : 0.0;
+        out[i] = ct0 * (in[i] + turn - slope_[i] * dp_[e]);
       }
     }
   };
   const VectorMap apply = [&](const std::vector<double>& in, std::vector<double>& out) {
-    traction(in);
-    Ct.apply(full_, wt_);
-    B21.apply(dp_, extra_t_);
-    C.apply(dp_, wn_);
-    B32.apply(full_, extra_n_);
     out.assign(m, 0.0);
-    double sum = 0.0;
-    for (std::size_t e = 0; e < N; ++e) {
+    for (std::size_t e = 0; e < N; ++e)
+      for (int c = 0; c < comps; ++c) full_[c * N + e] = contact(e) ? in[c * N + e] : 0.0;
+    Ct.apply(full_, wt_);
+    if (coupled) {
+      for (std::size_t e = 0; e < N; ++e) dp_[e] = contact(e) ? in[n + e] : 0.0;
+      coupling.B21->apply(dp_, extra_t_);
+      for (std::size_t i = 0; i < n; ++i) wt_[i] += extra_t_[i];
+    }
+    // wt_ = d(ds) without the rigid part; stick: d(ds) = 0; free: dtau = 0.
+    for (std::size_t e = 0; e < N; ++e)
       for (int c = 0; c < comps; ++c) {
         const std::size_t i = c * N + e;
-        out[i] = stick(e) ? wt_[i] + extra_t_[i] : in[i];  // ds = 0 on the stick set
+        out[i] = stick(e) ? wt_[i] : in[i];
       }
-      out[n + e] = contact(e) ? wn_[e] + extra_n_[e] - in[n + N] : in[n + e];  // closed gap
+    slip_rows(in, wt_, out);
+    if (!coupled) return;
+    coupling.C->apply(dp_, wn_);
+    coupling.B32->apply(full_, extra_n_);
+    double sum = 0.0;
+    for (std::size_t e = 0; e < N; ++e) {
+      out[n + e] = contact(e) ? wn_[e] + extra_n_[e] - in[n + N] : in[n + e];  // the gap stays closed
       if (contact(e)) sum += dp_[e];
     }
-    out[n + N] = force_control ? c0 * sum : in[n + N];  // the load or the approach held
+    out[n + N] = coupling.force_control ? c0 * sum : in[n + N];  // the load or the approach held
   };
   b_.assign(m, 0.0);
   x_.assign(m, 0.0);
+  tau0_.assign(m, 0.0);
   for (int l = 0; l < modes; ++l) {
-    slip_response(Ct, grid, s, l, tau0_);
-    Ct.apply(tau0_, wt_);
-    B32.apply(tau0_, wn_);
-    for (std::size_t e = 0; e < N; ++e) {
-      for (int c = 0; c < comps; ++c) {
-        const std::size_t i = c * N + e;
-        b_[i] = stick(e) ? -(mode(grid, l, e, c) + wt_[i]) : 0.0;
-      }
-      b_[n + e] = contact(e) ? -wn_[e] : 0.0;
-    }
-    b_[n + N] = 0.0;
+    // Right-hand side: minus the rows' response to the rigid mode alone (dtau = 0, dp = 0).
+    for (std::size_t e = 0; e < N; ++e)
+      for (int c = 0; c < comps; ++c) tau0_[c * N + e] = mode(grid, l, e, c);
+    std::fill(dp_.begin(), dp_.end(), 0.0);
+    std::fill(b_.begin(), b_.end(), 0.0);
+    for (std::size_t e = 0; e < N; ++e)
+      for (int c = 0; c < comps; ++c)
+        if (stick(e)) b_[c * N + e] = -tau0_[c * N + e];
     std::fill(x_.begin(), x_.end(), 0.0);
+    slip_rows(x_, tau0_, b_);
+    for (std::size_t i = 0; i < n; ++i) b_[i] = stick(i % N) ? b_[i] : -b_[i];
     gmres(apply, {}, b_, x_, 1e-8, 60, 600);
-    traction(x_);
     for (int k = 0; k < modes; ++k) {
       double sum = 0.0;
       for (std::size_t e = 0; e < N; ++e)
-        for (int c = 0; c < comps; ++c) sum += mode(grid, k, e, c) * (full_[c * N + e] + tau0_[c * N + e]);
+        if (contact(e))
+          for (int c = 0; c < comps; ++c) sum += mode(grid, k, e, c) * x_[c * N + e];
       G(k, l) = sum * grid.area();
     }
   }

@@ -24,14 +24,21 @@ class TangentialSensitivity {
   Eigen::Matrix3d compute(const LinearOperator& Ct, const Grid& grid, const TangentialSolution& s);
   /// The same for a steady-rolling solution (slip per element of travel ds = D tau + dx xi m,
   /// D = B22 - S B22 not symmetric: GMRES on the stick set): d R_k / d xi_l per unit creepage / spin.
-  /// kappa != 0 (dissimilar materials): the same with the pressure following the traction, the
-  /// contact set fixed ((4.2)-(4.3) linearised): on the contact set C dp + kappa B32 dtau = d delta,
-  /// with sum dp = 0 (`force_control`) or d delta = 0 (the approach given); stick elements
-  /// B22 dtau + kappa B21 dp = -m_l; slipping elements' traction also follows the bound,
-  /// f'(p) dp along tau. One GMRES solve (the coupled system is not symmetric) per rigid mode.
-  Eigen::Matrix3d compute_coupled(const LinearOperator& Ct, const LinearOperator& C, const LinearOperator& B21,
-                                  const LinearOperator& B32, bool force_control, const FrictionLaw& law,
-                                  const Grid& grid, const TangentialSolution& s);
+  /// The normal side of the contact, for dissimilar materials (kappa != 0, (4.2)-(4.3)): the
+  /// pressure then follows the traction. All null: the pressure is held (kappa = 0).
+  struct Coupling {
+    const LinearOperator* C = nullptr;    ///< B31
+    const LinearOperator* B21 = nullptr;  ///< kappa B21: tangential displacement of a pressure
+    const LinearOperator* B32 = nullptr;  ///< kappa B32: normal displacement of a traction
+    bool force_control = false;           ///< the normal load held (else the approach)
+  };
+  /// The full linearisation of a step's solution, contact and stick/slip sets fixed: stick
+  /// elements keep d(ds) = 0, d(ds) = dm + B22 dtau + kappa B21 dp; slipping elements keep
+  /// tau = -f(p) ds/|ds|: dtau = -(f/|ds|)(I - s s') d(ds) + f'(p) dp tau/|tau|; with coupling,
+  /// on the contact set C dp + kappa B32 dtau = d delta with sum dp = 0 (force control) or
+  /// d delta = 0. One GMRES solve per rigid mode (the system is not symmetric).
+  Eigen::Matrix3d compute_full(const LinearOperator& Ct, const Coupling& coupling, const FrictionLaw& law,
+                               const Grid& grid, const TangentialSolution& s);
   Eigen::Matrix3d compute_steady(const LinearOperator& D, const LinearOperator& Ct, const Grid& grid,
                                  const TangentialSolution& s);
 
@@ -44,7 +51,7 @@ class TangentialSensitivity {
   void slip_response(const LinearOperator& Ct, const Grid& grid, const TangentialSolution& s, int l,
                      std::vector<double>& tau) const;
   std::vector<double> x_, r_, p_, q_, full_, out_;
-  std::vector<double> tau0_, wt_, wn_, dp_, b_, slope_, extra_t_, extra_n_;
+  std::vector<double> tau0_, wt_, wn_, dp_, b_, slope_, extra_t_, extra_n_, gain_, dir_;
 };
 
 }  // namespace dc::dynamics

@@ -172,17 +172,19 @@ WrenchJacobian ContactWrench::jacobian() {
   const bool steady = steady_ && last_.velocity.x() > 0.0;
   // G = d(F_x, F_y, M_z)/d(q_x, q_y, q_z): transient q = a = dt (V_x - h W_y, V_y + h W_x, W_z),
   // steady q = a / (V_x dt) (creepages and spin).
-  // kappa != 0: the pressure follows the traction ((4.2)-(4.3)); the steady model keeps it fixed.
-  const LinearOperator* B21 = tangential_->tangential_from_normal();
-  const LinearOperator* B32 = tangential_->normal_from_tangential();
+  // Transient: the full linearisation (kappa != 0: the pressure follows the traction,
+  // (4.2)-(4.3)); steady: the creep law's, the pressure held.
+  TangentialSensitivity::Coupling coupling;
+  if (const LinearOperator* B21 = tangential_->tangential_from_normal()) {
+    coupling.C = &tangential_->normal_compliance();
+    coupling.B21 = B21;
+    coupling.B32 = tangential_->normal_from_tangential();
+    coupling.force_control = spec_.normal_model == NormalModel::quasi_static;
+  }
   const Eigen::Matrix3d G =
       steady ? sensitivity_.compute_steady(tangential_->convective_compliance(), tangential_->tangential_compliance(),
                                            case_.grid, solution_)
-      : B21 && B32
-          ? sensitivity_.compute_coupled(tangential_->tangential_compliance(), tangential_->normal_compliance(), *B21,
-                                         *B32, spec_.normal_model == NormalModel::quasi_static, *law_, case_.grid,
-                                         solution_)
-          : sensitivity_.compute(tangential_->tangential_compliance(), case_.grid, solution_);
+             : sensitivity_.compute_full(tangential_->tangential_compliance(), coupling, *law_, case_.grid, solution_);
   Eigen::Matrix<double, 6, 3> dq;  // the wrench rows per unit q_l
   for (int l = 0; l < 3; ++l) {
     dq(0, l) = G(0, l);
