@@ -39,6 +39,8 @@ class TangentialSensitivity {
   /// d delta = 0. One GMRES solve per rigid mode (the system is not symmetric).
   Eigen::Matrix3d compute_full(const LinearOperator& Ct, const Coupling& coupling, const FrictionLaw& law,
                                const Grid& grid, const TangentialSolution& s);
+  /// Linear-solver iterations (operator applies) of the compute_full calls so far.
+  long iterations() const { return iterations_; }
   Eigen::Matrix3d compute_steady(const LinearOperator& D, const LinearOperator& Ct, const Grid& grid,
                                  const TangentialSolution& s);
 
@@ -51,6 +53,7 @@ class TangentialSensitivity {
   void slip_response(const LinearOperator& Ct, const Grid& grid, const TangentialSolution& s, int l,
                      std::vector<double>& tau) const;
   std::vector<double> x_, r_, p_, q_, full_, out_;
+  long iterations_ = 0;
   std::vector<double> tau0_, wt_, wn_, dp_, b_, slope_, extra_t_, extra_n_, gain_, dir_;
 };
 

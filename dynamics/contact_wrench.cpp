@@ -12,9 +12,10 @@ namespace dc::dynamics {
 
 ContactWrench::ContactWrench(const Case& c)
     : case_(c), spec_(*c.dynamic), solver_(c.solver), heights_(profile_heights(c.profile, c.grid)) {
-  const OperatorKind kind = c.solver.operator_kind == "dense" ? OperatorKind::dense
-                            : c.solver.operator_kind == "fft" ? OperatorKind::fft
-                                                              : OperatorKind::automatic;
+  // auto: FFT at every size. A run applies the operators thousands of times, and the padded FFT
+  // product is the faster one from 12^2 elements (3-D) and 200 strips (2-D) up (scripts/bench.sh
+  // dynamic with solver.operator dense / fft).
+  const OperatorKind kind = c.solver.operator_kind == "dense" ? OperatorKind::dense : OperatorKind::fft;
   if (c.friction) {
     law_ = FrictionLaw::from_spec(*c.friction);
     tangential_ = std::make_unique<TangentialProblem>(c.grid, c.materials, heights_, *law_, kind);
