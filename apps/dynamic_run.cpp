@@ -123,7 +123,9 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
                        {"contact_model_used", r.contact_model},
                        {"scheme", sp.bdf2 ? "bdf2" : "bdf1"},
                        {"friction", c.friction ? c.friction->law : "none (frictionless)"}};
-  summary["solver"] = {{"backend", c.solver.backend == "auto" ? "native" : c.solver.backend},
+  summary["solver"] = {{"backend", c.solver.backend},
+                       {"backends_used", r.backends},
+                       {"fallback_steps", r.fallback_steps},
                        {"status", r.completed ? "converged" : "stopped"},
                        {"newton_iterations", r.newton_iterations},
                        {"contact_solves", r.contact_solves},
@@ -147,6 +149,9 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
                 "%.6g] rad/s\n",
                 r.final.time, r.final.position.x(), r.final.position.y(), r.final.position.z(), r.final.velocity.x(),
                 r.final.velocity.y(), r.final.velocity.z(), r.final.omega.x(), r.final.omega.y(), r.final.omega.z());
+    if (r.fallback_steps > 0)
+      std::printf("  %d steps fell back from the first backend (backends used: %s)\n", r.fallback_steps,
+                  json(r.backends).dump().c_str());
     std::printf("wrote %s\n", path.c_str());
     std::fflush(stdout);
   }

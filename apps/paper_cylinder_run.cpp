@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <vector>
@@ -125,8 +126,10 @@ Setup setup_of(const Case& c) {
 /// The creep law F/(mu P) of s computed by the tangential solver: steady rolling of a 2-D
 /// cylinder (the case's materials, profile radius, normal force, friction and grid.nx when
 /// given; steel, R = 0.05 m, 1e5 N/m, mu = 0.3, 200 strips otherwise) at creepage
-/// xi = s mu a / R, tabulated on |s| <= 1 and interpolated linearly.
-pc::TractionLaw numerical_law(const Case& c) {
+/// xi = s mu a / R, tabulated on |s| <= 1 and interpolated linearly. The case's backend (auto:
+/// steady Newton, marching with native first and the others as fallbacks); `backends` counts the
+/// table's points per backend that solved them, `fallbacks` those that needed a fallback.
+pc::TractionLaw numerical_law(const Case& c, std::map<std::string, int>& backends, int& fallbacks) {
   const MaterialPair m = c.has_block("materials") ? c.materials
                                                    : MaterialPair{Elastic::from_E_nu(2.1e11, 0.3),
                                                                   Elastic::from_E_nu(2.1e11, 0.3)};
@@ -140,8 +143,7 @@ pc::TractionLaw numerical_law(const Case& c) {
   prof.type = ProfileType::cylinder;
   prof.radius = R;
   TangentialProblem problem(g, m, profile_heights(prof, g), FrictionLaw::coulomb(mu));
-  SolverSpec solver = c.solver;
-  solver.backend = "native";
+  const SolverSpec& solver = c.solver;
   const int K = 100;
   auto table = std::make_shared<std::vector<double>>(K + 1, 0.0);
   for (int k = 1; k <= K; ++k) {
@@ -153,6 +155,8 @@ pc::TractionLaw numerical_law(const Case& c) {
     if (sol.report.status != SolveStatus::converged)
       throw std::runtime_error("numerical traction: steady rolling at s = " + std::to_string(s) +
                                " did not converge: " + sol.report.message);
+    ++backends[sol.report.backend];
+    if (sol.report.fallback_used) ++fallbacks;
     (*table)[k] = -sol.resultants[0] / (mu * P);  // the paper's F is the force on the substrate
   }
   pc::TractionLaw law;
@@ -247,8 +251,10 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
     const Setup setup = setup_of(run_case);
     const pc::Parameters& p = setup.p;
     pc::TractionLaw law;
+    std::map<std::string, int> law_backends;
+    int law_fallbacks = 0;
     try {
-      if (model == "numerical") law = numerical_law(run_case);
+      if (model == "numerical") law = numerical_law(run_case, law_backends, law_fallbacks);
     } catch (const Interrupted&) {  // before this run's first step: the runs finished so far
       interrupted = true;
       break;
@@ -276,6 +282,7 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
               {"quasi_static_final", std::abs(p.T_bar) == 0.0 && !q.sliding
                                          ? json{{"F_bar", q.F_bar}, {"l_bar", q.l_bar}, {"v_bar", q.v_bar}, {"u", q.u}}
                                          : json()}};
+    if (model == "numerical") r["traction_solver"] = {{"backends_used", law_backends}, {"fallback_points", law_fallbacks}};
     runs.push_back(r);
     files.push_back(file);
     labels.push_back(specs[k].label.empty() ? c.name : specs[k].label);

@@ -12,16 +12,20 @@ namespace dc::dynamics {
 
 ContactWrench::ContactWrench(const Case& c)
     : case_(c), spec_(*c.dynamic), solver_(c.solver), heights_(profile_heights(c.profile, c.grid)) {
-  // Every step is one warm-started program: the native solver is the fastest at any size.
-  if (solver_.backend == "auto") solver_.backend = "native";
-  const OperatorKind kind = c.solver.operator_kind == "dense" ? OperatorKind::dense
-                            : c.solver.operator_kind == "fft" ? OperatorKind::fft
-                                                              : OperatorKind::automatic;
-  if (c.friction)
-    tangential_ = std::make_unique<TangentialProblem>(c.grid, c.materials, heights_,
-                                                      FrictionLaw::from_spec(*c.friction), kind);
+  // auto: FFT at every size. A run applies the operators thousands of times, and the padded FFT
+  // product is the faster one from 12^2 elements (3-D) and 200 strips (2-D) up (scripts/bench.sh
+  // dynamic with solver.operator dense / fft).
+  const OperatorKind kind = c.solver.operator_kind == "dense" ? OperatorKind::dense : OperatorKind::fft;
+  if (c.friction) {
+    law_ = FrictionLaw::from_spec(*c.friction);
+    tangential_ = std::make_unique<TangentialProblem>(c.grid, c.materials, heights_, *law_, kind);
+  }
   else
     normal_ = std::make_unique<NormalProblem>(c.grid, c.materials, heights_, kind);
+  // Every step is one warm-started program: `auto` tries the native solvers first at any size,
+  // the others are their fallbacks.
+  if (normal_) normal_->set_native_first(true);
+  if (tangential_) tangential_->set_native_first(true);
   if (tangential_) committed_ = tangential_->memory();
   steady_ = spec_.contact_model == ContactModel::steady;
   model_resolved_ = spec_.contact_model != ContactModel::automatic;
@@ -95,6 +99,8 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
       state_.message = solution_.report.message + "; " + cert;
     }
     state_.approach = solution_.normal.approach;
+    state_.backend = solution_.report.backend;
+    state_.fallback_used = solution_.report.fallback_used || solution_.normal.report.fallback_used;
     state_.n_stick = solution_.n_stick;
     state_.n_slip = solution_.n_slip;
   } else {
@@ -105,6 +111,8 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
     state_.converged = normal_solution_.report.status == SolveStatus::converged;
     if (!state_.converged) state_.message = normal_solution_.report.message;
     state_.approach = normal_solution_.approach;
+    state_.backend = normal_solution_.report.backend;
+    state_.fallback_used = normal_solution_.report.fallback_used;
   }
   // Resultants about the centre of mass: r = (x, y, -h), f = (tau_x, tau_y, p) A.
   Eigen::Vector3d F = Eigen::Vector3d::Zero(), M = Eigen::Vector3d::Zero();
@@ -165,10 +173,19 @@ WrenchJacobian ContactWrench::jacobian() {
   const bool steady = steady_ && last_.velocity.x() > 0.0;
   // G = d(F_x, F_y, M_z)/d(q_x, q_y, q_z): transient q = a = dt (V_x - h W_y, V_y + h W_x, W_z),
   // steady q = a / (V_x dt) (creepages and spin).
+  // Transient: the full linearisation (kappa != 0: the pressure follows the traction,
+  // (4.2)-(4.3)); steady: the creep law's, the pressure held.
+  TangentialSensitivity::Coupling coupling;
+  if (const LinearOperator* B21 = tangential_->tangential_from_normal()) {
+    coupling.C = &tangential_->normal_compliance();
+    coupling.B21 = B21;
+    coupling.B32 = tangential_->normal_from_tangential();
+    coupling.force_control = spec_.normal_model == NormalModel::quasi_static;
+  }
   const Eigen::Matrix3d G =
       steady ? sensitivity_.compute_steady(tangential_->convective_compliance(), tangential_->tangential_compliance(),
                                            case_.grid, solution_)
-             : sensitivity_.compute(tangential_->tangential_compliance(), case_.grid, solution_);
+             : sensitivity_.compute_full(tangential_->tangential_compliance(), coupling, *law_, case_.grid, solution_);
   Eigen::Matrix<double, 6, 3> dq;  // the wrench rows per unit q_l
   for (int l = 0; l < 3; ++l) {
     dq(0, l) = G(0, l);

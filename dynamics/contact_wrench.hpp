@@ -13,6 +13,7 @@
 
 #include "case_model.hpp"
 #include "contact_sensitivity.hpp"
+#include "friction_law.hpp"
 #include "normal_problem.hpp"
 #include "tangential_problem.hpp"
 #include "wrench.hpp"
@@ -31,6 +32,8 @@ struct ContactState {
   double certificate = 0.0;      ///< worst residual of the contact solve (0 without contact)
   bool converged = true;
   std::string message;           ///< why not converged
+  std::string backend;           ///< the backend whose solution was kept ("" without contact)
+  bool fallback_used = false;    ///< the requested backend (or auto's first) failed and another took over
   const TangentialSolution* fields = nullptr;  ///< the last solution (null without friction or contact)
   const std::vector<double>* pressure = nullptr;  ///< the last pressure field (null without contact)
 };
@@ -68,6 +71,7 @@ class ContactWrench {
   std::vector<double> heights_;
   std::unique_ptr<NormalProblem> normal_;          // frictionless
   std::unique_ptr<TangentialProblem> tangential_;  // with friction
+  std::optional<FrictionLaw> law_;                 // with friction
   TangentialMemory committed_;
   TangentialSensitivity sensitivity_;
   TangentialSolution solution_;

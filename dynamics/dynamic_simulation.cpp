@@ -128,6 +128,8 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
     result.steps = step;
     result.worst_certificate = std::max(result.worst_certificate, cs.certificate);
     result.last_certificate = cs.certificate;
+    if (cs.in_contact) ++result.backends[cs.backend];
+    if (cs.in_contact && cs.fallback_used) ++result.fallback_steps;
     sample.state = state;
     sample.contact = cs.wrench;
     sample.external = external(state.time);

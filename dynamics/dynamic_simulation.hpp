@@ -4,6 +4,7 @@
 // iteration, the external loads value + rate t, step halving on a failed step, and the
 // bookkeeping of the run (momentum and energy balances, worst certificate).
 #include <functional>
+#include <map>
 #include <string>
 
 #include "case_model.hpp"
@@ -33,6 +34,8 @@ struct DynamicResult {
   int steps = 0, rejected_steps = 0;  ///< accepted steps; step halvings after a failed step
   int newton_iterations = 0, contact_solves = 0;
   std::string contact_model;     ///< transient | steady (auto resolved)
+  std::map<std::string, int> backends;  ///< accepted steps in contact per backend that solved them
+  int fallback_steps = 0;        ///< accepted steps whose contact solve fell back to another backend
   double worst_certificate = 0.0, last_certificate = 0.0;
   double momentum_imbalance = 0.0;  ///< |m dV - sum dt F| / max(sum dt |F|, m |V|) over the run (bdf1: round-off)
   double energy_imbalance = 0.0;    ///< |KE_end - KE_0 - W_external - W_contact| / max(KE, |W|)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -127,7 +128,8 @@ NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverSpec&
   best.report.operator_kind = compliance_->kind();
   bool have_result = false;
   std::string attempts;  // every backend tried, for the report
-  const auto order = backend_order(solver.backend, n, solver.fallback);
+  const auto order =
+      backend_order(solver.backend, native_first_ ? std::numeric_limits<std::size_t>::max() : n, solver.fallback);
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::string& backend = order[k];
     if (backend == "native" && !preconditioner_)

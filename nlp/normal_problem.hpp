@@ -44,6 +44,9 @@ class NormalProblem {
   /// next solve starts there), clear_warm_start() makes the next solve cold.
   void set_warm_start(std::vector<double> pressure);
   void clear_warm_start() { warm_start_.clear(); }
+  /// `auto` tries the native solver first whatever the size (time steps: every solve is one
+  /// warm-started program, where native is the fastest); the others remain its fallbacks.
+  void set_native_first(bool on) { native_first_ = on; }
 
   const LinearOperator& compliance() const { return *compliance_; }
   const Grid& grid() const { return grid_; }
@@ -54,6 +57,7 @@ class NormalProblem {
   Grid grid_;
   std::vector<double> heights_;
   std::vector<double> warm_start_;
+  bool native_first_ = false;
   /// The native solver's FFT preconditioner: built at the first native solve, then reused.
   std::shared_ptr<const NormalPreconditioner> preconditioner_;
 };

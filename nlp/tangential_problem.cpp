@@ -62,6 +62,7 @@ struct TangentialProblem::Impl {
   std::array<double, 3> amplitude_prev{};
   std::vector<double> tau_warm;              // warm start of the tangential program
   bool native_first = false;                 // auto while marching: native first at any size
+  bool native_first_always = false;          // auto: native first for every solve (set_native_first)
 
   Impl(const Grid& g, const MaterialPair& m, std::vector<double> h, FrictionLaw f, OperatorKind k)
       : grid(g), materials(m), friction(std::move(f)), kind(k), half_space(std::in_place, g, m),
@@ -151,6 +152,7 @@ struct TangentialProblem::Impl {
         normal_cache_heights == h)
       return *normal_cache;
     normal->set_heights(h);
+    normal->set_native_first(native_first || native_first_always);
     NormalSolution s = normal->solve(load, solver);
     normal_cache = s;
     normal_cache_heights = std::move(h);
@@ -269,7 +271,8 @@ struct TangentialProblem::Impl {
     best.report.operator_kind = Ct->kind();
     bool have_result = false;
     std::string attempts;
-    const auto order = backend_order(solver.backend, native_first ? std::numeric_limits<std::size_t>::max() : n, solver.fallback);
+    const auto order = backend_order(solver.backend, native_first || native_first_always ? std::numeric_limits<std::size_t>::max() : n,
+                      solver.fallback);
     for (std::size_t k = 0; k < order.size(); ++k) {
       const TimedOutcome run = run_backend(order[k], qp, options, solve_tangential_native);
       const SolveOutcome& out = run.outcome;
@@ -703,6 +706,8 @@ TangentialProblem::TangentialProblem(const Grid& grid, std::shared_ptr<const Lin
 
 void TangentialProblem::reset() { impl_->reset(); }
 
+void TangentialProblem::set_native_first(bool on) { impl_->native_first_always = on; }
+
 TangentialSolution TangentialProblem::step(const TangentialLoad& load, const SolverSpec& solver,
                                            const ProgressCallback& progress) {
   Impl& s = *impl_;
@@ -842,6 +847,12 @@ TangentialSolution TangentialProblem::convected_step(const NormalSpec& normal, c
     throw InputError("travel", "a finite body's contact is not convected (no shifted compliances)");
   std::array<ModeControl, 3> modes{};
   for (int k = 0; k < 3; ++k) modes[k].value = increment[k];
+  // auto: as for marching, native first at any size (the others remain its fallbacks).
+  s.native_first = true;
+  struct Restore {
+    bool& flag;
+    ~Restore() { flag = false; }
+  } restore{s.native_first};
   TangentialSolution sol = s.solve_step(normal, modes, increment, travel / s.grid.dx, solver, {});
   for (int k = 0; k < 3; ++k) s.amplitude_prev[k] += sol.amplitudes[k];
   return sol;
@@ -863,6 +874,16 @@ void TangentialProblem::restore(const TangentialMemory& m) {
 void TangentialProblem::set_heights(std::vector<double> heights) { impl_->heights = std::move(heights); }
 
 const LinearOperator& TangentialProblem::tangential_compliance() const { return *impl_->Ct; }
+
+const LinearOperator& TangentialProblem::normal_compliance() const { return *impl_->C; }
+
+const LinearOperator* TangentialProblem::tangential_from_normal() const {
+  return impl_->coupled ? impl_->B21.get() : nullptr;
+}
+
+const LinearOperator* TangentialProblem::normal_from_tangential() const {
+  return impl_->coupled ? impl_->B32.get() : nullptr;
+}
 
 const LinearOperator& TangentialProblem::convective_compliance() {
   Impl& s = *impl_;

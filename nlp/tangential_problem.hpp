@@ -103,6 +103,9 @@ class TangentialProblem {
                           const ProgressCallback& progress = {});
   /// Forget the loading history (back to the unloaded state).
   void reset();
+  /// `auto` tries the native solvers first for every solve, whatever the size (time stepping:
+  /// every solve is warm-started, where they are the fastest); the others remain fallbacks.
+  void set_native_first(bool on);
   /// Keep the loading history but forget the starting points the next step would reuse (the
   /// last traction and pressure): the next step starts cold. For comparisons and tests.
   void forget_starting_points();
@@ -121,6 +124,12 @@ class TangentialProblem {
   void set_heights(std::vector<double> heights);
   /// B22, the tangential compliance (sensitivities of a solution with its active set fixed).
   const LinearOperator& tangential_compliance() const;
+  /// B31, the normal compliance.
+  const LinearOperator& normal_compliance() const;
+  /// kappa != 0 (dissimilar materials, (4.2)-(4.3)): the tangential displacement of a pressure,
+  /// kappa B21, and the normal displacement of a traction, kappa B32; null when kappa = 0.
+  const LinearOperator* tangential_from_normal() const;
+  const LinearOperator* normal_from_tangential() const;
   /// Steady rolling's convective compliance B22 - S B22 (one element of travel), built on first use.
   const LinearOperator& convective_compliance();
 
