@@ -4,7 +4,6 @@
 // thread, two threads and `mpirun -n 2`; a failing point reported with the others kept; bad
 // ranges as input errors naming the option.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdio>
@@ -27,7 +26,6 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 using dc::test::slurp;
-const auto& quote = dc::test::shell_quote;
 
 /// A number as the command line should read it back exactly.
 std::string num(double v) {
@@ -83,17 +81,6 @@ class CliTable : public dc::test::CliTest {
     doc["output"] = {{"plots", false}};
     std::ofstream(dir_ / "case.json") << doc.dump(2);
     return "case.json";
-  }
-  /// `dyncontact ARGS` with environment assignments ENV before it (e.g. "DYNCONTACT_THREADS=1").
-  dc::test::CliResult run_env(const std::string& env, const std::string& args) const {
-    return run_prefixed(env + " " + quote(DYNCONTACT_BINARY), args);
-  }
-  dc::test::CliResult run_prefixed(const std::string& prefix, const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd = "cd " + quote(dir_.string()) + " && " + prefix + " " + args + " >" + quote(out.string()) +
-                            " 2>" + quote(err.string());
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128, slurp(out), slurp(err)};
   }
 };
 
@@ -167,10 +154,8 @@ TEST_F(CliTable, ThreadsAndRanksWriteTheSameBytes) {
   const std::string serial = files("serial");
   ASSERT_FALSE(serial.empty());
   EXPECT_EQ(files("threads"), serial);
-  if (std::system("mpirun --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "no mpirun here";
-  const auto mpi = run_prefixed("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
-                                "mpirun -n 2 --oversubscribe " + quote(DYNCONTACT_BINARY),
-                                args + "ranks");
+  if (!have_mpirun()) GTEST_SKIP() << "no mpirun here";
+  const auto mpi = run_mpi2(args + "ranks");
   ASSERT_EQ(mpi.code, 0) << mpi.err;
   EXPECT_EQ(files("ranks"), serial);
 }
