@@ -282,10 +282,10 @@ PaperCylinderOutcome simulate_paper_cylinder(const Case& c, bool quiet) {
   const LaunchRank launched = launch_rank();
 
   // The runs over the cores or the ranks (table_ranks.hpp), gathered in sweep order.
-  Progress progress("sweep of " + std::to_string(specs.size()) + " run(s)", launched.root() && !quiet && specs.size() > 1);
+  Progress progress("sweep", launched.root() && !quiet && specs.size() > 1);
   const std::vector<json> units = run_distributed(
       specs.size(), [&](std::size_t k) { return sweep_unit(c, specs, k); },
-      [&](std::size_t done, std::size_t total) { progress.count(done, total); });
+      [&](std::size_t done, std::size_t total) { progress.count(done, total, "runs"); });
   progress.finish();
   PaperCylinderOutcome out;
   out.root = launched.root();
@@ -300,14 +300,11 @@ PaperCylinderOutcome simulate_paper_cylinder(const Case& c, bool quiet) {
   for (std::size_t k = 0; k < units.size() && !out.interrupted; ++k) {
     const json& u = units[k];
     if (u.contains("error")) {  // a run that failed (e.g. its numerical traction): reported, the others kept
-      const std::string file = specs.size() == 1 ? "timeseries.csv" : "timeseries_" + std::to_string(k) + ".csv";
       runs.push_back({{"label", specs[k].label}, {"value", specs[k].value}, {"status", "failed"},
-                      {"message", u["error"]}, {"steps", 0}, {"timeseries", file}});
-      out.files.push_back(file);
-      out.texts.emplace_back();
-      out.labels.push_back(specs[k].label.empty() ? c.name : specs[k].label);
+                      {"message", u["error"]}, {"steps", 0}, {"timeseries", nullptr}});
       out.all_ok = false;
-      if (!quiet) std::printf("%s %s: failed: %s\n", c.name.c_str(), specs[k].label.c_str(), u["error"].get<std::string>().c_str());
+      std::cerr << "error: " << c.name << (specs[k].label.empty() ? "" : " ") << specs[k].label
+                << ": failed: " << u["error"].get<std::string>() << '\n';
       continue;
     }
     if (!u["started"].get<bool>()) {  // interrupted before its first step: the runs before it
@@ -325,7 +322,7 @@ PaperCylinderOutcome simulate_paper_cylinder(const Case& c, bool quiet) {
   if (!runs.empty()) {
     summary["steps"] = runs[0]["steps"];
     if (runs[0].contains("final")) summary["final"] = runs[0]["final"];
-    summary["timeseries"] = out.files[0];
+    summary["timeseries"] = runs[0]["timeseries"];
   }
   summary["status"] = out.interrupted ? "interrupted" : out.all_ok ? "completed" : "stopped";
   if (specs.size() > 1 || !specs[0].label.empty()) summary["runs"] = runs;
@@ -339,17 +336,12 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
   PaperCylinderOutcome out = simulate_paper_cylinder(c, quiet);
   if (!out.root) return kExitOk;
   namespace fs = std::filesystem;
-  for (std::size_t k = 0; k < out.files.size(); ++k)
-    if (!out.texts[k].empty()) write_text_file((fs::path(dir) / out.files[k]).string(), out.texts[k]);
+  for (std::size_t k = 0; k < out.files.size(); ++k) write_text_file((fs::path(dir) / out.files[k]).string(), out.texts[k]);
   json& summary = out.summary;
   const bool interrupted = out.interrupted, all_ok = out.all_ok;
   json out_files = {{"summary", "summary.json"}, {"timeseries", out.files}};
-  std::vector<std::string> files, labels;  // the runs with a time series (not the failed ones)
-  for (std::size_t k = 0; k < out.files.size(); ++k)
-    if (!out.texts[k].empty()) {
-      files.push_back(out.files[k]);
-      labels.push_back(out.labels[k]);
-    }
+  const std::vector<std::string>& files = out.files;
+  const std::vector<std::string>& labels = out.labels;
 
   if (c.output.plots && !interrupted) {  // an interrupted run writes its data, not figures
     std::vector<GnuplotFigure> figures;

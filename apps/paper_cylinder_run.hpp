@@ -22,8 +22,8 @@ void validate_paper_cylinder(const Case& c);
 struct PaperCylinderOutcome {
   bool root = true;                 ///< false on MPI ranks other than 0 (nothing else is set)
   nlohmann::json summary;           ///< summary.json without "files"
-  std::vector<std::string> files;   ///< timeseries file name of every reported run
-  std::vector<std::string> texts;   ///< their CSV texts (empty for a run that failed)
+  std::vector<std::string> files;   ///< timeseries file name of every run with a time series (a failed run has none)
+  std::vector<std::string> texts;   ///< their CSV texts
   std::vector<std::string> labels;  ///< their labels (plots)
   bool all_ok = true, interrupted = false;
   std::size_t planned = 0;          ///< runs of the sweep

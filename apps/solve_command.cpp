@@ -79,8 +79,12 @@ void print_tangential(const Case& c, const nlohmann::json& s) {
 
 int run_solve(const SolveArgs& args) {
   const Case c = load_case(args.case_path, args.sets, args.backend);
-  if (c.problem == ProblemKind::paper_cylinder)  // a sweep's runs spread over mpirun's ranks: rank 0 writes
-    return run_paper_cylinder(c, launch_rank().root() ? prepare_output_dir(c, args.out) : std::string(), args.quiet);
+  // Under mpirun a sweep's runs are spread over the ranks (rank 0 writes); any other case is
+  // solved by rank 0 alone.
+  const bool root = launch_rank().root();
+  if (c.problem == ProblemKind::paper_cylinder)
+    return run_paper_cylinder(c, root ? prepare_output_dir(c, args.out) : std::string(), args.quiet);
+  if (!root) return kExitOk;
   if (c.problem == ProblemKind::dynamic) return run_dynamic(c, prepare_output_dir(c, args.out), args.quiet);
   if (c.problem == ProblemKind::finite) return run_finite(c, prepare_output_dir(c, args.out), args.quiet);
   if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential) not_implemented(c.problem);

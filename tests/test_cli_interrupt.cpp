@@ -166,7 +166,7 @@ TEST_F(CliInterrupt, SweepWritesWhatItFinished) {
   ::setenv("DYNCONTACT_THREADS", "1", 1);
   const Stopped s = interrupt({"solve", file, "--out", "res"}, SIGINT, [this] {
     const std::string err = slurp(dir_ / "stderr.txt");
-    const auto at = err.rfind(" of 2000 points done");
+    const auto at = err.rfind(" of 2000 runs done");
     const auto from = err.rfind(", ", at);
     return at != std::string::npos && from != std::string::npos && std::atoi(err.c_str() + from + 2) >= 2;
   });

@@ -38,6 +38,20 @@ ModeControl mode(const Opt& amplitude, const char* amplitude_key, const Opt& res
   return {ModeControl::Kind::amplitude, amplitude ? finite_value(*amplitude, amplitude_key) : 0.0};
 }
 
+/// The load of steady_rolling() and roll(): the normal load, each rolling mode by its creepage
+/// (spin) or its resultant, and the rolling speed.
+RollingLoad rolling_load(const Opt& force, const Opt& approach, const Opt& creepage_x, const Opt& force_x,
+                         const Opt& creepage_y, const Opt& force_y, const Opt& spin, const Opt& moment_z,
+                         double velocity) {
+  RollingLoad load;
+  load.normal = normal_load(force, approach);
+  load.modes = {mode(creepage_x, "creepage_x", force_x, "force_x"), mode(creepage_y, "creepage_y", force_y, "force_y"),
+                mode(spin, "spin", moment_z, "moment_z")};
+  if (!(finite_value(velocity, "velocity") > 0.0)) throw InputError("velocity", "must be positive");
+  load.velocity = velocity;
+  return load;
+}
+
 SolverSpec solver_spec(const std::string& backend, double tol, double certificate_tol, int max_iter) {
   if (backend != "auto" && backend != "ipopt" && backend != "nlopt" && backend != "native")
     throw InputError("backend", "expected auto, ipopt, nlopt or native, got '" + backend + "'");
@@ -238,12 +252,8 @@ void bind_problems(py::module_& m) {
           [](TangentialProblem& self, const Opt& force, const Opt& approach, const Opt& creepage_x, const Opt& force_x,
              const Opt& creepage_y, const Opt& force_y, const Opt& spin, const Opt& moment_z, double velocity,
              const std::string& backend, double tol, double certificate_tol, int max_iter) {
-            RollingLoad load;
-            load.normal = normal_load(force, approach);
-            load.modes = {mode(creepage_x, "creepage_x", force_x, "force_x"),
-                          mode(creepage_y, "creepage_y", force_y, "force_y"), mode(spin, "spin", moment_z, "moment_z")};
-            if (!(finite_value(velocity, "velocity") > 0.0)) throw InputError("velocity", "must be positive");
-            load.velocity = velocity;
+            const RollingLoad load =
+                rolling_load(force, approach, creepage_x, force_x, creepage_y, force_y, spin, moment_z, velocity);
             const SolverSpec solver = solver_spec(backend, tol, certificate_tol, max_iter);
             py::gil_scoped_release release;
             return TangentialResult{self.grid(), self.steady_rolling(load, solver)};
@@ -264,12 +274,8 @@ void bind_problems(py::module_& m) {
           [](TangentialProblem& self, double distance, const Opt& force, const Opt& approach, const Opt& creepage_x,
              const Opt& force_x, const Opt& creepage_y, const Opt& force_y, const Opt& spin, const Opt& moment_z,
              double velocity, const std::string& backend, double tol, double certificate_tol, int max_iter) {
-            RollingLoad load;
-            load.normal = normal_load(force, approach);
-            load.modes = {mode(creepage_x, "creepage_x", force_x, "force_x"),
-                          mode(creepage_y, "creepage_y", force_y, "force_y"), mode(spin, "spin", moment_z, "moment_z")};
-            if (!(finite_value(velocity, "velocity") > 0.0)) throw InputError("velocity", "must be positive");
-            load.velocity = velocity;
+            const RollingLoad load =
+                rolling_load(force, approach, creepage_x, force_x, creepage_y, force_y, spin, moment_z, velocity);
             const SolverSpec solver = solver_spec(backend, tol, certificate_tol, max_iter);
             py::gil_scoped_release release;
             return TangentialResult{self.grid(), self.roll(load, distance, solver)};

@@ -60,13 +60,17 @@ py::dict run_paper_cylinder_case(const Case& c, bool progress) {
     out = cli::simulate_paper_cylinder(c, !progress);
   }
   py::dict result = to_python(out.summary);
-  py::list series;
-  for (const std::string& text : out.texts) series.append(text.empty() ? py::object(py::none()) : py::object(csv_columns(text)));
-  if (result.contains("runs")) {
-    py::list runs = result["runs"];
-    for (std::size_t k = 0; k < runs.size() && k < series.size(); ++k) runs[k]["timeseries"] = series[k];
-  }
-  if (series.size() > 0) result["timeseries"] = series[0];
+  // Each run's time series (by its file name) as NumPy columns in place of the name.
+  py::dict series;
+  for (std::size_t k = 0; k < out.files.size(); ++k) series[py::str(out.files[k])] = csv_columns(out.texts[k]);
+  auto columns_of = [&](py::handle run) {
+    const py::object name = run["timeseries"];
+    if (!name.is_none() && series.contains(name)) run["timeseries"] = series[name];
+  };
+  if (result.contains("runs"))
+    for (py::handle run : py::list(result["runs"])) columns_of(run);
+  if (result.contains("run")) columns_of(result["run"]);
+  if (result.contains("timeseries") && series.contains(result["timeseries"])) result["timeseries"] = series[result["timeseries"]];
   return result;
 }
 

@@ -1,7 +1,6 @@
 """The runs in time from Python: a dynamic impact against Hertz's contact duration, the paper's
 Section 5 sweep (gross sliding where its quasi-static limit says), the Fig. 4 example script,
 and the module working from an interpreter that has no NumPy of its own."""
-import json
 import math
 import os
 import subprocess
@@ -12,12 +11,7 @@ import pytest
 
 import dyncontact
 
-SOURCE = os.environ.get("DYNCONTACT_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
-
-
-def example(name):
-    with open(os.path.join(SOURCE, "examples", name + ".json")) as f:
-        return json.load(f)
+from example_cases import SOURCE, example
 
 
 def test_dynamic_impact_lasts_hertz_duration():
