@@ -15,7 +15,8 @@ say() { printf 'setup: %s\n' "$*" >&2; }
 
 module="$(ls "$BUILD_DIR"/python/dyncontact.*.so 2>/dev/null | head -n 1 || true)"
 [[ -n "$module" ]] || { say "note: no Python module in $BUILD_DIR/python (built without python3-dev, pybind11 or NumPy)"; exit 0; }
-built_for="$(sed -n 's/^Python3_EXECUTABLE:[A-Z]*=//p' "$BUILD_DIR/CMakeCache.txt")"
+built_for="$(sed -n 's/^_\{0,1\}Python3_EXECUTABLE:[A-Z]*=//p' "$BUILD_DIR/CMakeCache.txt" | head -n 1)"
+built_for="${built_for:-/usr/bin/python3}"
 command -v python3 >/dev/null 2>&1 || { say "note: no python3 on PATH; the module is built for $built_for"; exit 0; }
 
 # The interpreter behind `python3` (through shims), its extension suffix and install folders.
@@ -23,10 +24,11 @@ read -r py suffix platlib usersite < <(python3 -c '
 import site, sys, sysconfig
 print(sys.executable, sysconfig.get_config_var("EXT_SUFFIX"), sysconfig.get_paths()["platlib"],
       site.getusersitepackages() if site.ENABLE_USER_SITE else "-")')
-built_real="$(python3 -c 'import os, sys; print(os.path.realpath(sys.argv[1]))' "$built_for")"
-py_real="$(python3 -c 'import os, sys; print(os.path.realpath(sys.executable))')"
+# Another installation (its own prefix: pyenv, a virtual environment) needs its own copy.
+built_prefix="$("$built_for" -c 'import sys; print(sys.prefix)' 2>/dev/null || true)"
+py_prefix="$(python3 -c 'import sys; print(sys.prefix)')"
 
-if [[ "$py_real" != "$built_real" && "$module" == *"$suffix" ]]; then
+if [[ "$py_prefix" != "$built_prefix" && "$module" == *"$suffix" ]]; then
   dest="$platlib"
   if ! mkdir -p "$dest" 2>/dev/null || [[ ! -w "$dest" ]]; then dest="$usersite"; fi
   if [[ "$dest" != - ]] && mkdir -p "$dest" 2>/dev/null && cp -f "$module" "$dest/"; then
