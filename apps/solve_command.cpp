@@ -13,7 +13,6 @@
 #include "paper_cylinder_run.hpp"
 #include "commands.hpp"
 #include "dynamic_run.hpp"
-#include "errors.hpp"
 #include "fields_writer.hpp"
 #include "interrupt.hpp"
 #include "interrupt_handler.hpp"
@@ -191,16 +190,7 @@ void add_solve_command(CLI::App& app, int& exit_code) {
   sub->add_option("-s,--set", args->sets, "override a case key: path=value, e.g. materials.body.E=2e11 (repeatable)")
       ->allow_extra_args(false);
   sub->add_flag("-q,--quiet", args->quiet, "print nothing but warnings and errors");
-  sub->callback([args, &exit_code] {
-    // Under mpirun every rank reads the same input; only rank 0 reports an input error.
-    const bool root = launch_rank().root();
-    try {
-      exit_code = run_solve(*args);
-    } catch (const InputError&) {
-      if (root) throw;
-      exit_code = kExitBadInput;
-    }
-  });
+  sub->callback([args, &exit_code] { exit_code = report_input_errors_on_root([&] { return run_solve(*args); }); });
 }
 
 }  // namespace dc::cli
