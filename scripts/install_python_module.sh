@@ -3,10 +3,11 @@
 #   scripts/install_python_module.sh [BUILD_DIR]      (run by scripts/setup.sh)
 # `cmake --install --component python` puts the module where the interpreter it was built for
 # (Debian's /usr/bin/python3) finds it. When python3 on PATH is another interpreter (pyenv,
-# a virtual environment) of the same Python version, the module is copied into that
-# interpreter's own site-packages (its sysconfig platlib, else its user site); without NumPy
-# of its own, that interpreter imports the NumPy of the one the module was built for. Another
-# Python version cannot load the module: the check says so and how to go on.
+# a virtual environment) of the same Python version, or cannot import the module yet (the
+# install folder was not writable), the module is copied into that interpreter's own
+# site-packages (its sysconfig platlib, else its user site); without NumPy of its own, that
+# interpreter imports the NumPy of the one the module was built for. Another Python version
+# cannot load the module: the check says so and how to go on.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 BUILD_DIR="${1:-${DYNCONTACT_BUILD_DIR:-build}}"
@@ -24,11 +25,18 @@ read -r py suffix platlib usersite < <(python3 -c '
 import site, sys, sysconfig
 print(sys.executable, sysconfig.get_config_var("EXT_SUFFIX"), sysconfig.get_paths()["platlib"],
       site.getusersitepackages() if site.ENABLE_USER_SITE else "-")')
-# Another installation (its own prefix: pyenv, a virtual environment) needs its own copy.
+# Another installation (its own prefix: pyenv, a virtual environment) needs its own copy; so does
+# the same one when `cmake --install` could not write its folder (not root: the user site).
 built_prefix="$("$built_for" -c 'import sys; print(sys.prefix)' 2>/dev/null || true)"
 py_prefix="$(python3 -c 'import sys; print(sys.prefix)')"
+needs_copy=0
+if [[ "$module" == *"$suffix" ]]; then
+  if [[ "$py_prefix" != "$built_prefix" ]] || ! (cd / && python3 -c 'import dyncontact' >/dev/null 2>&1); then
+    needs_copy=1
+  fi
+fi
 
-if [[ "$py_prefix" != "$built_prefix" && "$module" == *"$suffix" ]]; then
+if [[ $needs_copy -eq 1 ]]; then
   dest="$platlib"
   if ! mkdir -p "$dest" 2>/dev/null || [[ ! -w "$dest" ]]; then dest="$usersite"; fi
   if [[ "$dest" != - ]] && mkdir -p "$dest" 2>/dev/null && cp -f "$module" "$dest/"; then
