@@ -71,6 +71,28 @@ def test_tangential_problem_cattaneo_mindlin_sphere():
     assert problem.step(force=P, force_x=0.0).amplitudes[0] == pytest.approx(0.0, abs=1e-6 * delta)
 
 
+def test_tangential_problem_torsion_lubkin_sphere():
+    # Lubkin: a small twist angle phi against the full-stick stiffness M/phi = (16/3) a^3 G/2
+    # (identical bodies), full slip at M = 3 pi mu P a / 16; by angle or by moment.
+    a, _ = hertz_sphere()
+    grid, problem = sphere_problem(40, 1.25, dyncontact.TangentialProblem, mu=MU)
+    M_slip = 3 * math.pi * MU * P * a / 16
+    stiffness = 16 / 3 * a**3 * G / 2
+    s = problem.step(force=P, angle=20 * M_slip / stiffness)  # far beyond full slip
+    assert s.converged, s.report
+    # 40^2 over +-1.25 a (dx = a/16): the sliding moment within 2 % (the discretised pressure).
+    assert -s.resultants[2] == pytest.approx(M_slip, rel=0.02)  # the moment on the body opposes the twist
+    assert s.n_stick == 0
+    problem.reset()
+    s = problem.step(force=P, moment_z=-0.5 * M_slip)
+    assert s.converged, s.report
+    assert s.resultants[2] == pytest.approx(-0.5 * M_slip, rel=1e-9)
+    # Half the sliding moment: the twist lies between the full-stick one and twice it (the slip
+    # annulus makes the contact softer: Lubkin's curve).
+    assert 0.5 * M_slip / stiffness < s.amplitudes[2] < 2 * 0.5 * M_slip / stiffness
+    assert s.n_stick > 0 and s.n_slip > 0
+
+
 def test_tangential_problem_carter_steady_rolling_2d():
     # Identical cylinders in plane strain (per unit length): a = (4 P R / (pi E*))^(1/2), and
     # Carter's creepage |xi| = (mu a / R)(1 - sqrt(1 - |F|/(mu P))) (the force on the body opposes xi).
