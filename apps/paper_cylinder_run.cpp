@@ -18,7 +18,9 @@
 #include "interrupt_handler.hpp"
 #include "paper_cylinder.hpp"
 #include "profile.hpp"
+#include "progress.hpp"
 #include "summary_writer.hpp"
+#include "table_ranks.hpp"
 #include "tangential_problem.hpp"
 
 namespace dc::cli {
@@ -193,8 +195,7 @@ std::string fmt(double v) {
 /// M V0/(mu P), x in M V0^2/(mu P), velocities in V0, forces in mu P, moments in mu P R, omega as
 /// Omega R / V0 - the columns that need mu itself are left empty unless friction.mu is given).
 /// F and M are the contact wrench on the body about its centre: F_x = -F, F_z = P, M_y = F R.
-void write_timeseries(const std::string& path, const pc::Run& run, const pc::Parameters& p, const Units& u,
-                      const pc::TractionLaw& law) {
+std::string timeseries_text(const pc::Run& run, const pc::Parameters& p, const Units& u, const pc::TractionLaw& law) {
   std::ostringstream out;
   out << "t,x,y,z,vx,vy,vz,wx,wy,wz,Fx,Fy,Fz,Mx,My,Mz,creepage,stick_fraction,t_bar,F_bar,l_bar,v_bar\n";
   const bool has_mu = u.mu > 0.0;
@@ -210,7 +211,7 @@ void write_timeseries(const std::string& path, const pc::Run& run, const pc::Par
         << ",0," << (has_mu ? fmt(u.mu * p.epsilon * ratio) : "") << ',' << fmt(s.l_bar) << ',' << fmt(s.t_bar)
         << ',' << fmt(s.F_bar) << ',' << fmt(s.l_bar) << ',' << fmt(s.v_bar) << '\n';
   }
-  write_text_file(path, out.str());
+  return out.str();
 }
 
 json final_of(const pc::Run& run, const pc::Parameters& p, const Units& u) {
@@ -231,79 +232,124 @@ void validate_paper_cylinder(const Case& c) {
   for (const SweepPoint& r : sweep_points(c)) (void)setup_of(r.run);
 }
 
-int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
+namespace {
+
+/// One run of the sweep (a work unit of run_distributed): {"started", "ok", "interrupted", "run"
+/// (its entry of summary "runs"), "timeseries" (the CSV text), "line" (the report line)}.
+json sweep_unit(const Case& c, const std::vector<SweepPoint>& specs, std::size_t k) {
+  const Case& run_case = specs[k].run;
+  const Setup setup = setup_of(run_case);
+  const pc::Parameters& p = setup.p;
+  pc::TractionLaw law;
+  std::map<std::string, int> law_backends;
+  int law_fallbacks = 0;
+  try {
+    if (c.paper_cylinder->traction_model == "numerical") law = numerical_law(run_case, law_backends, law_fallbacks);
+  } catch (const Interrupted&) {  // before this run's first step
+    return {{"started", false}, {"ok", false}, {"interrupted", true}};
+  }
+  const pc::Run run = pc::simulate(p, setup.time.dt, setup.time.scheme, law);
+  const std::string file = specs.size() == 1 ? "timeseries.csv" : "timeseries_" + std::to_string(k) + ".csv";
+  double onset = -1.0;
+  for (const pc::Sample& s : run.samples)
+    if (s.sliding) {
+      onset = s.t_bar;
+      break;
+    }
+  const pc::Sample q = pc::quasi_static(p, run.samples.back().t_bar);
+  const char* status = run.ok ? "completed" : run.interrupted ? "interrupted" : "stopped";
+  json r = {{"label", specs[k].label}, {"value", specs[k].value}, {"status", status},
+            {"message", run.message}, {"steps", static_cast<int>(run.samples.size()) - 1},
+            {"final", final_of(run, p, setup.units)}, {"timeseries", file}, {"dt_bar", setup.time.dt},
+            {"dimensionless", {{"gamma_bar", p.gamma_bar}, {"M0_bar", p.M0_bar},
+                               {"eta", std::isinf(p.eta) ? json("inf") : json(p.eta)}, {"epsilon", p.epsilon},
+                               {"T_bar", p.T_bar}, {"t_bar_end", p.t_bar_end},
+                               {"mu", setup.mu_given ? json(p.mu) : json("1 (not given)")}}},
+            {"sliding_onset_t_bar", onset >= 0.0 ? json(onset) : json()},
+            {"quasi_static_final", std::abs(p.T_bar) == 0.0 && !q.sliding
+                                       ? json{{"F_bar", q.F_bar}, {"l_bar", q.l_bar}, {"v_bar", q.v_bar}, {"u", q.u}}
+                                       : json()}};
+  if (c.paper_cylinder->traction_model == "numerical")
+    r["traction_solver"] = {{"backends_used", law_backends}, {"fallback_points", law_fallbacks}};
+  const pc::Sample& s = run.samples.back();
+  char line[512];
+  std::snprintf(line, sizeof line, "%s%s%s: t_bar %.4g, F_bar %.5f, l_bar %.5f, v_bar %.5g%s%s\n", c.name.c_str(),
+                specs[k].label.empty() ? "" : " ", specs[k].label.c_str(), s.t_bar, s.F_bar, s.l_bar, s.v_bar,
+                onset >= 0.0 ? (", gross sliding from t_bar " + fmt(onset)).c_str() : "",
+                run.ok ? "" : (" [stopped: " + run.message + "]").c_str());
+  return {{"started", true}, {"ok", run.ok}, {"interrupted", run.interrupted}, {"run", r},
+          {"timeseries", timeseries_text(run, p, setup.units, law)}, {"line", line}};
+}
+
+}  // namespace
+
+PaperCylinderOutcome simulate_paper_cylinder(const Case& c, bool quiet) {
   validate_paper_cylinder(c);
-  const std::string model = c.paper_cylinder->traction_model;
   const std::vector<SweepPoint> specs = sweep_points(c);
   const Setup first = setup_of(c);
+  const LaunchRank launched = launch_rank();
 
-  namespace fs = std::filesystem;
+  // The runs over the cores or the ranks (table_ranks.hpp), gathered in sweep order.
+  Progress progress("sweep", launched.root() && !quiet && specs.size() > 1);
+  const std::vector<json> units = run_distributed(
+      specs.size(), [&](std::size_t k) { return sweep_unit(c, specs, k); },
+      [&](std::size_t done, std::size_t total) { progress.count(done, total, "runs"); });
+  progress.finish();
+  PaperCylinderOutcome out;
+  out.root = launched.root();
+  if (!out.root) return out;
+
   json summary = {{"name", c.name},
                   {"problem", "paper_cylinder"},
-                  {"traction_model", model},
+                  {"traction_model", c.paper_cylinder->traction_model},
                   {"inputs", first.units.dimensional ? "dimensional" : "dimensionless"},
                   {"scheme", first.time.scheme == pc::Scheme::bdf2 ? "bdf2" : "bdf1"}};
   json runs = json::array();
-  std::vector<std::string> files, labels;
-  bool all_ok = true, interrupted = false;
-  for (std::size_t k = 0; k < specs.size() && !interrupted; ++k) {
-    const Case& run_case = specs[k].run;
-    const Setup setup = setup_of(run_case);
-    const pc::Parameters& p = setup.p;
-    pc::TractionLaw law;
-    std::map<std::string, int> law_backends;
-    int law_fallbacks = 0;
-    try {
-      if (model == "numerical") law = numerical_law(run_case, law_backends, law_fallbacks);
-    } catch (const Interrupted&) {  // before this run's first step: the runs finished so far
-      interrupted = true;
+  for (std::size_t k = 0; k < units.size() && !out.interrupted; ++k) {
+    const json& u = units[k];
+    if (u.contains("error")) {  // a run that failed (e.g. its numerical traction): reported, the others kept
+      runs.push_back({{"label", specs[k].label}, {"value", specs[k].value}, {"status", "failed"},
+                      {"message", u["error"]}, {"steps", 0}, {"timeseries", nullptr}});
+      out.all_ok = false;
+      std::cerr << "error: " << c.name << (specs[k].label.empty() ? "" : " ") << specs[k].label
+                << ": failed: " << u["error"].get<std::string>() << '\n';
+      continue;
+    }
+    if (!u["started"].get<bool>()) {  // interrupted before its first step: the runs before it
+      out.interrupted = true;
       break;
     }
-    const pc::Run run = pc::simulate(p, setup.time.dt, setup.time.scheme, law);
-    interrupted = run.interrupted;
-    const std::string file = specs.size() == 1 ? "timeseries.csv" : "timeseries_" + std::to_string(k) + ".csv";
-    write_timeseries((fs::path(dir) / file).string(), run, p, setup.units, law);
-    double onset = -1.0;
-    for (const pc::Sample& s : run.samples)
-      if (s.sliding) {
-        onset = s.t_bar;
-        break;
-      }
-    const pc::Sample q = pc::quasi_static(p, run.samples.back().t_bar);
-    const char* status = run.ok ? "completed" : run.interrupted ? "interrupted" : "stopped";
-    json r = {{"label", specs[k].label}, {"value", specs[k].value}, {"status", status},
-              {"message", run.message}, {"steps", static_cast<int>(run.samples.size()) - 1},
-              {"final", final_of(run, p, setup.units)}, {"timeseries", file}, {"dt_bar", setup.time.dt},
-              {"dimensionless", {{"gamma_bar", p.gamma_bar}, {"M0_bar", p.M0_bar},
-                                 {"eta", std::isinf(p.eta) ? json("inf") : json(p.eta)}, {"epsilon", p.epsilon},
-                                 {"T_bar", p.T_bar}, {"t_bar_end", p.t_bar_end},
-                                 {"mu", setup.mu_given ? json(p.mu) : json("1 (not given)")}}},
-              {"sliding_onset_t_bar", onset >= 0.0 ? json(onset) : json()},
-              {"quasi_static_final", std::abs(p.T_bar) == 0.0 && !q.sliding
-                                         ? json{{"F_bar", q.F_bar}, {"l_bar", q.l_bar}, {"v_bar", q.v_bar}, {"u", q.u}}
-                                         : json()}};
-    if (model == "numerical") r["traction_solver"] = {{"backends_used", law_backends}, {"fallback_points", law_fallbacks}};
-    runs.push_back(r);
-    files.push_back(file);
-    labels.push_back(specs[k].label.empty() ? c.name : specs[k].label);
-    all_ok = all_ok && run.ok;
-    if (!quiet) {
-      const pc::Sample& s = run.samples.back();
-      std::printf("%s%s%s: t_bar %.4g, F_bar %.5f, l_bar %.5f, v_bar %.5g%s%s\n", c.name.c_str(),
-                  specs[k].label.empty() ? "" : " ", specs[k].label.c_str(), s.t_bar, s.F_bar, s.l_bar, s.v_bar,
-                  onset >= 0.0 ? (", gross sliding from t_bar " + fmt(onset)).c_str() : "",
-                  run.ok ? "" : (" [stopped: " + run.message + "]").c_str());
-    }
+    out.interrupted = u["interrupted"].get<bool>();
+    runs.push_back(u["run"]);
+    out.files.push_back(u["run"]["timeseries"].get<std::string>());
+    out.texts.push_back(u["timeseries"].get<std::string>());
+    out.labels.push_back(specs[k].label.empty() ? c.name : specs[k].label);
+    out.all_ok = out.all_ok && u["ok"].get<bool>();
+    if (!quiet) std::printf("%s", u["line"].get<std::string>().c_str());
   }
   if (!runs.empty()) {
     summary["steps"] = runs[0]["steps"];
-    summary["final"] = runs[0]["final"];
-    summary["timeseries"] = files[0];
+    if (runs[0].contains("final")) summary["final"] = runs[0]["final"];
+    summary["timeseries"] = runs[0]["timeseries"];
   }
-  summary["status"] = interrupted ? "interrupted" : all_ok ? "completed" : "stopped";
+  summary["status"] = out.interrupted ? "interrupted" : out.all_ok ? "completed" : "stopped";
   if (specs.size() > 1 || !specs[0].label.empty()) summary["runs"] = runs;
   else if (!runs.empty()) summary["run"] = runs[0];
-  json out_files = {{"summary", "summary.json"}, {"timeseries", files}};
+  out.summary = std::move(summary);
+  out.planned = specs.size();
+  return out;
+}
+
+int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
+  PaperCylinderOutcome out = simulate_paper_cylinder(c, quiet);
+  if (!out.root) return kExitOk;
+  namespace fs = std::filesystem;
+  for (std::size_t k = 0; k < out.files.size(); ++k) write_text_file((fs::path(dir) / out.files[k]).string(), out.texts[k]);
+  json& summary = out.summary;
+  const bool interrupted = out.interrupted, all_ok = out.all_ok;
+  json out_files = {{"summary", "summary.json"}, {"timeseries", out.files}};
+  const std::vector<std::string>& files = out.files;
+  const std::vector<std::string>& labels = out.labels;
 
   if (c.output.plots && !interrupted) {  // an interrupted run writes its data, not figures
     std::vector<GnuplotFigure> figures;
@@ -329,8 +375,8 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
   const std::string path = write_summary(dir, summary);
   if (!quiet) std::printf("wrote %s\n", path.c_str());
   if (interrupted) {
-    std::cerr << "interrupted after " << runs.size() << " of " << specs.size() << " run(s) (the last may be partial); see "
-              << path << '\n';
+    std::cerr << "interrupted after " << out.files.size() << " of " << out.planned
+              << " run(s) (the last may be partial); see " << path << '\n';
     return interrupted_exit_code();
   }
   if (!all_ok) {

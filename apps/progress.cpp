@@ -25,20 +25,21 @@ ProgressCallback Progress::callback() {
   };
 }
 
-void Progress::count(std::size_t done, std::size_t total) {
+void Progress::count(std::size_t done, std::size_t total, const char* what) {
   std::lock_guard<std::mutex> lock(mutex_);
   done_ = done;
   total_ = total;
+  what_ = what;
 }
 
 std::string Progress::line(double elapsed) const {
   char buf[256];
   if (total_ > 0) {
     if (done_ == 0)
-      std::snprintf(buf, sizeof buf, "%s: %.1f s, 0 of %zu points done", label_.c_str(), elapsed, total_);
+      std::snprintf(buf, sizeof buf, "%s: %.1f s, 0 of %zu %s done", label_.c_str(), elapsed, total_, what_);
     else
-      std::snprintf(buf, sizeof buf, "%s: %.1f s, %zu of %zu points done, about %.0f s left", label_.c_str(),
-                    elapsed, done_, total_, elapsed * static_cast<double>(total_ - done_) / static_cast<double>(done_));
+      std::snprintf(buf, sizeof buf, "%s: %.1f s, %zu of %zu %s done, about %.0f s left", label_.c_str(), elapsed,
+                    done_, total_, what_, elapsed * static_cast<double>(total_ - done_) / static_cast<double>(done_));
     return buf;
   }
   // Not every solver reports its objective while it runs (0 then): shown only when it does.

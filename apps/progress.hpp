@@ -24,8 +24,8 @@ class Progress {
   /// The callback to hand to the solver (valid while this object lives).
   ProgressCallback callback();
   /// Runs of many points (table, sweep): `done` of `total` finished; the line then shows the
-  /// count and the time left (estimated from the time per finished point).
-  void count(std::size_t done, std::size_t total);
+  /// count of `what` ("points", "runs") and the time left (estimated from the time per finished one).
+  void count(std::size_t done, std::size_t total, const char* what = "points");
   /// Stops the reporter; prints the final time if a progress line was shown.
   void finish();
 
@@ -44,6 +44,7 @@ class Progress {
   bool have_info_ = false;
   ProgressInfo info_;
   std::size_t done_ = 0, total_ = 0;
+  const char* what_ = "points";
   std::thread thread_;
 };
 

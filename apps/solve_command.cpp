@@ -19,6 +19,7 @@
 #include "plot_writer.hpp"
 #include "result_limits.hpp"
 #include "summary_writer.hpp"
+#include "table_ranks.hpp"
 #include "tangential_run.hpp"
 
 namespace dc::cli {
@@ -77,7 +78,12 @@ void print_tangential(const Case& c, const nlohmann::json& s) {
 
 int run_solve(const SolveArgs& args) {
   const Case c = load_case(args.case_path, args.sets, args.backend);
-  if (c.problem == ProblemKind::paper_cylinder) return run_paper_cylinder(c, prepare_output_dir(c, args.out), args.quiet);
+  // Under mpirun a sweep's runs are spread over the ranks (rank 0 writes); any other case is
+  // solved by rank 0 alone.
+  const bool root = launch_rank().root();
+  if (c.problem == ProblemKind::paper_cylinder)
+    return run_paper_cylinder(c, root ? prepare_output_dir(c, args.out) : std::string(), args.quiet);
+  if (!root) return kExitOk;
   if (c.problem == ProblemKind::dynamic) return run_dynamic(c, prepare_output_dir(c, args.out), args.quiet);
   if (c.problem == ProblemKind::finite) return run_finite(c, prepare_output_dir(c, args.out), args.quiet);
   if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential) not_implemented(c.problem);
@@ -184,7 +190,7 @@ void add_solve_command(CLI::App& app, int& exit_code) {
   sub->add_option("-s,--set", args->sets, "override a case key: path=value, e.g. materials.body.E=2e11 (repeatable)")
       ->allow_extra_args(false);
   sub->add_flag("-q,--quiet", args->quiet, "print nothing but warnings and errors");
-  sub->callback([args, &exit_code] { exit_code = run_solve(*args); });
+  sub->callback([args, &exit_code] { exit_code = report_input_errors_on_root([&] { return run_solve(*args); }); });
 }
 
 }  // namespace dc::cli

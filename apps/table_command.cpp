@@ -110,14 +110,7 @@ void add_table_command(CLI::App& app, int& exit_code) {
   sub->add_option("-s,--set", args->sets, "override a case key: path=value (repeatable)")->allow_extra_args(false);
   sub->add_flag("-q,--quiet", args->quiet, "no progress line");
   sub->callback([args, &exit_code] {
-    // Under mpirun every rank reads the same input; only rank 0 reports an input error.
-    const bool root = launch_rank().root();
-    try {
-      exit_code = run_table(*args, root);
-    } catch (const InputError&) {
-      if (root) throw;
-      exit_code = kExitBadInput;
-    }
+    exit_code = report_input_errors_on_root([&] { return run_table(*args, launch_rank().root()); });
   });
 }
 

@@ -13,6 +13,7 @@
 #include <mpi.h>
 #endif
 
+#include "cli_common.hpp"
 #include "errors.hpp"
 
 namespace dc::cli {
@@ -143,6 +144,16 @@ LaunchRank launch_rank() {
     }
   }
   return r;
+}
+
+int report_input_errors_on_root(const std::function<int()>& command) {
+  const bool root = launch_rank().root();
+  try {
+    return command();
+  } catch (const InputError&) {
+    if (root) throw;
+    return kExitBadInput;
+  }
 }
 
 bool built_with_mpi() {

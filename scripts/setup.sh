@@ -11,7 +11,8 @@
 #   DYNCONTACT_SKIP_APT=1  do not check or install packages
 #   DYNCONTACT_WITH_FUZZ=1 also clang and libFuzzer (FUZZ_PACKAGES; scripts/fuzz.sh)
 # Argument --packages-only: install the packages, do not configure or build.
-#   DYNCONTACT_SKIP_PYTHON_INSTALL=1  do not install the Python module (cmake --install --component python)
+#   DYNCONTACT_SKIP_PYTHON_INSTALL=1  do not install the Python module (cmake --install --component python,
+#                                     then scripts/install_python_module.sh for the python3 on PATH)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -117,4 +118,5 @@ if [[ "${DYNCONTACT_SKIP_PYTHON_INSTALL:-0}" != 1 ]] && grep -q '^DYNCONTACT_WIT
   if ! cmake --install "$BUILD_DIR" --component python >"$BUILD_DIR/install-python.log" 2>&1; then
     say "note: the Python module was not installed (see $BUILD_DIR/install-python.log); use PYTHONPATH=$BUILD_DIR/python"
   fi
+  scripts/install_python_module.sh "$BUILD_DIR"
 fi

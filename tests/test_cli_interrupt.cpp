@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -161,8 +162,15 @@ TEST_F(CliInterrupt, SweepWritesWhatItFinished) {
   c["time"] = {{"dt", 1e-4}, {"scheme", "bdf2"}};
   c["output"] = {{"plots", false}};
   const std::string file = write(c);
-  const Stopped s = interrupt({"solve", file, "--out", "res"}, SIGINT,
-                              [this] { return fs::exists(dir_ / "res" / "timeseries_1.csv"); });
+  // One worker (the runs finish in order); the signal once the progress line counts two runs done.
+  ::setenv("DYNCONTACT_THREADS", "1", 1);
+  const Stopped s = interrupt({"solve", file, "--out", "res"}, SIGINT, [this] {
+    const std::string err = slurp(dir_ / "stderr.txt");
+    const auto at = err.rfind(" of 2000 runs done");
+    const auto from = err.rfind(", ", at);
+    return at != std::string::npos && from != std::string::npos && std::atoi(err.c_str() + from + 2) >= 2;
+  });
+  ::unsetenv("DYNCONTACT_THREADS");
   EXPECT_EQ(s.code, 130) << s.err;
   EXPECT_LT(s.seconds_after_signal, 1.0);
   const json summary = json::parse(slurp(dir_ / "res" / "summary.json"));

@@ -72,6 +72,29 @@ TEST_F(CliPaperCylinder, SweepOfTheMomentRateReachesGrossSlidingWhereTheQuasiSta
   EXPECT_EQ(rows, s["runs"][0]["steps"].get<int>() + 1);
 }
 
+TEST_F(CliPaperCylinder, SweepOverThreadsAndRanksWritesTheSameBytes) {
+  // The sweep's runs spread over threads or `mpirun -n 2` ranks (dynamic assignment, gathered in
+  // sweep order): the same summary.json and time series as one thread.
+  const std::string file = case_file([](json& doc) { doc["dimensionless"]["t_bar_end"] = 1.5; });
+  auto files = [&](const std::string& out) {
+    std::string all = slurp(dir_ / out / "summary.json");
+    for (int k = 0; k < 3; ++k) all += slurp(dir_ / out / ("timeseries_" + std::to_string(k) + ".csv"));
+    return all;
+  };
+  const CliResult serial = run_env("DYNCONTACT_THREADS=1", "solve " + file + " --out serial");
+  ASSERT_EQ(serial.code, 0) << serial.err;
+  ASSERT_EQ(run_env("DYNCONTACT_THREADS=3", "solve " + file + " --out threads -q").code, 0);
+  EXPECT_EQ(files("threads"), files("serial"));
+  EXPECT_NE(files("serial").find("timeseries_2.csv"), std::string::npos);
+  if (!have_mpirun()) GTEST_SKIP() << "no mpirun here";
+  const CliResult mpi = run_mpi2("solve " + file + " --out ranks");
+  ASSERT_EQ(mpi.code, 0) << mpi.err;
+  EXPECT_EQ(files("ranks"), files("serial"));
+  // The runs reported once, by rank 0, in sweep order.
+  const std::string lines = mpi.out.substr(0, mpi.out.find("wrote"));
+  EXPECT_EQ(lines, serial.out.substr(0, serial.out.find("wrote")));
+}
+
 TEST_F(CliPaperCylinder, NumericalTractionMatchesCarterPoritsky) {
   // The creep law tabulated from the tangential solver's steady rolling (200 strips) against
   // the closed form: the final F_bar and v_bar of an unsaturated run within 1e-3.

@@ -4,7 +4,6 @@
 // thread, two threads and `mpirun -n 2`; a failing point reported with the others kept; bad
 // ranges as input errors naming the option.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdio>
@@ -27,7 +26,6 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 using dc::test::slurp;
-const auto& quote = dc::test::shell_quote;
 
 /// A number as the command line should read it back exactly.
 std::string num(double v) {
@@ -150,15 +148,13 @@ TEST_F(CliTable, ThreadsAndRanksWriteTheSameBytes) {
   auto files = [&](const std::string& out) {
     return slurp(dir_ / out / "table.csv") + slurp(dir_ / out / "table.json");
   };
-  ASSERT_EQ(run_prefixed("DYNCONTACT_THREADS=1", args + "serial").code, 0);
-  ASSERT_EQ(run_prefixed("DYNCONTACT_THREADS=2", args + "threads").code, 0);
+  ASSERT_EQ(run_env("DYNCONTACT_THREADS=1", args + "serial").code, 0);
+  ASSERT_EQ(run_env("DYNCONTACT_THREADS=2", args + "threads").code, 0);
   const std::string serial = files("serial");
   ASSERT_FALSE(serial.empty());
   EXPECT_EQ(files("threads"), serial);
-  if (std::system("mpirun --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "no mpirun here";
-  const auto mpi = run_prefixed("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
-                                "mpirun -n 2 --oversubscribe",
-                                args + "ranks");
+  if (!have_mpirun()) GTEST_SKIP() << "no mpirun here";
+  const auto mpi = run_mpi2(args + "ranks");
   ASSERT_EQ(mpi.code, 0) << mpi.err;
   EXPECT_EQ(files("ranks"), serial);
 }

@@ -18,39 +18,29 @@
 #include "errors.hpp"
 #include "fields_writer.hpp"
 #include "linear_operator.hpp"
+#include "module_common.hpp"
+#include "python_runs.hpp"
 #include "summary_writer.hpp"
 #include "tangential_run.hpp"
 
-namespace py = pybind11;
+namespace dc::python {
+
+/// A case given as a dict, JSON text, or a path (str or os.PathLike), validated.
+Case case_from(const py::object& arg) {
+  if (py::isinstance<py::dict>(arg)) return build_case(from_python(arg), ".");
+  const std::string text = py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first != std::string::npos && text[first] == '{') return build_case(parse_case_text(text, "case"), ".");
+  nlohmann::json doc = read_case_file(text);
+  if (doc.is_object() && !doc.contains("name")) doc["name"] = std::filesystem::path(text).stem().string();
+  return build_case(doc, ".");
+}
+
+}  // namespace dc::python
 
 namespace {
 
-/// JSON <-> Python through the json module (exact for numbers: both sides round-trip doubles).
-py::object to_python(const nlohmann::json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
-nlohmann::json from_python(const py::handle& o) {
-  return nlohmann::json::parse(py::module_::import("json").attr("dumps")(o).cast<std::string>());
-}
-
-/// A case given as a dict, JSON text, or a path (str or os.PathLike), validated.
-dc::Case case_from(const py::object& arg) {
-  if (py::isinstance<py::dict>(arg)) return dc::build_case(from_python(arg), ".");
-  const std::string text = py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first != std::string::npos && text[first] == '{') return dc::build_case(dc::parse_case_text(text, "case"), ".");
-  nlohmann::json doc = dc::read_case_file(text);
-  if (doc.is_object() && !doc.contains("name")) doc["name"] = std::filesystem::path(text).stem().string();
-  return dc::build_case(doc, ".");
-}
-
-/// A field on the grid as a NumPy array of shape (ny, nx) (3-D) or (nx,) (2-D); zeros when empty.
-template <typename T>
-py::array_t<T> grid_array(const dc::Grid& g, const std::vector<T>& v) {
-  std::vector<py::ssize_t> shape = g.dimension == 2 ? std::vector<py::ssize_t>{g.nx} : std::vector<py::ssize_t>{g.ny, g.nx};
-  py::array_t<T> a(shape);
-  T* out = a.mutable_data();
-  for (std::size_t i = 0; i < g.size(); ++i) out[i] = v.empty() ? T(0) : v[i];
-  return a;
-}
+using namespace dc::python;
 
 py::dict fields_dict(const dc::Grid& g, const dc::cli::StaticFields& f) {
   std::vector<double> x(g.size()), y(g.size());
@@ -73,10 +63,16 @@ py::dict fields_dict(const dc::Grid& g, const dc::cli::StaticFields& f) {
 
 py::dict solve(const py::object& case_arg, const py::object& out, bool progress) {
   const dc::Case c = case_from(case_arg);
+  if (c.problem == dc::ProblemKind::dynamic || c.problem == dc::ProblemKind::paper_cylinder) {
+    if (!out.is_none())
+      throw dc::InputError("out", "solve() writes files for normal and tangential cases; run dynamic and "
+                                  "paper_cylinder cases with `dyncontact solve` for their files and plots");
+    return c.problem == dc::ProblemKind::dynamic ? run_dynamic_case(c, progress) : run_paper_cylinder_case(c, progress);
+  }
   if (c.problem != dc::ProblemKind::normal && c.problem != dc::ProblemKind::tangential)
     throw dc::InputError("problem", std::string("'") + dc::to_string(c.problem) +
-                                        "' is run by the command line (dyncontact solve); solve() takes normal "
-                                        "and tangential cases");
+                                        "' is run by the command line (dyncontact solve); solve() takes normal, "
+                                        "tangential, dynamic and paper_cylinder cases");
   dc::cli::StaticRun run;
   {
     py::gil_scoped_release release;
@@ -123,20 +119,66 @@ dc::OperatorKind kind_of(const std::string& kind) {
   throw dc::InputError("kind", "expected auto, dense or fft, got '" + kind + "'");
 }
 
+/// Imports NumPy before anything uses it. An interpreter of the module's Python version that
+/// has no NumPy of its own (pyenv's python3 next to Debian's) takes the NumPy of the interpreter
+/// the module was built for (only that package: its folder is on sys.path just for the import).
+/// A NumPy the module cannot use raises ImportError saying what to do.
+void import_numpy() {
+  const py::module_ sys = py::module_::import("sys");
+  try {
+    py::module_::import("numpy");
+  } catch (const py::error_already_set&) {
+    const py::str dir(DYNCONTACT_NUMPY_DIR);
+    py::list path = sys.attr("path");
+    path.append(dir);
+    try {
+      py::module_::import("numpy");
+      path.attr("remove")(dir);
+    } catch (const py::error_already_set&) {
+      path.attr("remove")(dir);
+      throw py::import_error(
+          "dyncontact needs NumPy, which " + py::str(sys.attr("executable")).cast<std::string>() +
+          " does not have: use " DYNCONTACT_PYTHON_EXECUTABLE
+          " (the interpreter the module was built for), or install NumPy 1.x for this one "
+          "(python3 -m pip install 'numpy<2')");
+    }
+  }
+#if PYBIND11_VERSION_HEX < 0x020C0000
+  // pybind11 before 2.12 reads NumPy 1's array structures; NumPy 2 changed them.
+  const std::string version = py::str(py::module_::import("numpy").attr("__version__"));
+  if (!version.empty() && version[0] != '1' && version[1] == '.')
+    throw py::import_error("dyncontact was built with pybind11 " + std::to_string(PYBIND11_VERSION_MAJOR) + "." +
+                           std::to_string(PYBIND11_VERSION_MINOR) + ", which supports NumPy 1 only; this interpreter has NumPy " +
+                           version + ": use " DYNCONTACT_PYTHON_EXECUTABLE " or install 'numpy<2'");
+#endif
+}
+
 }  // namespace
 
 PYBIND11_MODULE(dyncontact, m) {
+  import_numpy();
   m.doc() =
       "dyncontact: frictional contact between an elastic body and an elastic half-space (after Spector & "
       "Batra), solved as convex programs with certified results.\n\n"
-      "  solve(case)                    solve a normal or tangential case (dict, JSON text or path): the\n"
-      "                                 summary as a dict (keys of summary.json) with 'fields' (NumPy)\n"
-      "  Grid, Materials, HalfSpace     the discretised half-space and its influence operators\n"
-      "  InputError                     bad input; .key names the case key (e.g. 'grid.nx')\n\n"
+      "  solve(case)                    solve a case (dict, JSON text or path): the summary as a dict (keys\n"
+      "                                 of summary.json) with 'fields' (NumPy; normal, tangential) or\n"
+      "                                 'timeseries' (NumPy columns; dynamic, paper_cylinder)\n"
+      "  Grid, Materials, grid_centres  the contact grid, the elastic pair, the element centres\n"
+      "  HalfSpace                      the half-space's influence operators: HalfSpace(g, m).normal().apply(p)\n"
+      "  NormalProblem                  (4.7): NormalProblem(g, m, h).solve(force=P) -> NormalSolution\n"
+      "  TangentialProblem              (3.25)/(4.8) with memory: step(...) (shift, torsion), steady_rolling(...),\n"
+      "                                 roll(distance, ...) -> TangentialSolution\n"
+      "  DynamicSimulation              a dynamic case run in time: DynamicSimulation(case).run()\n"
+      "  InputError                     bad input (a ValueError); .key names the key (e.g. 'grid.nx', 'force_x')\n\n"
       "Example:\n"
       "  import dyncontact, json\n"
       "  r = dyncontact.solve(json.load(open('examples/hertz-sphere.json')))\n"
-      "  r['normal_force'], r['max_pressure'], r['fields']['p'].shape";
+      "  r['normal_force'], r['max_pressure'], r['fields']['p'].shape\n"
+      "  g = dyncontact.Grid(64, 64, -1e-3, 1e-3, -1e-3, 1e-3)\n"
+      "  x, y = dyncontact.grid_centres(g)\n"
+      "  tp = dyncontact.TangentialProblem(g, dyncontact.Materials(2.1e11, 0.3, 2.1e11, 0.3),\n"
+      "                                    (x**2 + y**2) / 0.02, mu=0.3)\n"
+      "  s = tp.step(force=100.0, force_x=15.0)   # Cattaneo: s.amplitudes[0] is the shift, s.stick_area";
 
   static py::exception<dc::InputError> input_error(m, "InputError", PyExc_ValueError);
   py::register_exception_translator([](std::exception_ptr p) {
@@ -151,13 +193,18 @@ PYBIND11_MODULE(dyncontact, m) {
 
   m.def("solve", &solve, py::arg("case"), py::arg("out") = py::none(), py::arg("progress") = false,
         "solve(case, out=None, progress=False) -> dict\n\n"
-        "Solves a normal or tangential case given as a dict, a JSON string or a path to a case file\n"
+        "Solves a case given as a dict, a JSON string or a path to a case file\n"
         "(the format of CASES.md; `dyncontact example NAME` prints complete ones). Returns the\n"
         "summary (the keys of summary.json: normal_force, approach, max_pressure, contact_area,\n"
         "tangential_force, solver with its certificate, ...) with 'fields': NumPy arrays x, y, p,\n"
         "tx, ty, sx, sy, state of shape (ny, nx) (2-D: (nx,)). No files are written unless `out`\n"
-        "names a folder (summary.json and fields.csv). Raises InputError (a ValueError whose .key\n"
-        "names the case key) for bad input.");
+        "names a folder (summary.json and fields.csv). A dynamic or paper_cylinder case returns its\n"
+        "summary with 'timeseries': {column: NumPy array} (the columns of timeseries.csv); a sweep's\n"
+        "runs each carry theirs under 'runs'. Raises InputError (a ValueError whose .key names the\n"
+        "case key) for bad input.");
+
+  bind_problems(m);
+  bind_runs(m);
 
   py::class_<dc::Grid>(m, "Grid", "A uniform grid of rectangular elements on the contact plane (m).")
       .def(py::init([](int nx, int ny, double x_min, double x_max, double y_min, double y_max, int dimension) {

@@ -13,9 +13,8 @@ import math
 import os
 import sys
 
+import dyncontact  # first: it finds NumPy for an interpreter that has none of its own
 import numpy as np
-
-import dyncontact
 
 here = os.path.dirname(os.path.abspath(__file__))
 case_path = os.path.join(here, "..", "hertz-sphere.json")

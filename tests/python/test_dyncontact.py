@@ -10,12 +10,7 @@ import pytest
 
 import dyncontact
 
-SOURCE = os.environ.get("DYNCONTACT_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
-
-
-def example(name):
-    with open(os.path.join(SOURCE, "examples", name + ".json")) as f:
-        return json.load(f)
+from example_cases import SOURCE, example
 
 
 def small_hertz():

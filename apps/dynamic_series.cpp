@@ -1,0 +1,84 @@
+#include "dynamic_series.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+#include "progress.hpp"
+#include "summary_writer.hpp"
+
+namespace dc::cli {
+namespace {
+
+using nlohmann::json;
+
+const char* kColumns =
+    "t,x,y,z,vx,vy,vz,wx,wy,wz,Fx,Fy,Fz,Mx,My,Mz,creepage,stick_fraction,approach,contact_area,n_contact,"
+    "n_stick,n_slip,kinetic_energy,certificate,newton_iterations\n";
+
+void append_row(std::ostringstream& out, const dynamics::DynamicSample& s) {
+  const auto& st = s.state;
+  const auto& cs = s.contact_state;
+  char line[1024];
+  std::snprintf(line, sizeof line,
+                "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.6g,"
+                "%.8g,%.8g,%d,%d,%d,%.10g,%.3g,%d\n",
+                st.time, st.position.x(), st.position.y(), st.position.z(), st.velocity.x(), st.velocity.y(),
+                st.velocity.z(), st.omega.x(), st.omega.y(), st.omega.z(), s.contact.force.x(), s.contact.force.y(),
+                s.contact.force.z(), s.contact.moment.x(), s.contact.moment.y(), s.contact.moment.z(), cs.creepage,
+                cs.stick_fraction, cs.in_contact ? cs.approach : 0.0, cs.contact_area, cs.n_contact, cs.n_stick,
+                cs.n_slip, s.kinetic_energy, cs.certificate, s.newton_iterations);
+  out << line;
+}
+
+json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+}  // namespace
+
+DynamicOutcome simulate_dynamic(const Case& c, bool progress,
+                                const std::function<void(const dynamics::DynamicSample&)>& on_step) {
+  dynamics::DynamicSimulation sim(c);
+  std::ostringstream series;
+  series << kColumns;
+  const auto start = std::chrono::steady_clock::now();
+  Progress line("dynamic", progress);
+  const ProgressCallback report = line.callback();
+  DynamicOutcome out;
+  out.result = sim.run([&](const dynamics::DynamicSample& s) {
+    append_row(series, s);
+    if (on_step) on_step(s);
+    if (report) report({s.step, s.state.time, s.contact_state.certificate});
+  });
+  line.finish();
+  out.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.timeseries = series.str();
+
+  const dynamics::DynamicResult& r = out.result;
+  const auto& sp = *c.dynamic;
+  json summary = summary_header(c);
+  summary["status"] = r.completed ? "completed" : "stopped";
+  summary["message"] = r.status;
+  summary["steps"] = r.steps;
+  summary["rejected_steps"] = r.rejected_steps;
+  summary["final"] = {{"time", r.final.time}, {"position", vec(r.final.position)},
+                      {"velocity", vec(r.final.velocity)}, {"omega", vec(r.final.omega)}};
+  summary["timeseries"] = "timeseries.csv";
+  summary["models"] = {{"normal_model", to_string(sp.normal_model)},
+                       {"contact_model", to_string(sp.contact_model)},
+                       {"contact_model_used", r.contact_model},
+                       {"scheme", sp.bdf2 ? "bdf2" : "bdf1"},
+                       {"friction", c.friction ? c.friction->law : "none (frictionless)"}};
+  summary["solver"] = {{"backend", c.solver.backend},
+                       {"backends_used", r.backends},
+                       {"fallback_steps", r.fallback_steps},
+                       {"status", r.completed ? "converged" : "stopped"},
+                       {"newton_iterations", r.newton_iterations},
+                       {"contact_solves", r.contact_solves},
+                       {"time_s", out.elapsed},
+                       {"certificate", {{"worst", r.worst_certificate}, {"last", r.last_certificate}}}};
+  summary["balances"] = {{"momentum", r.momentum_imbalance}, {"energy", r.energy_imbalance}};
+  out.summary = std::move(summary);
+  return out;
+}
+
+}  // namespace dc::cli

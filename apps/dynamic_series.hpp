@@ -1,0 +1,28 @@
+#pragma once
+// The run of a "dynamic" case without its files: summary.json's content (without "files") and
+// timeseries.csv's text. The command line writes them (dynamic_run.cpp); the Python module
+// returns them (the time series as NumPy columns).
+#include <functional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "case_model.hpp"
+#include "dynamic_simulation.hpp"
+
+namespace dc::cli {
+
+struct DynamicOutcome {
+  dynamics::DynamicResult result;
+  nlohmann::json summary;  ///< summary.json without "files" (CASES.md "dynamic")
+  std::string timeseries;  ///< timeseries.csv: a header line, one row per accepted step
+  double elapsed = 0.0;    ///< wall time of the run (s)
+};
+
+/// Runs the case; `on_step` (optional) after every accepted step, e.g. to write snapshots; a
+/// progress line on stderr when `progress`. Never throws for non-convergence (the summary's
+/// status says where and why the run stopped).
+DynamicOutcome simulate_dynamic(const Case& c, bool progress,
+                                const std::function<void(const dynamics::DynamicSample&)>& on_step = {});
+
+}  // namespace dc::cli

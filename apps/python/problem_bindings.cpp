@@ -1,0 +1,297 @@
+// The normal and tangential problems of nlp/ (their C++ names and methods) for Python: set up
+// once on a grid, solved many times (warm starts, loading histories with memory).
+#include <pybind11/stl.h>
+
+#include <array>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "friction_law.hpp"
+#include "module_common.hpp"
+#include "normal_problem.hpp"
+#include "tangential_problem.hpp"
+
+namespace dc::python {
+namespace {
+
+using Opt = std::optional<double>;
+
+double finite_value(double v, const std::string& key) {
+  if (!std::isfinite(v)) throw InputError(key, "must be a finite number");
+  return v;
+}
+
+/// force=P (N; 2-D N/m) or approach=d (m): exactly one.
+NormalSpec normal_load(const Opt& force, const Opt& approach) {
+  if (force && approach) throw InputError("approach", "give force or approach, not both");
+  if (!force && !approach) throw InputError("force", "give the normal load: force=... (N; 2-D N/m) or approach=... (m)");
+  if (force && !(finite_value(*force, "force") > 0.0)) throw InputError("force", "must be positive");
+  return force ? NormalSpec{Control::force, *force} : NormalSpec{Control::approach, finite_value(*approach, "approach")};
+}
+
+/// One rigid mode by its amplitude or by its resultant: at most one of the two (neither: zero amplitude).
+ModeControl mode(const Opt& amplitude, const char* amplitude_key, const Opt& resultant, const char* resultant_key) {
+  if (amplitude && resultant)
+    throw InputError(resultant_key, std::string("give ") + amplitude_key + " or " + resultant_key + ", not both");
+  if (resultant) return {ModeControl::Kind::resultant, finite_value(*resultant, resultant_key)};
+  return {ModeControl::Kind::amplitude, amplitude ? finite_value(*amplitude, amplitude_key) : 0.0};
+}
+
+/// The load of steady_rolling() and roll(): the normal load, each rolling mode by its creepage
+/// (spin) or its resultant, and the rolling speed.
+RollingLoad rolling_load(const Opt& force, const Opt& approach, const Opt& creepage_x, const Opt& force_x,
+                         const Opt& creepage_y, const Opt& force_y, const Opt& spin, const Opt& moment_z,
+                         double velocity) {
+  RollingLoad load;
+  load.normal = normal_load(force, approach);
+  load.modes = {mode(creepage_x, "creepage_x", force_x, "force_x"), mode(creepage_y, "creepage_y", force_y, "force_y"),
+                mode(spin, "spin", moment_z, "moment_z")};
+  if (!(finite_value(velocity, "velocity") > 0.0)) throw InputError("velocity", "must be positive");
+  load.velocity = velocity;
+  return load;
+}
+
+SolverSpec solver_spec(const std::string& backend, double tol, double certificate_tol, int max_iter) {
+  if (backend != "auto" && backend != "ipopt" && backend != "nlopt" && backend != "native")
+    throw InputError("backend", "expected auto, ipopt, nlopt or native, got '" + backend + "'");
+  if (!(tol > 0.0) || !std::isfinite(tol)) throw InputError("tol", "must be a positive number");
+  if (!(certificate_tol > 0.0) || !std::isfinite(certificate_tol))
+    throw InputError("certificate_tol", "must be a positive number");
+  if (max_iter < 1) throw InputError("max_iter", "must be at least 1");
+  SolverSpec s;
+  s.backend = backend;
+  s.tol = tol;
+  s.certificate_tol = certificate_tol;
+  s.max_iter = max_iter;
+  return s;
+}
+
+OperatorKind operator_kind(const std::string& kind) {
+  if (kind == "dense") return OperatorKind::dense;
+  if (kind == "fft") return OperatorKind::fft;
+  if (kind == "auto") return OperatorKind::automatic;
+  throw InputError("kind", "expected auto, dense or fft, got '" + kind + "'");
+}
+
+struct NormalResult {
+  Grid grid;
+  NormalSolution s;
+};
+struct TangentialResult {
+  Grid grid;
+  TangentialSolution s;
+};
+
+/// A problem with the grid it was set up on (the C++ classes keep theirs private or by value).
+struct PyNormalProblem {
+  Grid grid;
+  NormalProblem problem;
+};
+
+FrictionLaw friction_of(const Opt& mu, const Opt& tresca) {
+  if (mu && tresca) throw InputError("tresca", "give mu (Coulomb) or tresca (a bound in Pa), not both");
+  if (tresca) {
+    if (!(finite_value(*tresca, "tresca") > 0.0)) throw InputError("tresca", "must be positive");
+    return FrictionLaw::tresca(*tresca);
+  }
+  if (!mu) throw InputError("mu", "give the friction: mu=... (Coulomb) or tresca=... (Pa)");
+  if (!(finite_value(*mu, "mu") >= 0.0)) throw InputError("mu", "must not be negative");
+  return FrictionLaw::coulomb(*mu);
+}
+
+constexpr const char* kSolverArgs =
+    "Solver options (keywords): backend='auto' (auto, ipopt, nlopt, native), tol=1e-9,\n"
+    "certificate_tol=1e-6 (the largest accepted certificate residual), max_iter=1000.\n"
+    "Non-convergence is not an exception: the solution's .converged and .report say so.";
+
+}  // namespace
+
+void bind_problems(py::module_& m) {
+  m.def(
+      "grid_centres",
+      [](const Grid& g) {
+        std::vector<double> x(g.size()), y(g.size());
+        for (int j = 0; j < g.ny; ++j)
+          for (int i = 0; i < g.nx; ++i) {
+            x[g.index(i, j)] = g.xc(i);
+            y[g.index(i, j)] = g.yc(j);
+          }
+        return py::make_tuple(grid_array(g, x), grid_array(g, y));
+      },
+      py::arg("grid"),
+      "grid_centres(grid) -> (x, y): the element centres (m) as arrays of shape (ny, nx) (2-D: (nx,)),\n"
+      "e.g. to build a profile: h = (x**2 + y**2) / (2 R) for a sphere of radius R.");
+
+  py::class_<NormalResult>(m, "NormalSolution", "A solution of the normal problem (4.7).")
+      .def_property_readonly("pressure", [](const NormalResult& r) { return grid_array(r.grid, r.s.pressure); },
+                             "pressure p (Pa) per element, shape (ny, nx) (2-D: (nx,))")
+      .def_property_readonly("gap", [](const NormalResult& r) { return grid_array(r.grid, r.s.gap); },
+                             "deformed gap g (m), 0 in contact")
+      .def_property_readonly("approach", [](const NormalResult& r) { return r.s.approach; }, "approach delta (m)")
+      .def_property_readonly("force", [](const NormalResult& r) { return r.s.force; }, "sum p A (N; 2-D N/m)")
+      .def_property_readonly("converged", [](const NormalResult& r) { return r.s.report.status == SolveStatus::converged; })
+      .def_property_readonly("report", [](const NormalResult& r) { return to_python(to_json(r.s.report)); },
+                             "the solver's report: backend, status, iterations, time_s, certificate, ...");
+
+  py::class_<PyNormalProblem>(
+      m, "NormalProblem",
+      "NormalProblem(grid, materials, heights, kind='auto'): the normal contact problem (4.7),\n"
+      "min 1/2 p'Cp + (h - delta)'p over p >= 0, set up once (operator, FFT plans) and solved many\n"
+      "times (each solve starts from the last pressure). heights: the undeformed gap h (m) per\n"
+      "element, any shape with grid.size() values (np.inf where the body can never touch).")
+      .def(py::init([](const Grid& g, const MaterialPair& mat,
+                       const py::array_t<double, py::array::c_style | py::array::forcecast>& heights,
+                       const std::string& kind) {
+             return PyNormalProblem{g, NormalProblem(g, mat, grid_values(g, heights, "heights"), operator_kind(kind))};
+           }),
+           py::arg("grid"), py::arg("materials"), py::arg("heights"), py::arg("kind") = "auto")
+      .def(
+          "solve",
+          [](PyNormalProblem& self, const Opt& force, const Opt& approach, const std::string& backend, double tol,
+             double certificate_tol, int max_iter) {
+            const NormalSpec load = normal_load(force, approach);
+            const SolverSpec solver = solver_spec(backend, tol, certificate_tol, max_iter);
+            py::gil_scoped_release release;
+            return NormalResult{self.grid, self.problem.solve(load, solver)};
+          },
+          py::kw_only(), py::arg("force") = py::none(), py::arg("approach") = py::none(), py::arg("backend") = "auto",
+          py::arg("tol") = 1e-9, py::arg("certificate_tol") = 1e-6, py::arg("max_iter") = 1000,
+          (std::string("solve(*, force=None, approach=None, ...) -> NormalSolution\n\n"
+                       "Force control (force=P, N; 2-D N/m; the approach is its multiplier) or approach control\n"
+                       "(approach=delta, m). ") +
+           kSolverArgs)
+              .c_str())
+      .def(
+          "set_heights",
+          [](PyNormalProblem& self, const py::array_t<double, py::array::c_style | py::array::forcecast>& h) {
+            self.problem.set_heights(grid_values(self.grid, h, "heights"));
+          },
+          py::arg("heights"), "set_heights(heights): move the body (a new undeformed gap, m)")
+      .def_property_readonly("grid", [](const PyNormalProblem& self) { return self.grid; });
+
+  py::class_<TangentialResult>(m, "TangentialSolution",
+                               "A solution of the tangential problem (3.25)/(4.8) with its normal solution.")
+      .def_property_readonly("pressure", [](const TangentialResult& r) { return grid_array(r.grid, r.s.normal.pressure); },
+                             "pressure (Pa) per element")
+      .def_property_readonly("tx", [](const TangentialResult& r) { return grid_array(r.grid, r.s.tx); },
+                             "traction on the body, x (Pa)")
+      .def_property_readonly("ty", [](const TangentialResult& r) { return grid_array(r.grid, r.s.ty); },
+                             "traction on the body, y (Pa; 2-D: 0)")
+      .def_property_readonly("sx", [](const TangentialResult& r) { return grid_array(r.grid, r.s.sx); },
+                             "slip increment of the step, x (m; rolling: per unit of travel)")
+      .def_property_readonly("sy", [](const TangentialResult& r) { return grid_array(r.grid, r.s.sy); },
+                             "slip increment of the step, y")
+      .def_property_readonly("bound", [](const TangentialResult& r) { return grid_array(r.grid, r.s.bound); },
+                             "friction bound f(p) (Pa)")
+      .def_property_readonly("state", [](const TangentialResult& r) { return grid_array(r.grid, r.s.state); },
+                             "0 free, 1 stick, 2 slip")
+      .def_property_readonly("approach", [](const TangentialResult& r) { return r.s.normal.approach; }, "approach (m)")
+      .def_property_readonly("force", [](const TangentialResult& r) { return r.s.normal.force; },
+                             "normal force sum p A (N; 2-D N/m)")
+      .def_property_readonly(
+          "amplitudes", [](const TangentialResult& r) { return r.s.amplitudes; },
+          "the rigid modes (given or solved): shift x, y (m) and angle (rad); rolling: creepage x, y and spin (1/m)")
+      .def_property_readonly("resultants", [](const TangentialResult& r) { return r.s.resultants; },
+                             "(Fx, Fy, Mz) on the body (N, N m; 2-D per unit length)")
+      .def_property_readonly("n_stick", [](const TangentialResult& r) { return r.s.n_stick; })
+      .def_property_readonly("n_slip", [](const TangentialResult& r) { return r.s.n_slip; })
+      .def_property_readonly("stick_area", [](const TangentialResult& r) { return r.s.stick_area; },
+                             "area of the stick zone (m^2; 2-D: its length, m)")
+      .def_property_readonly("converged", [](const TangentialResult& r) {
+        return r.s.report.status == SolveStatus::converged && r.s.normal.report.status == SolveStatus::converged &&
+               r.s.outer.converged;
+      })
+      .def_property_readonly("report", [](const TangentialResult& r) { return to_python(to_json(r.s.report)); },
+                             "the tangential solver's report (its certificate holds the normal residuals too)");
+
+  py::class_<TangentialProblem>(
+      m, "TangentialProblem",
+      "TangentialProblem(grid, materials, heights, mu=None, tresca=None, kind='auto'): the tangential\n"
+      "problem (3.25)/(4.8) on top of the normal one, with Coulomb (mu) or Tresca (a bound, Pa)\n"
+      "friction. It keeps its loading history: successive step() calls are a history with memory\n"
+      "(Cattaneo-Mindlin), roll() marches from the current state; reset() forgets it.\n"
+      "Each rigid mode is given by its amplitude or by its resultant (then solved for):\n"
+      "  step:           shift_x | force_x (m | N), shift_y | force_y, angle | moment_z (rad | N m)\n"
+      "  steady_rolling: creepage_x | force_x, creepage_y | force_y, spin | moment_z (1/m | N m)\n"
+      "Forces are on the body (a shift in +x gives Fx < 0).")
+      .def(py::init([](const Grid& g, const MaterialPair& mat,
+                       const py::array_t<double, py::array::c_style | py::array::forcecast>& heights, const Opt& mu,
+                       const Opt& tresca, const std::string& kind) {
+             return TangentialProblem(g, mat, grid_values(g, heights, "heights"), friction_of(mu, tresca),
+                                      operator_kind(kind));
+           }),
+           py::arg("grid"), py::arg("materials"), py::arg("heights"), py::arg("mu") = py::none(),
+           py::arg("tresca") = py::none(), py::arg("kind") = "auto")
+      .def(
+          "step",
+          [](TangentialProblem& self, const Opt& force, const Opt& approach, const Opt& shift_x, const Opt& force_x,
+             const Opt& shift_y, const Opt& force_y, const Opt& angle, const Opt& moment_z, const std::string& backend,
+             double tol, double certificate_tol, int max_iter) {
+            TangentialLoad load;
+            load.normal = normal_load(force, approach);
+            load.modes = {mode(shift_x, "shift_x", force_x, "force_x"), mode(shift_y, "shift_y", force_y, "force_y"),
+                          mode(angle, "angle", moment_z, "moment_z")};
+            const SolverSpec solver = solver_spec(backend, tol, certificate_tol, max_iter);
+            py::gil_scoped_release release;
+            return TangentialResult{self.grid(), self.step(load, solver)};
+          },
+          py::kw_only(), py::arg("force") = py::none(), py::arg("approach") = py::none(),
+          py::arg("shift_x") = py::none(), py::arg("force_x") = py::none(), py::arg("shift_y") = py::none(),
+          py::arg("force_y") = py::none(), py::arg("angle") = py::none(), py::arg("moment_z") = py::none(),
+          py::arg("backend") = "auto", py::arg("tol") = 1e-9, py::arg("certificate_tol") = 1e-6,
+          py::arg("max_iter") = 1000,
+          (std::string("step(*, force|approach, shift_x|force_x, shift_y|force_y, angle|moment_z, ...) -> "
+                       "TangentialSolution\n\n"
+                       "One quasi-static step of the loading history (shift, torsion): amplitudes are TOTAL rigid\n"
+                       "displacements since the unloaded state. ") +
+           kSolverArgs)
+              .c_str())
+      .def(
+          "steady_rolling",
+          [](TangentialProblem& self, const Opt& force, const Opt& approach, const Opt& creepage_x, const Opt& force_x,
+             const Opt& creepage_y, const Opt& force_y, const Opt& spin, const Opt& moment_z, double velocity,
+             const std::string& backend, double tol, double certificate_tol, int max_iter) {
+            const RollingLoad load =
+                rolling_load(force, approach, creepage_x, force_x, creepage_y, force_y, spin, moment_z, velocity);
+            const SolverSpec solver = solver_spec(backend, tol, certificate_tol, max_iter);
+            py::gil_scoped_release release;
+            return TangentialResult{self.grid(), self.steady_rolling(load, solver)};
+          },
+          py::kw_only(), py::arg("force") = py::none(), py::arg("approach") = py::none(),
+          py::arg("creepage_x") = py::none(), py::arg("force_x") = py::none(), py::arg("creepage_y") = py::none(),
+          py::arg("force_y") = py::none(), py::arg("spin") = py::none(), py::arg("moment_z") = py::none(),
+          py::arg("velocity") = 1.0, py::arg("backend") = "auto", py::arg("tol") = 1e-9,
+          py::arg("certificate_tol") = 1e-6, py::arg("max_iter") = 1000,
+          (std::string("steady_rolling(*, force|approach, creepage_x|force_x, creepage_y|force_y, spin|moment_z,\n"
+                       "               velocity=1.0, ...) -> TangentialSolution\n\n"
+                       "Steady rolling in +x (Carter, Kalker): creepages and spin given, or the forces (then the\n"
+                       "creepages are solved for: solution.amplitudes). ") +
+           kSolverArgs)
+              .c_str())
+      .def(
+          "roll",
+          [](TangentialProblem& self, double distance, const Opt& force, const Opt& approach, const Opt& creepage_x,
+             const Opt& force_x, const Opt& creepage_y, const Opt& force_y, const Opt& spin, const Opt& moment_z,
+             double velocity, const std::string& backend, double tol, double certificate_tol, int max_iter) {
+            const RollingLoad load =
+                rolling_load(force, approach, creepage_x, force_x, creepage_y, force_y, spin, moment_z, velocity);
+            const SolverSpec solver = solver_spec(backend, tol, certificate_tol, max_iter);
+            py::gil_scoped_release release;
+            return TangentialResult{self.grid(), self.roll(load, distance, solver)};
+          },
+          py::arg("distance"), py::kw_only(), py::arg("force") = py::none(), py::arg("approach") = py::none(),
+          py::arg("creepage_x") = py::none(), py::arg("force_x") = py::none(), py::arg("creepage_y") = py::none(),
+          py::arg("force_y") = py::none(), py::arg("spin") = py::none(), py::arg("moment_z") = py::none(),
+          py::arg("velocity") = 1.0, py::arg("backend") = "auto", py::arg("tol") = 1e-9,
+          py::arg("certificate_tol") = 1e-6, py::arg("max_iter") = 1000,
+          (std::string("roll(distance, *, the arguments of steady_rolling) -> TangentialSolution\n\n"
+                       "Transient rolling: marches `distance` (m) in +x from the current state (memory kept),\n"
+                       "e.g. Cattaneo's state rolling into Carter's. ") +
+           kSolverArgs)
+              .c_str())
+      .def("reset", &TangentialProblem::reset, "reset(): forget the loading history (back to the unloaded state)")
+      .def_property_readonly("grid", &TangentialProblem::grid);
+}
+
+}  // namespace dc::python

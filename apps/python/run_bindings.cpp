@@ -1,0 +1,113 @@
+// The runs in time for Python: the dynamic simulation of a "dynamic" case (the C++ name,
+// DynamicSimulation) and the runs of a paper_cylinder case, returned as the summary dict with the
+// time series as NumPy columns (the columns of timeseries.csv). The runs and their summaries are
+// the command line's (apps/dynamic_series.hpp, apps/paper_cylinder_run.hpp).
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "case_model.hpp"
+#include "dynamic_series.hpp"
+#include "module_common.hpp"
+#include "paper_cylinder_run.hpp"
+#include "python_runs.hpp"
+
+namespace dc::python {
+
+py::dict csv_columns(const std::string& text) {
+  std::istringstream in(text);
+  std::string header, line, cell;
+  std::getline(in, header);
+  std::vector<std::string> names;
+  for (std::istringstream h(header); std::getline(h, cell, ',');) names.push_back(cell);
+  std::vector<std::vector<double>> columns(names.size());
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::istringstream row(line);
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      if (!std::getline(row, cell, ',')) cell.clear();
+      columns[k].push_back(cell.empty() ? std::nan("") : std::strtod(cell.c_str(), nullptr));
+    }
+  }
+  py::dict out;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    py::array_t<double> a(static_cast<py::ssize_t>(columns[k].size()));
+    std::copy(columns[k].begin(), columns[k].end(), a.mutable_data());
+    out[py::str(names[k])] = a;
+  }
+  return out;
+}
+
+py::dict run_dynamic_case(const Case& c, bool progress) {
+  cli::DynamicOutcome out;
+  {
+    py::gil_scoped_release release;
+    out = cli::simulate_dynamic(c, progress);
+  }
+  py::dict result = to_python(out.summary);
+  result["timeseries"] = csv_columns(out.timeseries);
+  return result;
+}
+
+py::dict run_paper_cylinder_case(const Case& c, bool progress) {
+  cli::PaperCylinderOutcome out;
+  {
+    py::gil_scoped_release release;
+    out = cli::simulate_paper_cylinder(c, !progress);
+  }
+  py::dict result = to_python(out.summary);
+  // Each run's time series (by its file name) as NumPy columns in place of the name.
+  py::dict series;
+  for (std::size_t k = 0; k < out.files.size(); ++k) series[py::str(out.files[k])] = csv_columns(out.texts[k]);
+  auto columns_of = [&](py::handle run) {
+    const py::object name = run["timeseries"];
+    if (!name.is_none() && series.contains(name)) run["timeseries"] = series[name];
+  };
+  if (result.contains("runs"))
+    for (py::handle run : py::list(result["runs"])) columns_of(run);
+  if (result.contains("run")) columns_of(result["run"]);
+  if (result.contains("timeseries") && series.contains(result["timeseries"])) result["timeseries"] = series[result["timeseries"]];
+  return result;
+}
+
+namespace {
+
+/// A dynamic case set up to run (the case outlives the simulation that refers to it).
+class PyDynamicSimulation {
+ public:
+  explicit PyDynamicSimulation(Case c) : case_(std::move(c)) {
+    if (case_.problem != ProblemKind::dynamic)
+      throw InputError("problem", std::string("DynamicSimulation takes a \"dynamic\" case, got '") +
+                                      to_string(case_.problem) + "'");
+  }
+  py::dict run(bool progress) const { return run_dynamic_case(case_, progress); }
+  const Case& the_case() const { return case_; }
+
+ private:
+  Case case_;
+};
+
+}  // namespace
+
+void bind_runs(py::module_& m) {
+  py::class_<PyDynamicSimulation>(
+      m, "DynamicSimulation",
+      "DynamicSimulation(case): the moving massive body of a \"dynamic\" case (a dict, JSON text or\n"
+      "path): the Newton-Euler equations (2.20)-(2.21) stepped by (3.9)-(3.10), the contact solved\n"
+      "in every step. run() returns the summary (the keys of summary.json: status, steps, final,\n"
+      "balances, solver with the worst certificate) with 'timeseries': {column: NumPy array} for\n"
+      "the columns of timeseries.csv (t, x, y, z, vx, ..., Fx, Fy, Fz, Mx, My, Mz, creepage,\n"
+      "stick_fraction, approach, contact_area, n_contact, n_stick, n_slip, kinetic_energy,\n"
+      "certificate, newton_iterations). A run that stops early is not an exception: its status\n"
+      "says 'stopped' and its message why.")
+      .def(py::init([](const py::object& c) { return PyDynamicSimulation(case_from(c)); }), py::arg("case"))
+      .def("run", &PyDynamicSimulation::run, py::arg("progress") = false,
+           "run(progress=False) -> dict: runs to time.t_end (progress on stderr when asked)")
+      .def_property_readonly("name", [](const PyDynamicSimulation& s) { return s.the_case().name; });
+}
+
+}  // namespace dc::python
