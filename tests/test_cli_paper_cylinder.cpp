@@ -30,16 +30,12 @@ class CliPaperCylinder : public CliTest {
     json doc = json::parse(slurp(fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / "paper-cylinder.json"));
     doc["output"] = {{"plots", false}};
     if (edit) edit(doc);
-    std::ofstream(dir_ / "case.json") << doc.dump(2);
-    return "case.json";
+    return write_case(doc);
   }
   void expect_rejected(const std::function<void(json&)>& edit, const std::string& key) const {
     const std::string file = case_file(edit);
-    for (const std::string& command : {"validate " + file, "solve " + file + " --out rejected -q"}) {
-      const CliResult r = run(command);
-      EXPECT_EQ(r.code, 2) << command << r.err;
-      EXPECT_NE(r.err.find("error: " + key + ":"), std::string::npos) << command << "stderr: " << r.err;
-    }
+    expect_input_error("validate " + file, key);
+    expect_input_error("solve " + file + " --out rejected -q", key);
   }
 };
 
@@ -85,9 +81,9 @@ TEST_F(CliPaperCylinder, SweepOverThreadsAndRanksWritesTheSameBytes) {
     for (int k = 0; k < 3; ++k) all += slurp(dir_ / out / ("timeseries_" + std::to_string(k) + ".csv"));
     return all;
   };
-  const CliResult serial = run_env("DYNCONTACT_THREADS=1", "solve " + file + " --out serial");
+  const CliResult serial = run_prefixed("DYNCONTACT_THREADS=1", "solve " + file + " --out serial");
   ASSERT_EQ(serial.code, 0) << serial.err;
-  ASSERT_EQ(run_env("DYNCONTACT_THREADS=3", "solve " + file + " --out threads -q").code, 0);
+  ASSERT_EQ(run_prefixed("DYNCONTACT_THREADS=3", "solve " + file + " --out threads -q").code, 0);
   EXPECT_EQ(files("threads"), files("serial"));
   EXPECT_NE(files("serial").find("timeseries_2.csv"), std::string::npos);
   if (!have_mpirun()) GTEST_SKIP() << "no mpirun here";
