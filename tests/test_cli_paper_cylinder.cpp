@@ -81,9 +81,9 @@ TEST_F(CliPaperCylinder, SweepOverThreadsAndRanksWritesTheSameBytes) {
     for (int k = 0; k < 3; ++k) all += slurp(dir_ / out / ("timeseries_" + std::to_string(k) + ".csv"));
     return all;
   };
-  const CliResult serial = run_env("DYNCONTACT_THREADS=1", "solve " + file + " --out serial");
+  const CliResult serial = run_prefixed("DYNCONTACT_THREADS=1", "solve " + file + " --out serial");
   ASSERT_EQ(serial.code, 0) << serial.err;
-  ASSERT_EQ(run_env("DYNCONTACT_THREADS=3", "solve " + file + " --out threads -q").code, 0);
+  ASSERT_EQ(run_prefixed("DYNCONTACT_THREADS=3", "solve " + file + " --out threads -q").code, 0);
   EXPECT_EQ(files("threads"), files("serial"));
   EXPECT_NE(files("serial").find("timeseries_2.csv"), std::string::npos);
   if (!have_mpirun()) GTEST_SKIP() << "no mpirun here";

@@ -42,6 +42,8 @@ void CliTest::TearDown() {
   if (!HasFailure()) fs::remove_all(dir_);
 }
 
+CliResult CliTest::run(const std::string& args) const { return run_prefixed("", args); }
+
 std::string CliTest::write_case(const nlohmann::json& doc, const std::string& name) const {
   std::ofstream(dir_ / name) << doc.dump(2);
   return name;
@@ -53,15 +55,9 @@ void CliTest::expect_input_error(const std::string& command, const std::string& 
   EXPECT_NE(r.err.find("error: " + key + ":"), std::string::npos) << command << "\nstderr: " << r.err;
 }
 
-CliResult CliTest::run(const std::string& args) const { return run_prefixed(shell_quote(DYNCONTACT_BINARY), args); }
-
-CliResult CliTest::run_env(const std::string& env, const std::string& args) const {
-  return run_prefixed(env + " " + shell_quote(DYNCONTACT_BINARY), args);
-}
-
 CliResult CliTest::run_mpi2(const std::string& args) const {
   return run_prefixed("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
-                      "mpirun -n 2 --oversubscribe " + shell_quote(DYNCONTACT_BINARY),
+                      "mpirun -n 2 --oversubscribe",
                       args);
 }
 
@@ -69,8 +65,8 @@ bool CliTest::have_mpirun() { return std::system("mpirun --version >/dev/null 2>
 
 CliResult CliTest::run_prefixed(const std::string& prefix, const std::string& args) const {
   const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-  const std::string cmd = "cd " + shell_quote(dir_.string()) + " && " + prefix + " " + args + " >" +
-                          shell_quote(out.string()) + " 2>" + shell_quote(err.string());
+  const std::string cmd = "cd " + shell_quote(dir_.string()) + " && " + prefix + " " + shell_quote(DYNCONTACT_BINARY) +
+                          " " + args + " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string());
   const int status = std::system(cmd.c_str());
   CliResult r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);

@@ -31,18 +31,17 @@ class CliTest : public ::testing::Test {
   void TearDown() override;
   /// Runs `dyncontact ARGS` (ARGS already shell-quoted) in the test folder.
   CliResult run(const std::string& args) const;
-  /// `PREFIX ARGS` in the test folder (PREFIX ends with the program, e.g. "env X=1 dyncontact").
+  /// Runs `PREFIX dyncontact ARGS`: PREFIX holds environment assignments or a launcher
+  /// (e.g. "DYNCONTACT_THREADS=1", "mpirun -n 2").
   CliResult run_prefixed(const std::string& prefix, const std::string& args) const;
-  /// `dyncontact ARGS` with environment assignments ENV before it (e.g. "DYNCONTACT_THREADS=1").
-  CliResult run_env(const std::string& env, const std::string& args) const;
-  /// `mpirun -n 2 --oversubscribe dyncontact ARGS` (allowed as root too).
-  CliResult run_mpi2(const std::string& args) const;
-  /// Whether `mpirun` is on PATH.
-  static bool have_mpirun();
   /// Writes DOC into the test folder as NAME; returns NAME.
   std::string write_case(const nlohmann::json& doc, const std::string& name = "case.json") const;
   /// COMMAND (e.g. "validate case.json") exits 2 and says "error: KEY:" on stderr.
   void expect_input_error(const std::string& command, const std::string& key) const;
+  /// `mpirun -n 2 --oversubscribe dyncontact ARGS` (allowed as root too).
+  CliResult run_mpi2(const std::string& args) const;
+  /// Whether `mpirun` is on PATH.
+  static bool have_mpirun();
   std::filesystem::path dir_;
 };
 
