@@ -148,8 +148,8 @@ TEST_F(CliTable, ThreadsAndRanksWriteTheSameBytes) {
   auto files = [&](const std::string& out) {
     return slurp(dir_ / out / "table.csv") + slurp(dir_ / out / "table.json");
   };
-  ASSERT_EQ(run_env("DYNCONTACT_THREADS=1", args + "serial").code, 0);
-  ASSERT_EQ(run_env("DYNCONTACT_THREADS=2", args + "threads").code, 0);
+  ASSERT_EQ(run_prefixed("DYNCONTACT_THREADS=1", args + "serial").code, 0);
+  ASSERT_EQ(run_prefixed("DYNCONTACT_THREADS=2", args + "threads").code, 0);
   const std::string serial = files("serial");
   ASSERT_FALSE(serial.empty());
   EXPECT_EQ(files("threads"), serial);
