@@ -23,8 +23,8 @@ struct Sets {
   std::vector<int> disk_of;  ///< per variable: index of its disk, or -1
   explicit Sets(const QuadraticProgram& qp) {
     const std::size_t n = qp.c.size();
-    lower = qp.lower.empty() ? Vec(n, -kInf) : qp.lower;
-    upper = qp.upper.empty() ? Vec(n, kInf) : qp.upper;
+    if (qp.lower.empty()) lower.assign(n, -kInf); else lower = qp.lower;
+    if (qp.upper.empty()) upper.assign(n, kInf); else upper = qp.upper;
     disk_of.assign(n, -1);
     for (std::size_t d = 0; d < qp.disks.size(); ++d) {
       disk_of[static_cast<std::size_t>(qp.disks[d].ix)] = static_cast<int>(d);
@@ -47,10 +47,9 @@ void project(const QuadraticProgram& qp, const Sets& sets, const Vec& w, Vec& y)
   for (std::size_t i = 0; i < w.size(); ++i)
     y[i] = sets.disk_of[i] >= 0 ? w[i] : std::clamp(w[i], sets.lower[i], sets.upper[i]);
   for (const auto& d : qp.disks) {
-    const double wx = w[d.ix], wy = w[d.iy], norm = std::hypot(wx, wy);
-    const double s = norm > d.radius ? (norm > 0.0 ? d.radius / norm : 0.0) : 1.0;
-    y[d.ix] = s * wx;
-    y[d.iy] = s * wy;
+    y[d.ix] = w[d.ix];
+    y[d.iy] = w[d.iy];
+    project_onto_disk(y[d.ix], y[d.iy], d.radius);
   }
 }
 

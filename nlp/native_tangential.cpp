@@ -264,10 +264,9 @@ void NativeTangential::project_d(const Vec& u, Vec& x) const {
   for (std::size_t i : boxed_) x[i] = std::clamp(u[i], lower_[i], upper_[i]);
   for (std::size_t i : fixed_) x[i] = fixed_value_[i];
   for (const auto& d : disks_) {
-    const double ux = u[d.ix], uy = u[d.iy], norm2 = ux * ux + uy * uy;
-    const double s = norm2 > d.r * d.r ? d.r / std::sqrt(norm2) : 1.0;
-    x[d.ix] = s * ux;
-    x[d.iy] = s * uy;
+    x[d.ix] = u[d.ix];
+    x[d.iy] = u[d.iy];
+    project_onto_disk(x[d.ix], x[d.iy], d.r);
   }
 }
 

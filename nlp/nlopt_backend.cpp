@@ -113,14 +113,7 @@ double disk_constraint(unsigned n, const double* x, double* grad, void* data) {
 std::vector<double> starting_point(const Problem& p) {
   std::vector<double> x(p.lower.size(), 0.0);
   if (p.qp.x0.size() == x.size()) x = p.qp.x0;
-  for (const auto& d : p.qp.disks) {
-    const double norm = std::hypot(x[d.ix], x[d.iy]);
-    if (norm > d.radius) {
-      const double s = norm > 0.0 ? d.radius / norm : 0.0;
-      x[d.ix] *= s;
-      x[d.iy] *= s;
-    }
-  }
+  for (const auto& d : p.qp.disks) project_onto_disk(x[d.ix], x[d.iy], d.radius);
   for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::clamp(x[i], p.lower[i], p.upper[i]);
   return x;
 }

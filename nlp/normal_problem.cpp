@@ -52,6 +52,7 @@ void NormalProblem::set_warm_start(std::vector<double> pressure) {
 }
 
 Certificate NormalProblem::certify(const std::vector<double>& p, double approach, const NormalSpec& control) const {
+  if (!std::isfinite(approach) || !all_finite(p)) return Certificate::not_finite();
   Certificate cert;
   const std::size_t n = grid_.size();
   std::vector<double> w;

@@ -3,6 +3,7 @@
 //   minimise  1/2 x'Qx + c'x
 //   subject to lower <= x <= upper,  a_k'x = b_k,  x_i^2 + x_j^2 <= r^2 (cones).
 // Q is applied matrix-free (LinearOperator); small problems may also expose it densely.
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <string>
@@ -40,6 +41,16 @@ struct QuadraticProgram {
 };
 
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// The Euclidean projection of (x, y) onto the disk of radius r >= 0 (a friction disk):
+/// unchanged inside, scaled onto the circle outside.
+inline void project_onto_disk(double& x, double& y, double r) {
+  const double norm2 = x * x + y * y;
+  if (norm2 <= r * r) return;
+  const double s = norm2 > 0.0 ? r / std::sqrt(norm2) : 0.0;
+  x *= s;
+  y *= s;
+}
 
 struct ProgressInfo {
   int iteration = 0;

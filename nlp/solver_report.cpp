@@ -1,13 +1,30 @@
 #include "solver_report.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 
 namespace dc {
 
 double Certificate::worst() const {
-  return std::max({complementarity, gap_violation, pressure_violation, force_residual, friction_law,
-                   gap_function});
+  double worst = 0.0;
+  for (double m : {complementarity, gap_violation, pressure_violation, force_residual, friction_law, gap_function}) {
+    if (std::isnan(m)) return std::numeric_limits<double>::infinity();
+    worst = std::max(worst, m);
+  }
+  return worst;
+}
+
+Certificate Certificate::not_finite() {
+  const double inf = std::numeric_limits<double>::infinity();
+  return {inf, inf, inf, inf, inf, inf};
+}
+
+bool all_finite(const std::vector<double>& values) {
+  for (double v : values)
+    if (!std::isfinite(v)) return false;
+  return true;
 }
 
 const char* to_string(SolveStatus status) {

@@ -1,6 +1,7 @@
 #pragma once
 // What every solve reports: backend used, status, effort and our own certificate.
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -14,8 +15,13 @@ struct Certificate {
   double force_residual = 0.0;   ///< |sum p A - P| / P under force control
   double friction_law = 0.0;     ///< tangential: worst violation of (2.4)-(2.5) / traction level max |tau|
   double gap_function = 0.0;     ///< tangential: (4.24) g(tau) / (sum f(p) A * slip level max(|ds|, c_t max |tau|))
-  double worst() const;          ///< the largest of the above
+  double worst() const;          ///< the largest of the above; infinity if any is NaN
+  /// The certificate of a point that is not finite (NaN or infinite entries): every measure infinite.
+  static Certificate not_finite();
 };
+
+/// True when no entry is NaN or infinite (a point a certificate can measure at all).
+bool all_finite(const std::vector<double>& values);
 
 enum class SolveStatus { converged, not_converged, failed };
 

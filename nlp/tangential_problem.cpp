@@ -904,6 +904,8 @@ Certificate TangentialProblem::certify_friction(const Grid& grid, const std::vec
                                                 const std::vector<double>& ty, const std::vector<double>& sx,
                                                 const std::vector<double>& sy, const std::vector<double>& bound,
                                                 double compliance) {
+  if (!all_finite(tx) || !all_finite(ty) || !all_finite(sx) || !all_finite(sy) || !all_finite(bound))
+    return Certificate::not_finite();
   Certificate cert;
   const double A = grid.area();
   const double c_t = compliance;  // slip per unit traction of one element
@@ -924,11 +926,7 @@ Certificate TangentialProblem::certify_friction(const Grid& grid, const std::vec
     const double f = bound[e];
     // (2.4)-(2.5) as a fixed point: tau = proj_{|t| <= f}(tau - ds / c_t).
     double zx = tx[e] - sx[e] / c_t, zy = ty[e] - sy[e] / c_t;
-    const double mag = std::hypot(zx, zy);
-    if (mag > f) {
-      zx *= f > 0.0 ? f / mag : 0.0;
-      zy *= f > 0.0 ? f / mag : 0.0;
-    }
+    project_onto_disk(zx, zy, std::max(f, 0.0));
     law = std::max(law, std::hypot(tx[e] - zx, ty[e] - zy));
     law = std::max(law, std::hypot(tx[e], ty[e]) - f);
     // (4.24): g = sum [f |ds| - tau- . ds] A, with the paper's tau- = -tau+ on the substrate

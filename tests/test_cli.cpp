@@ -33,16 +33,13 @@ class Cli : public dc::test::CliTest {
     doc["grid"]["nx"] = 16;
     doc["grid"]["ny"] = 16;
     edit(doc);
-    std::ofstream(dir_ / name) << doc.dump(2);
-    return name;
+    return write_case(doc, name);
   }
 
   /// The case with `edit` must be rejected with exit code 2 and a message naming `key`.
   void expect_rejected(const std::function<void(json&)>& edit, const std::string& key,
                        const std::string& command = "solve") const {
-    const Result r = run(command + " " + case_file(edit));
-    EXPECT_EQ(r.code, 2) << r.err;
-    EXPECT_NE(r.err.find("error: " + key + ":"), std::string::npos) << "stderr: " << r.err;
+    expect_input_error(command + " " + case_file(edit), key);
     EXPECT_FALSE(fs::exists(dir_ / "out" / "hertz-sphere" / "summary.json"));
   }
 };

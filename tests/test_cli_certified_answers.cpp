@@ -95,9 +95,17 @@ TEST_F(CliCertifiedAnswers, CompareWithNLoptOn2D) {
   json doc = dc::test::example_json("hertz-cylinder-2d");
   doc["grid"]["nx"] = 32;
   doc["output"] = {{"plots", false}};
-  std::ofstream(dir_ / "c.json") << doc.dump(2);
+  write_case(doc, "c.json");
   const Result r = run("compare c.json --backends ipopt,nlopt,native --out c -q");
   EXPECT_EQ(r.code, 0) << r.out << r.err;
+}
+
+TEST_F(CliCertifiedAnswers, AnOverflowedSolutionIsNeverCertified) {
+  // Steady rolling at a creepage of 1e308 overflows the slip: the certificate meets NaN. It used
+  // to drop out of the certificate's max() and the run exited 0 as "converged".
+  const Result r = solve("rolling-sphere", "--set 'tangential.creepage=[1e308,0]' --set grid.nx=16 --set grid.ny=16", "o");
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_EQ(summary("o")["solver"]["status"], "not_converged");
 }
 
 }  // namespace

@@ -28,16 +28,12 @@ class CliDynamic : public CliTest {
     doc["time"]["dt"] = 2e-6;
     doc["output"] = {{"plots", false}};
     if (edit) edit(doc);
-    std::ofstream(dir_ / "case.json") << doc.dump(2);
-    return "case.json";
+    return write_case(doc);
   }
   void expect_rejected(const std::function<void(json&)>& edit, const std::string& key) const {
     const std::string file = case_file(edit);
-    for (const std::string& command : {"validate " + file, "solve " + file + " --out rejected -q"}) {
-      const CliResult r = run(command);
-      EXPECT_EQ(r.code, 2) << command << r.err;
-      EXPECT_NE(r.err.find(key), std::string::npos) << command << ": " << r.err;
-    }
+    expect_input_error("validate " + file, key);
+    expect_input_error("solve " + file + " --out rejected -q", key);
   }
 };
 

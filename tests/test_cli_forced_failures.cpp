@@ -35,8 +35,7 @@ class CliForcedFailures : public dc::test::CliTest {
     if (doc["dimension"] == 3) doc["grid"]["ny"] = n;
     doc["output"] = {{"plots", false}};
     if (edit) edit(doc);
-    std::ofstream(dir_ / (name + ".json")) << doc.dump(2);
-    return name + ".json";
+    return write_case(doc, name + ".json");
   }
   Result run_with_fault(const std::string& fault, const std::string& args) const {
     setenv("DYNCONTACT_FAULT", fault.c_str(), 1);

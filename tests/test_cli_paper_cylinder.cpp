@@ -30,16 +30,12 @@ class CliPaperCylinder : public CliTest {
     json doc = json::parse(slurp(fs::path(DYNCONTACT_SOURCE_DIR) / "examples" / "paper-cylinder.json"));
     doc["output"] = {{"plots", false}};
     if (edit) edit(doc);
-    std::ofstream(dir_ / "case.json") << doc.dump(2);
-    return "case.json";
+    return write_case(doc);
   }
   void expect_rejected(const std::function<void(json&)>& edit, const std::string& key) const {
     const std::string file = case_file(edit);
-    for (const std::string& command : {"validate " + file, "solve " + file + " --out rejected -q"}) {
-      const CliResult r = run(command);
-      EXPECT_EQ(r.code, 2) << command << r.err;
-      EXPECT_NE(r.err.find("error: " + key + ":"), std::string::npos) << command << "stderr: " << r.err;
-    }
+    expect_input_error("validate " + file, key);
+    expect_input_error("solve " + file + " --out rejected -q", key);
   }
 };
 

@@ -81,19 +81,7 @@ class CliTable : public dc::test::CliTest {
     json doc = dc::test::example_json("rolling-sphere");
     doc["grid"] = {{"nx", n}, {"ny", n}, {"extent", 1.1}};
     doc["output"] = {{"plots", false}};
-    std::ofstream(dir_ / "case.json") << doc.dump(2);
-    return "case.json";
-  }
-  /// `dyncontact ARGS` with environment assignments ENV before it (e.g. "DYNCONTACT_THREADS=1").
-  dc::test::CliResult run_env(const std::string& env, const std::string& args) const {
-    return run_prefixed(env + " " + quote(DYNCONTACT_BINARY), args);
-  }
-  dc::test::CliResult run_prefixed(const std::string& prefix, const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd = "cd " + quote(dir_.string()) + " && " + prefix + " " + args + " >" + quote(out.string()) +
-                            " 2>" + quote(err.string());
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128, slurp(out), slurp(err)};
+    return write_case(doc);
   }
 };
 
@@ -162,22 +150,22 @@ TEST_F(CliTable, ThreadsAndRanksWriteTheSameBytes) {
   auto files = [&](const std::string& out) {
     return slurp(dir_ / out / "table.csv") + slurp(dir_ / out / "table.json");
   };
-  ASSERT_EQ(run_env("DYNCONTACT_THREADS=1", args + "serial").code, 0);
-  ASSERT_EQ(run_env("DYNCONTACT_THREADS=2", args + "threads").code, 0);
+  ASSERT_EQ(run_prefixed("DYNCONTACT_THREADS=1", args + "serial").code, 0);
+  ASSERT_EQ(run_prefixed("DYNCONTACT_THREADS=2", args + "threads").code, 0);
   const std::string serial = files("serial");
   ASSERT_FALSE(serial.empty());
   EXPECT_EQ(files("threads"), serial);
   if (std::system("mpirun --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "no mpirun here";
   const auto mpi = run_prefixed("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
-                                "mpirun -n 2 --oversubscribe " + quote(DYNCONTACT_BINARY),
+                                "mpirun -n 2 --oversubscribe",
                                 args + "ranks");
   ASSERT_EQ(mpi.code, 0) << mpi.err;
   EXPECT_EQ(files("ranks"), serial);
 }
 
 TEST_F(CliTable, AFailingPointIsReportedAndTheOthersKept) {
-  // A creepage of 1e308 overflows the slip (no finite forces: failed), one of 1e200 is beyond
-  // what the steady solver resolves (not converged): both reported, the ordinary points kept.
+  // A creepage of 1e308 overflows the slip (its certificate meets NaN), one of 1e200 is beyond
+  // what the steady solver resolves: neither certifies, both reported, the ordinary points kept.
   const std::string file = case_file(16);
   const auto r = run("table " + file + " --creepage 0,1e-3,1e308,1e200 -q --out tab");
   EXPECT_EQ(r.code, 3) << r.err;
@@ -188,8 +176,7 @@ TEST_F(CliTable, AFailingPointIsReportedAndTheOthersKept) {
   EXPECT_EQ(t.rows[0].cells.back(), "converged");
   EXPECT_EQ(t.rows[1].cells.back(), "converged");
   EXPECT_LT(t.at(1, "Fx"), 0.0);
-  EXPECT_EQ(t.rows[2].cells.back(), "failed");
-  EXPECT_TRUE(std::isnan(t.at(2, "Fx")));
+  EXPECT_NE(t.rows[2].cells.back(), "converged");
   EXPECT_NE(t.rows[3].cells.back(), "converged");
   const json meta = json::parse(slurp(dir_ / "tab" / "table.json"));
   ASSERT_EQ(meta["failed"].size(), 2u);

@@ -57,9 +57,7 @@ class CliTangential : public dc::test::CliTest {
     doc["solver"]["backend"] = "ipopt";
     doc["output"] = {{"plots", false}};
     if (edit) edit(doc);
-    const std::string file = name + ".json";
-    std::ofstream(dir_ / file) << doc.dump(2);
-    return file;
+    return write_case(doc, name + ".json");
   }
 
   /// Example `base` (on an 8-element grid) with `edit` must be rejected with exit 2 and a message
@@ -71,11 +69,10 @@ class CliTangential : public dc::test::CliTest {
       if (d["dimension"] == 3) d["grid"]["ny"] = 8;
       edit(d);
     });
-    const Result r = run("solve " + file + " --out rejected -q");
-    EXPECT_EQ(r.code, 2) << r.err;
-    EXPECT_NE(r.err.find("error: " + key + ":"), std::string::npos) << "stderr: " << r.err;
+    expect_input_error("solve " + file + " --out rejected -q", key);
     if (!phrase.empty()) {
-      EXPECT_NE(r.err.find(phrase), std::string::npos) << "stderr: " << r.err;
+      const std::string err = slurp(dir_ / "stderr.txt");
+      EXPECT_NE(err.find(phrase), std::string::npos) << "stderr: " << err;
     }
     EXPECT_FALSE(fs::exists(dir_ / "rejected" / "summary.json"));
   }

@@ -128,5 +128,24 @@ TEST(TangentialCertificates, ZeroTractionWithSlipIsCaught) {
   EXPECT_EQ(none.worst(), 0.0);
 }
 
+TEST(TangentialCertificates, ANotFiniteSolutionNeverCertifies) {
+  // A NaN or infinite traction or slip anywhere (an overflowed creepage, a diverged backend) must
+  // fail the certificate; NaN used to drop out of the max() reductions and certify as 0.
+  const Grid g = Grid::make(3, 4, 4, -1.0, 1.0, -1.0, 1.0);
+  const std::vector<double> zero(16, 0.0), bound(16, 1.0);
+  for (double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+    std::vector<double> v(16, 0.1);
+    v[5] = bad;
+    for (int which = 0; which < 4; ++which) {
+      const Certificate c = TangentialProblem::certify_friction(g, which == 0 ? v : zero, which == 1 ? v : zero,
+                                                                which == 2 ? v : zero, which == 3 ? v : zero, bound, 1.0);
+      EXPECT_FALSE(c.worst() <= 1e-6) << "component " << which << " holding " << bad;
+    }
+  }
+  Certificate nan_measure;
+  nan_measure.gap_function = std::nan("");
+  EXPECT_TRUE(std::isinf(nan_measure.worst()));
+}
+
 }  // namespace
 }  // namespace dc

@@ -42,10 +42,23 @@ void CliTest::TearDown() {
   if (!HasFailure()) fs::remove_all(dir_);
 }
 
-CliResult CliTest::run(const std::string& args) const {
+CliResult CliTest::run(const std::string& args) const { return run_prefixed("", args); }
+
+std::string CliTest::write_case(const nlohmann::json& doc, const std::string& name) const {
+  std::ofstream(dir_ / name) << doc.dump(2);
+  return name;
+}
+
+void CliTest::expect_input_error(const std::string& command, const std::string& key) const {
+  const CliResult r = run(command);
+  EXPECT_EQ(r.code, 2) << command << "\nstderr: " << r.err;
+  EXPECT_NE(r.err.find("error: " + key + ":"), std::string::npos) << command << "\nstderr: " << r.err;
+}
+
+CliResult CliTest::run_prefixed(const std::string& prefix, const std::string& args) const {
   const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-  const std::string cmd = "cd " + shell_quote(dir_.string()) + " && " + shell_quote(DYNCONTACT_BINARY) + " " +
-                          args + " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string());
+  const std::string cmd = "cd " + shell_quote(dir_.string()) + " && " + prefix + " " + shell_quote(DYNCONTACT_BINARY) +
+                          " " + args + " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string());
   const int status = std::system(cmd.c_str());
   CliResult r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);

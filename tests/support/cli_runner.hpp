@@ -31,6 +31,13 @@ class CliTest : public ::testing::Test {
   void TearDown() override;
   /// Runs `dyncontact ARGS` (ARGS already shell-quoted) in the test folder.
   CliResult run(const std::string& args) const;
+  /// Runs `PREFIX dyncontact ARGS`: PREFIX holds environment assignments or a launcher
+  /// (e.g. "DYNCONTACT_THREADS=1", "mpirun -n 2").
+  CliResult run_prefixed(const std::string& prefix, const std::string& args) const;
+  /// Writes DOC into the test folder as NAME; returns NAME.
+  std::string write_case(const nlohmann::json& doc, const std::string& name = "case.json") const;
+  /// COMMAND (e.g. "validate case.json") exits 2 and says "error: KEY:" on stderr.
+  void expect_input_error(const std::string& command, const std::string& key) const;
   std::filesystem::path dir_;
 };
 
