@@ -3,6 +3,7 @@
 // with every distinct y, or a single y row: then h depends on x only). Heights at element
 // centres are interpolated bilinearly; an element centre outside the table is an InputError.
 #include "profile.hpp"
+#include "profile_turned.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -134,18 +135,24 @@ void ProfileSpec::quadratic_coefficients(double& A, double& B) const {
 }
 
 std::vector<double> profile_heights(const ProfileSpec& profile, const Grid& grid) {
+  return profile_heights(profile, grid, 0.0);
+}
+
+std::vector<double> profile_heights(const ProfileSpec& profile, const Grid& grid, double heading) {
   std::vector<double> h(grid.size(), 0.0);
   const bool two_d = grid.dimension == 2;
+  // The body's own axes, turned by `heading` about z: (x_b, y_b) = Rz(-heading) (x, y).
+  const double c = two_d ? 1.0 : std::cos(heading), s = two_d ? 0.0 : std::sin(heading);
   if (profile.type == ProfileType::table) {
     const Lattice lattice(profile);
     for (int j = 0; j < grid.ny; ++j)
-      for (int i = 0; i < grid.nx; ++i) h[grid.index(i, j)] = lattice.at(grid.xc(i), grid.yc(j));
+      for (int i = 0; i < grid.nx; ++i)
+        h[grid.index(i, j)] = lattice.at(c * grid.xc(i) + s * grid.yc(j), -s * grid.xc(i) + c * grid.yc(j));
     return h;
   }
   for (int j = 0; j < grid.ny; ++j) {
-    const double y = grid.yc(j);
     for (int i = 0; i < grid.nx; ++i) {
-      const double x = grid.xc(i);
+      const double x = c * grid.xc(i) + s * grid.yc(j), y = -s * grid.xc(i) + c * grid.yc(j);
       double value = 0.0;
       switch (profile.type) {
         case ProfileType::sphere:

@@ -7,6 +7,7 @@
 #include "errors.hpp"
 #include "friction_law.hpp"
 #include "profile.hpp"
+#include "profile_turned.hpp"
 
 namespace dc::dynamics {
 
@@ -46,8 +47,22 @@ void ContactWrench::no_contact() {
   if (tangential_) tangential_->reset();
 }
 
+void ContactWrench::turn_profile(const Eigen::Quaterniond& q) {
+  // (2.6): the gap of the body at its current orientation. Its heading (the body's x axis
+  // turned about z) turns the profile; a sphere or a flat punch is the same at any heading.
+  const ProfileType type = case_.profile.type;
+  if (case_.grid.dimension == 2 || type == ProfileType::sphere || type == ProfileType::flat_punch) return;
+  const Eigen::Vector3d ex = q * Eigen::Vector3d::UnitX();
+  const double heading = std::atan2(ex.y(), ex.x());
+  if (heading == heading_) return;
+  heading_ = heading;
+  heights_ = profile_heights(case_.profile, case_.grid, heading);
+  if (tangential_) tangential_->set_heights(heights_);
+}
+
 Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
   if (tangential_) tangential_->restore(committed_);
+  turn_profile(k.orientation);
   last_ = k;
   const NormalSpec load = normal_load(k, vertical_load);
   lever_ = spec_.normal_model == NormalModel::quasi_static ? spec_.radius : k.position.z();

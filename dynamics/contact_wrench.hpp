@@ -64,6 +64,8 @@ class ContactWrench {
  private:
   NormalSpec normal_load(const StepKinematics& k, double vertical_load) const;
   void no_contact();
+  /// The undeformed gap at the body's heading (recomputed when it changes).
+  void turn_profile(const Eigen::Quaterniond& q);
 
   const Case& case_;
   const DynamicSpec& spec_;
@@ -79,6 +81,7 @@ class ContactWrench {
   ContactState state_;
   StepKinematics last_{};
   double dt_ = 0.0;
+  double heading_ = 0.0;  // of heights_ (rad about z)
   double lever_ = 0.0;  // height of the centre of mass over the contact plane at the last evaluation
   bool steady_ = false;
   bool model_resolved_ = false;
