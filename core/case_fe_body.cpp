@@ -56,8 +56,10 @@ std::array<int, 3> read_elements(const JsonBlock& b) {
 
 FeBodySpec read_fe_body(const json& block, const std::string& case_dir) {
   const JsonBlock b(block, "fe_body");
-  b.allow({"shape", "size", "radius", "height", "mesh", "elements", "contact_size", "material", "regions", "density"});
+  b.allow({"shape", "size", "radius", "height", "mesh", "elements", "contact_size", "material", "regions", "density",
+           "program"});
   FeBodySpec s;
+  s.program = b.choice("program", s.program, {"condensed", "sparse"});
   const std::string shape = b.choice("shape", "hemisphere", {"block", "cylinder", "hemisphere", "mesh"});
   if (shape == "block") {
     s.shape = FeShape::block;
@@ -109,6 +111,9 @@ void read_finite_blocks(const json& document, Case& c, const std::string& base_d
   if (c.tangential && c.tangential->regime == TangentialRegime::rolling)
     throw InputError("tangential.regime", "rolling is not available for a finite body (shift or torsion)");
   if (c.tangential && !c.friction) throw InputError("friction", "required with a tangential block");
+  if (c.tangential && c.fe_body->program == "sparse")
+    throw InputError("fe_body.program", "the sparse form solves the normal problem only: use 'condensed' with a "
+                                        "tangential block");
 }
 
 }  // namespace dc

@@ -30,6 +30,9 @@ struct FeBodySpec {
   double contact_size = 0.0;                  ///< element size at the contact (0: coarse / 4)
   fe::BodyMaterial material;
   std::vector<FeRegionSpec> regions;
+  /// The program of the normal problem: "condensed" (the compliance C_hs + B'K+B / A, every
+  /// backend) or "sparse" (the saddle form over (p, u) with the equilibrium as sparse rows, Ipopt).
+  std::string program = "condensed";
 };
 
 /// Reads the "fe_body" block (key prefix "fe_body"); paths relative to `case_dir`.

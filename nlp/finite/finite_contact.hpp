@@ -5,6 +5,7 @@
 // with the condensed compliance C_halfspace + B'K+B / A (body_compliance.hpp). The normal
 // problem is (4.7) with that compliance: every backend of NormalProblem solves it.
 #include <memory>
+#include <string>
 
 #include "case_fe_body.hpp"
 #include "contact_face.hpp"
@@ -28,6 +29,8 @@ class FiniteContact {
   FiniteContact(const FeBodySpec& body, const Grid& grid, const Elastic& halfspace,
                 OperatorKind kind = OperatorKind::automatic);
 
+  /// The normal problem by the body's `program`: condensed (any backend) or the sparse saddle
+  /// form (Ipopt; saddle_form.hpp), both certified on the condensed program.
   FiniteNormalSolution solve_normal(const NormalSpec& control, const SolverSpec& solver,
                                     const ProgressCallback& progress = {});
   /// The tangential problem (shift, torsion, histories; pressure-dependent friction through
@@ -55,6 +58,11 @@ class FiniteContact {
   std::shared_ptr<const LinearOperator> halfspace_tangential_;
   std::unique_ptr<TangentialProblem> tangential_;
   double mesh_seconds_ = 0.0;
+  std::string program_;
+  std::shared_ptr<const LinearOperator> halfspace_normal_;
+
+  NormalSolution solve_sparse(const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress,
+                              Eigen::VectorXd& body_displacement);
 };
 
 }  // namespace dc
