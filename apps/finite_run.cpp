@@ -100,6 +100,7 @@ FiniteRun solve_finite(const Case& c, bool progress) {
   s["mesh_time_s"] = fc.mesh_seconds();
   s["factorisation_time_s"] = fc.body().factorisation_seconds();
   s["program"] = c.fe_body->program;
+  s["tilt"] = {fc.tilt()[0], fc.tilt()[1]};
   out.run.fields.push_back(std::move(fields));
   out.run.converged = report.status == SolveStatus::converged;
   out.run.interrupted = interrupt_requested();

@@ -12,7 +12,7 @@
 namespace dc {
 
 FiniteContact::FiniteContact(const FeBodySpec& spec, const Grid& grid, const Elastic& halfspace, OperatorKind kind)
-    : grid_(grid), program_(spec.program) {
+    : grid_(grid), program_(spec.program), load_line_(spec.load_line), tilt_(spec.tilt) {
   const auto start = std::chrono::steady_clock::now();
   fe::BodyMesh mesh = fe::mesh_body(spec);
   mesh_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -28,7 +28,7 @@ FiniteContact::FiniteContact(const FeBodySpec& spec, const Grid& grid, const Ela
   halfspace_tangential_ = std::shared_ptr<const LinearOperator>(half_space.tangential(kind));
   body_normal_ = std::make_shared<BodyCompliance>(*body_, *face_, grid_, std::vector<int>{2});
   normal_compliance_ = std::make_shared<SumOperator>(hs, body_normal_);
-  normal_ = std::make_unique<NormalProblem>(normal_compliance_, grid_, face_->heights());
+  normal_ = std::make_unique<NormalProblem>(normal_compliance_, grid_, profile_heights());
 }
 
 FiniteNormalSolution FiniteContact::solve_normal(const NormalSpec& control, const SolverSpec& solver,
@@ -36,6 +36,9 @@ FiniteNormalSolution FiniteContact::solve_normal(const NormalSpec& control, cons
   FiniteNormalSolution out;
   if (program_ == "sparse") {
     out.contact = solve_sparse(control, solver, progress, out.body_displacement);
+  } else if (load_line_) {
+    out.contact = solve_tilted(control, solver, progress);
+    body_normal_->displacement(out.contact.pressure.data(), out.body_displacement);
   } else {
     out.contact = normal_->solve(control, solver, progress);
     body_normal_->displacement(out.contact.pressure.data(), out.body_displacement);
@@ -52,7 +55,7 @@ NormalSolution FiniteContact::solve_sparse(const NormalSpec& control, const Solv
     throw InputError("solver.backend", "the sparse form (fe_body.program 'sparse') is solved by Ipopt: use 'ipopt' or "
                                        "'auto', or the condensed program for '" + solver.backend + "'");
   const auto start = std::chrono::steady_clock::now();
-  const SaddleNormalOutcome o = solve_saddle_normal(*body_, *face_, *halfspace_normal_, grid_, face_->heights(), control,
+  const SaddleNormalOutcome o = solve_saddle_normal(*body_, *face_, *halfspace_normal_, grid_, profile_heights(), control,
                                                     solve_options(solver, progress));
   NormalSolution sol;
   sol.report.requested = solver.backend;
@@ -67,7 +70,7 @@ NormalSolution FiniteContact::solve_sparse(const NormalSpec& control, const Solv
   }
   sol.pressure = o.pressure;
   body_displacement = o.body_displacement;
-  const std::vector<double>& h = face_->heights();
+  const std::vector<double> h = profile_heights();
   const double A = grid_.area();
   // The approach: given, or where the saddle point's own displacement closes the gap (the
   // pressure-weighted mean of w + h over the contact, as for the condensed program).
@@ -102,11 +105,15 @@ NormalSolution FiniteContact::solve_sparse(const NormalSpec& control, const Solv
   return sol;
 }
 
+std::vector<double> FiniteContact::profile_heights() const {
+  return tilted_heights(face_->heights(), grid_, tilt_[0], tilt_[1]);
+}
+
 TangentialProblem& FiniteContact::tangential_problem(const FrictionLaw& friction) {
   if (!tangential_) {
     auto body_t = std::make_shared<BodyCompliance>(*body_, *face_, grid_, std::vector<int>{0, 1});
     auto Ct = std::make_shared<SumOperator>(halfspace_tangential_, body_t);
-    tangential_ = std::make_unique<TangentialProblem>(grid_, normal_compliance_, Ct, face_->heights(), friction);
+    tangential_ = std::make_unique<TangentialProblem>(grid_, normal_compliance_, Ct, profile_heights(), friction);
   }
   return *tangential_;
 }

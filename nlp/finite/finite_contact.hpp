@@ -4,7 +4,9 @@
 // rigid motion), so the minimax (3.14) becomes one convex program over the contact tractions
 // with the condensed compliance C_halfspace + B'K+B / A (body_compliance.hpp). The normal
 // problem is (4.7) with that compliance: every backend of NormalProblem solves it.
+#include <array>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "case_fe_body.hpp"
@@ -21,6 +23,11 @@ struct FiniteNormalSolution {
   Eigen::VectorXd body_displacement;   ///< nodal (x, y, z) relative to the body's rigid motion
   double max_body_displacement = 0.0;  ///< m
 };
+
+/// The heights of a profile tilted by rotations (theta_x, theta_y) about the grid origin: the
+/// approach at (x, y) grows by theta_y x - theta_x y (finite_tilt.cpp).
+std::vector<double> tilted_heights(const std::vector<double>& heights, const Grid& grid, double theta_x,
+                                   double theta_y);
 
 class FiniteContact {
  public:
@@ -45,6 +52,8 @@ class FiniteContact {
   const fe::ContactFace& face() const { return *face_; }
   const Grid& grid() const { return grid_; }
   NormalProblem& normal_problem() { return *normal_; }
+  /// The body's tilt (rad, rotations about x and y): given, or solved with the moment rows.
+  std::array<double, 2> tilt() const { return tilt_; }
   /// Seconds spent meshing (Gmsh) and factorising (CHOLMOD).
   double mesh_seconds() const { return mesh_seconds_; }
 
@@ -60,6 +69,13 @@ class FiniteContact {
   double mesh_seconds_ = 0.0;
   std::string program_;
   std::shared_ptr<const LinearOperator> halfspace_normal_;
+  std::optional<std::array<double, 2>> load_line_;
+  std::array<double, 2> tilt_{0.0, 0.0};
+
+  /// The face's heights tilted by the given tilt.
+  std::vector<double> profile_heights() const;
+  /// The moment rows of a load line (finite_tilt.cpp).
+  NormalSolution solve_tilted(const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress);
 
   NormalSolution solve_sparse(const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress,
                               Eigen::VectorXd& body_displacement);
