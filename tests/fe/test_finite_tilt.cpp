@@ -16,18 +16,24 @@ namespace {
 
 constexpr double kR = 0.01, kE = 2.1e11, kNu = 0.3;
 
+/// A hemisphere 1000 times stiffer than the half-space (rigid against it), contact elements a / 4.
+FeBodySpec stiff_hemisphere(double a) {
+  FeBodySpec s;
+  s.shape = FeShape::hemisphere;
+  s.radius = kR;
+  s.elements = {8, 8, 4};
+  s.contact_size = 0.25 * a;
+  s.material = {fe::isotropic_stiffness(1000.0 * kE, kNu, "test"), 7800.0};
+  return s;
+}
+
 TEST(FiniteTilt, EccentricLoadTiltsAStiffHemisphereByEOverR) {
   const double Es = kE / (1.0 - kNu * kNu);
   const double a_target = 0.06 * kR;
   const double P = 4.0 * Es * a_target * a_target * a_target / (3.0 * kR);
   const auto h = hertz::sphere(kR, P, Es);
   const double e = 0.3 * h.a;
-  FeBodySpec s;
-  s.shape = FeShape::hemisphere;
-  s.radius = kR;
-  s.elements = {8, 8, 4};
-  s.contact_size = 0.25 * h.a;
-  s.material = {fe::isotropic_stiffness(1000.0 * kE, kNu, "test"), 7800.0};  // rigid against the half-space
+  FeBodySpec s = stiff_hemisphere(h.a);
   s.load_line = std::array<double, 2>{e, 0.0};
   const double L = 1.5 * h.a;
   const Grid g = Grid::make(3, 24, 24, -L, L, -L, L);
@@ -61,12 +67,7 @@ TEST(FiniteTilt, GivenTiltShiftsTheContactByRTheta) {
   const double P = 2000.0;
   const auto h = hertz::sphere(kR, P, Es);
   const double theta = 0.3 * h.a / kR;
-  FeBodySpec s;
-  s.shape = FeShape::hemisphere;
-  s.radius = kR;
-  s.elements = {8, 8, 4};
-  s.contact_size = 0.25 * h.a;
-  s.material = {fe::isotropic_stiffness(1000.0 * kE, kNu, "test"), 7800.0};
+  FeBodySpec s = stiff_hemisphere(h.a);
   s.tilt = {0.0, theta};
   const double L = 1.5 * h.a;
   const Grid g = Grid::make(3, 24, 24, -L, L, -L, L);
