@@ -23,6 +23,9 @@
 namespace dc::cli {
 namespace {
 
+/// The "backend" of a finite case that solves the sparse saddle form (a) with Ipopt.
+constexpr const char* kSparseForm = "ipopt-sparse";
+
 struct CompareArgs {
   std::string case_path, out;
   std::vector<std::string> backends{"ipopt", "nlopt", "native"};
@@ -72,25 +75,34 @@ double force_difference(const nlohmann::json& s, const nlohmann::json& ref) {
 
 int run_compare(const CompareArgs& args) {
   if (args.backends.empty()) throw InputError("--backends", "give at least one backend");
-  for (const auto& b : args.backends)
-    if (b != "auto" && b != "ipopt" && b != "nlopt" && b != "native")
-      throw InputError("--backends", "unknown backend '" + b + "' (expected auto, ipopt, nlopt or native)");
   const Case base = load_case(args.case_path, args.sets);
+  const bool finite = base.problem == ProblemKind::finite;
+  for (const auto& b : args.backends)
+    if (b != "auto" && b != "ipopt" && b != "nlopt" && b != "native" && !(finite && b == kSparseForm))
+      throw InputError("--backends", "unknown backend '" + b + "' (expected auto, ipopt, nlopt or native" +
+                                         (finite ? ", or ipopt-sparse for the sparse form)" : ")"));
   if (base.problem == ProblemKind::paper_cylinder)
     throw InputError("problem",
                      "a paper_cylinder case has no contact backend to compare: its traction is the Carter-Poritsky "
                      "closed form (traction_model carter_poritsky) or a creep law tabulated once by the native "
                      "steady-rolling solver (numerical); run it with `dyncontact solve`");
-  if (base.problem != ProblemKind::normal && base.problem != ProblemKind::tangential) not_implemented(base.problem);
-  const bool tangential = base.problem == ProblemKind::tangential;
+  if (base.problem != ProblemKind::normal && base.problem != ProblemKind::tangential && !finite)
+    not_implemented(base.problem);
+  const bool tangential = base.problem == ProblemKind::tangential || (finite && base.tangential);
+  if (tangential && std::find(args.backends.begin(), args.backends.end(), kSparseForm) != args.backends.end())
+    throw InputError("--backends", "the sparse form (ipopt-sparse) solves the normal problem only");
   const std::string dir = prepare_output_dir(base, args.out);
 
   std::vector<Entry> entries;
   for (const auto& b : args.backends) {
     Case c = base;
-    c.solver.backend = b;
+    c.solver.backend = b == kSparseForm ? "ipopt" : b;
+    if (finite) {  // a finite body: the condensed program, or the sparse saddle form by Ipopt
+      c.fe_body->program = b == kSparseForm ? "sparse" : "condensed";
+      c.source["fe_body"]["program"] = c.fe_body->program;
+    }
     c.solver.fallback = false;  // compare the backend itself, not its fallbacks
-    c.source["solver"]["backend"] = b;
+    c.source["solver"]["backend"] = c.solver.backend;
     c.source["solver"]["fallback"] = false;
     Entry e;
     e.backend = b;
@@ -109,7 +121,7 @@ int run_compare(const CompareArgs& args) {
   const Entry* first = entries.front().ok ? &entries.front() : nullptr;
   nlohmann::json list = nlohmann::json::array();
   bool all_converged = true;
-  std::printf("%-8s %-14s %6s %9s %14s %11s %11s %11s %11s", "backend", "status", "iter", "time_s", "objective",
+  std::printf("%-12s %-14s %6s %9s %14s %11s %11s %11s %11s", "backend", "status", "iter", "time_s", "objective",
               "certificate", "d_pressure", "d_approach", "d_force");
   if (tangential) std::printf(" %11s %11s", "d_traction", "d_t_force");
   std::printf("\n");
@@ -129,7 +141,7 @@ int run_compare(const CompareArgs& args) {
       item["certificate"] = nullptr;
       item["summary"] = nullptr;
       list.push_back(item);
-      std::printf("%-8s %-14s %s\n", e.backend.c_str(), "failed", e.error.c_str());
+      std::printf("%-12s %-14s %s\n", e.backend.c_str(), "failed", e.error.c_str());
       continue;
     }
     const SolverReport& r = e.run.report;
@@ -164,7 +176,7 @@ int run_compare(const CompareArgs& args) {
       else std::snprintf(b, sizeof b, "%11.2e", v);
       return std::string(b);
     };
-    std::printf("%-8s %-14s %6d %9.3f %14.6e %11.2e %s %s %s", e.backend.c_str(), to_string(r.status), r.iterations,
+    std::printf("%-12s %-14s %6d %9.3f %14.6e %11.2e %s %s %s", e.backend.c_str(), to_string(r.status), r.iterations,
                 r.time_s, r.objective, r.certificate.worst(), cell(dp).c_str(), cell(da).c_str(), cell(df).c_str());
     if (tangential) std::printf(" %s %s", cell(dt).c_str(), cell(dft).c_str());
     std::printf("\n");
@@ -193,7 +205,9 @@ void add_compare_command(CLI::App& app, int& exit_code) {
       "certificate, summary}) and prints a table: status, iterations, time, objective, the largest certificate "
       "residual, and the largest relative difference of the pressure field, the approach and the force from the "
       "first backend (tangential cases add the traction field and the tangential force: d_traction, d_t_force). "
-      "Use it to check that the backends agree on a new kind of case or to pick the fastest. "
+      "Use it to check that the backends agree on a new kind of case or to pick the fastest. A finite case "
+      "(problem finite) solves the condensed program with each backend; 'ipopt-sparse' adds Ipopt on the sparse "
+      "saddle form (docs/finite.md), certified on the condensed program. "
       "Exit code 0 when every backend converged, 3 otherwise, 2 for bad input.");
   sub->add_option("case", args->case_path, "case file (JSON)")->required();
   sub->add_option("--backends", args->backends, "comma-separated backends (default ipopt,nlopt,native)")

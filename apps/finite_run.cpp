@@ -4,9 +4,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 #include "cli_common.hpp"
 #include "errors.hpp"
+#include "interrupt.hpp"
 
 #ifdef DYNCONTACT_WITH_FE
 #include "fields_writer.hpp"
@@ -51,30 +53,39 @@ nlohmann::json solve_tangential_steps(const Case& c, FiniteContact& fc, Progress
   return summary;
 }
 
-}  // namespace
+/// A solved finite case: what run_static returns, and the body for body.vtu.
+struct FiniteRun {
+  StaticRun run;
+  std::unique_ptr<FiniteContact> contact;
+  Eigen::VectorXd body_u;
+};
 
-int run_finite(const Case& c, const std::string& dir, bool quiet) {
+FiniteRun solve_finite(const Case& c, bool progress) {
   const auto start = std::chrono::steady_clock::now();
-  FiniteContact fc(*c.fe_body, c.grid, c.materials.base,
-                   c.solver.operator_kind == "dense" ? OperatorKind::dense
-                   : c.solver.operator_kind == "fft" ? OperatorKind::fft
-                                                      : OperatorKind::automatic);
-  if (!quiet)
+  FiniteRun out;
+  out.contact = std::make_unique<FiniteContact>(*c.fe_body, c.grid, c.materials.base,
+                                                c.solver.operator_kind == "dense" ? OperatorKind::dense
+                                                : c.solver.operator_kind == "fft" ? OperatorKind::fft
+                                                                                   : OperatorKind::automatic);
+  FiniteContact& fc = *out.contact;
+  if (progress)
     std::fprintf(stderr, "body: %zu dofs, %zu elements; meshed in %.3g s, factorised in %.3g s\n", fc.body().dofs(),
                  fc.body().mesh().elements.size(), fc.mesh_seconds(), fc.body().factorisation_seconds());
-  nlohmann::json s;
+  nlohmann::json& s = out.run.summary;
   StaticFields fields;
-  Eigen::VectorXd body_u;
-  SolverReport report;
+  SolverReport& report = out.run.report;
+  out.run.normal = c.normal;
   {
-    Progress reporter("solving " + c.name + " (" + c.solver.backend + ")", !quiet);
+    Progress reporter("solving " + c.name + " (" + c.solver.backend + ")", progress);
     if (c.tangential) {
-      s = solve_tangential_steps(c, fc, reporter, fields, body_u, report);
+      s = solve_tangential_steps(c, fc, reporter, fields, out.body_u, report);
+      out.run.history = c.tangential->has_history;
+      out.run.normal = c.tangential->has_history ? c.tangential->history.back().normal : c.tangential->load.normal;
     } else {
       FiniteNormalSolution sol = fc.solve_normal(c.normal, c.solver, reporter.callback());
       fields = normal_fields(sol.contact.pressure, std::max(c.solver.certificate_tol, 1e-12));
       s = normal_summary(c, sol.contact, fields);
-      body_u = sol.body_displacement;
+      out.body_u = sol.body_displacement;
       report = sol.contact.report;
     }
     reporter.finish();
@@ -82,19 +93,36 @@ int run_finite(const Case& c, const std::string& dir, bool quiet) {
   report.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   s["solver"]["time_s"] = report.time_s;
   double max_u = 0.0;
-  for (Eigen::Index k = 0; k + 2 < body_u.size(); k += 3) max_u = std::max(max_u, body_u.segment<3>(k).norm());
+  for (Eigen::Index k = 0; k + 2 < out.body_u.size(); k += 3) max_u = std::max(max_u, out.body_u.segment<3>(k).norm());
   s["body_dofs"] = fc.body().dofs();
   s["body_elements"] = fc.body().mesh().elements.size();
   s["max_body_displacement"] = max_u;
   s["mesh_time_s"] = fc.mesh_seconds();
   s["factorisation_time_s"] = fc.body().factorisation_seconds();
+  s["program"] = c.fe_body->program;
+  s["tilt"] = {fc.tilt()[0], fc.tilt()[1]};
+  out.run.fields.push_back(std::move(fields));
+  out.run.converged = report.status == SolveStatus::converged;
+  out.run.interrupted = interrupt_requested();
+  return out;
+}
+
+}  // namespace
+
+StaticRun run_finite_static(const Case& c, bool progress) { return solve_finite(c, progress).run; }
+
+int run_finite(const Case& c, const std::string& dir, bool quiet) {
+  FiniteRun f = solve_finite(c, !quiet);
+  nlohmann::json& s = f.run.summary;
+  const SolverReport& report = f.run.report;
+  const FiniteContact& fc = *f.contact;
   nlohmann::json files = {{"summary", "summary.json"}, {"body", "body.vtu"}};
   if (c.output.fields) {
-    write_fields(dir, c.grid, fields);
+    write_fields(dir, c.grid, f.run.fields.back());
     files["fields"] = "fields.csv";
   }
-  write_body_vtu((std::filesystem::path(dir) / "body.vtu").string(), fc.body().mesh(), body_u,
-                 fc.body().element_stress(body_u));
+  write_body_vtu((std::filesystem::path(dir) / "body.vtu").string(), fc.body().mesh(), f.body_u,
+                 fc.body().element_stress(f.body_u));
   s["files"] = files;
   const std::string summary_path = write_summary(dir, s);
   if (!quiet) {
@@ -102,7 +130,7 @@ int run_finite(const Case& c, const std::string& dir, bool quiet) {
                 report.backend.c_str(), report.iterations, report.time_s, report.certificate.worst());
     std::printf("  %-16s %-12.5g N\n  %-16s %-12.5g m\n  %-16s %-12.5g Pa\n  %-16s %-12.5g m\n", "normal force",
                 s["normal_force"].get<double>(), "approach", s["approach"].get<double>(), "max pressure",
-                s["max_pressure"].get<double>(), "body displ.", max_u);
+                s["max_pressure"].get<double>(), "body displ.", s["max_body_displacement"].get<double>());
     if (c.tangential)
       std::printf("  %-16s [%.5g, %.5g] N, moment %.5g N m\n", "tangential force",
                   s["tangential_force"][0].get<double>(), s["tangential_force"][1].get<double>(),
@@ -122,10 +150,14 @@ int run_finite(const Case& c, const std::string& dir, bool quiet) {
 
 bool finite_supported() { return false; }
 
-int run_finite(const Case&, const std::string&, bool) {
+[[noreturn]] void no_finite_support() {
   throw InputError("problem", "'finite' needs finite-element support: this build has none (install libgmsh-dev and "
                               "libsuitesparse-dev, then reconfigure with -DDYNCONTACT_WITH_FE=ON)");
 }
+
+int run_finite(const Case&, const std::string&, bool) { no_finite_support(); }
+
+StaticRun run_finite_static(const Case&, bool) { no_finite_support(); }
 
 #endif
 

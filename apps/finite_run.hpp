@@ -5,6 +5,7 @@
 #include <string>
 
 #include "case_model.hpp"
+#include "tangential_run.hpp"
 
 namespace dc::cli {
 
@@ -14,5 +15,9 @@ bool finite_supported();
 /// Solves and writes into `dir`; returns the exit code. Without finite-element support in
 /// this build, an input error saying so.
 int run_finite(const Case& c, const std::string& dir, bool quiet);
+
+/// Solves without writing (what `compare` compares): the summary as summary.json has it,
+/// without "files".
+StaticRun run_finite_static(const Case& c, bool progress);
 
 }  // namespace dc::cli

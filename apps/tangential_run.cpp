@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "finite_run.hpp"
 #include "interrupt.hpp"
 #include "normal_run.hpp"
 #include "progress.hpp"
@@ -147,6 +148,7 @@ TangentialRun run_tangential(const Case& c, bool progress) {
 }
 
 StaticRun run_static(const Case& c, bool progress) {
+  if (c.problem == ProblemKind::finite) return run_finite_static(c, progress);
   StaticRun out;
   if (c.problem == ProblemKind::tangential) {
     TangentialRun run = run_tangential(c, progress);

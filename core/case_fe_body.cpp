@@ -56,8 +56,10 @@ std::array<int, 3> read_elements(const JsonBlock& b) {
 
 FeBodySpec read_fe_body(const json& block, const std::string& case_dir) {
   const JsonBlock b(block, "fe_body");
-  b.allow({"shape", "size", "radius", "height", "mesh", "elements", "contact_size", "material", "regions", "density"});
+  b.allow({"shape", "size", "radius", "height", "mesh", "elements", "contact_size", "material", "regions", "density",
+           "program", "tilt", "load_line"});
   FeBodySpec s;
+  s.program = b.choice("program", s.program, {"condensed", "sparse"});
   const std::string shape = b.choice("shape", "hemisphere", {"block", "cylinder", "hemisphere", "mesh"});
   if (shape == "block") {
     s.shape = FeShape::block;
@@ -81,6 +83,15 @@ FeBodySpec read_fe_body(const json& block, const std::string& case_dir) {
     if (!std::filesystem::is_regular_file(s.mesh_file))
       throw InputError(b.key("mesh"), "file '" + s.mesh_file + "' not found");
   }
+  if (b.has("tilt") && b.has("load_line"))
+    throw InputError(b.key("load_line"), "give either a tilt or a load line (whose moment rows make the tilt free)");
+  for (const char* key : {"tilt", "load_line"})
+    if (b.has(key)) {
+      const auto v = b.numbers(key);
+      if (v.size() != 2) throw InputError(b.key(key), "needs two numbers [x, y]");
+      if (std::string(key) == "tilt") s.tilt = {v[0], v[1]};
+      else s.load_line = std::array<double, 2>{v[0], v[1]};
+    }
   s.elements = read_elements(b);
   s.contact_size = b.has("contact_size") ? b.positive("contact_size") : 0.0;
   const double density = b.positive("density");
@@ -109,6 +120,12 @@ void read_finite_blocks(const json& document, Case& c, const std::string& base_d
   if (c.tangential && c.tangential->regime == TangentialRegime::rolling)
     throw InputError("tangential.regime", "rolling is not available for a finite body (shift or torsion)");
   if (c.tangential && !c.friction) throw InputError("friction", "required with a tangential block");
+  if (c.fe_body->load_line && (c.tangential || c.fe_body->program == "sparse" || c.normal.control != Control::force))
+    throw InputError("fe_body.load_line", "the moment rows of a load line go with a normal force on the condensed "
+                                          "program (no tangential block, no approach, program 'condensed')");
+  if (c.tangential && c.fe_body->program == "sparse")
+    throw InputError("fe_body.program", "the sparse form solves the normal problem only: use 'condensed' with a "
+                                        "tangential block");
 }
 
 }  // namespace dc

@@ -2,6 +2,7 @@
 // The finite-element body of a case (CASES.md "fe_body"): shape or mesh file, mesh sizes,
 // materials per region (nonhomogeneous), density. Read from JSON here; core/fe builds it.
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,14 @@ struct FeBodySpec {
   double contact_size = 0.0;                  ///< element size at the contact (0: coarse / 4)
   fe::BodyMaterial material;
   std::vector<FeRegionSpec> regions;
+  /// The program of the normal problem: "condensed" (the compliance C_hs + B'K+B / A, every
+  /// backend) or "sparse" (the saddle form over (p, u) with the equilibrium as sparse rows, Ipopt).
+  std::string program = "condensed";
+  /// The body's tilt: given rotations about x and y (rad, about the grid origin), or free with
+  /// the moment rows of the rigid motion when `load_line` gives where the normal force's line of
+  /// action crosses the plane (x, y in m; docs/finite.md). Neither: the mean rotation is held.
+  std::array<double, 2> tilt{0.0, 0.0};
+  std::optional<std::array<double, 2>> load_line;
 };
 
 /// Reads the "fe_body" block (key prefix "fe_body"); paths relative to `case_dir`.

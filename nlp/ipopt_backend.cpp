@@ -17,19 +17,14 @@
 #include <IpSolveStatistics.hpp>
 #include <IpTNLP.hpp>
 
+#include "ipopt_shared.hpp"
 #include "quadratic_program.hpp"
 #include "interrupt.hpp"
 
 namespace dc {
-namespace {
 
-using Ipopt::Index;
-using Ipopt::Number;
-
-constexpr Number kIpoptInf = 1e19;  // Ipopt's default nlp_{lower,upper}_bound_inf
-
-const char* status_name(Ipopt::ApplicationReturnStatus status) {
-  switch (status) {
+std::string ipopt_status_name(int code) {
+  switch (static_cast<Ipopt::ApplicationReturnStatus>(code)) {
     case Ipopt::Solve_Succeeded: return "Solve_Succeeded";
     case Ipopt::Solved_To_Acceptable_Level: return "Solved_To_Acceptable_Level";
     case Ipopt::Infeasible_Problem_Detected: return "Infeasible_Problem_Detected";
@@ -52,6 +47,18 @@ const char* status_name(Ipopt::ApplicationReturnStatus status) {
   }
   return "unknown Ipopt status";
 }
+
+std::mutex& ipopt_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+namespace {
+
+using Ipopt::Index;
+using Ipopt::Number;
+
+constexpr Number kIpoptInf = 1e19;  // Ipopt's default nlp_{lower,upper}_bound_inf
 
 double bound_or(const std::vector<double>& bounds, int i, double fallback) {
   return bounds.empty() ? fallback : bounds[static_cast<std::size_t>(i)];
@@ -264,10 +271,8 @@ SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& op
     return out;
   }
   try {
-    // Ipopt with MUMPS is not thread-safe: one Ipopt application at a time in the process
-    // (threaded tables); the lock outlives the application and its linear solver.
-    static std::mutex ipopt_mutex;
-    const std::lock_guard<std::mutex> lock(ipopt_mutex);
+    // One Ipopt application at a time (threaded tables); the lock outlives the application.
+    const std::lock_guard<std::mutex> lock(ipopt_mutex());
     if (options.hessian != "auto" && options.hessian != "exact" && options.hessian != "limited-memory") {
       out.message = "Ipopt: unknown hessian option '" + options.hessian + "'";
       return out;
@@ -298,7 +303,7 @@ SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& op
     if (status == Ipopt::Solve_Succeeded) status = app->OptimizeTNLP(Ipopt::GetRawPtr(tnlp));
 
     out.success = status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;
-    out.message = std::string("Ipopt: ") + status_name(status);
+    out.message = "Ipopt: " + ipopt_status_name(status);
     out.iterations = tnlp->iterations_;
     if (tnlp->finalized_) {
       out.x = tnlp->x_;

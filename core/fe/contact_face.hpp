@@ -28,6 +28,8 @@ class ContactFace {
   void add_forces(const double* traction, int component, double scale, Eigen::VectorXd& F) const;
   /// w_k = (B'u_component)_k / A: the mean displacement component over each grid element.
   void mean_displacement(const Eigen::VectorXd& u, int component, double* w) const;
+  /// B' (grid elements x nodes): row k holds int_{element k} N_i dA.
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& transfer() const { return Bt_; }
   std::size_t face_triangles() const { return n_triangles_; }
 
  private:

@@ -74,8 +74,8 @@ void ElasticBody::assemble() {
   R_.resize(n, 6);
   for (std::size_t k = 0; k < mesh_.nodes.size(); ++k)
     R_.block(3 * static_cast<Eigen::Index>(k), 0, 3, 6) = rigid_modes_at(mesh_.nodes[k], centre_);
-  const Eigen::Matrix<double, 6, 6> RMR = R_.transpose() * MR_;
-  RMR_inv_ = RMR.inverse();
+  RMR_ = R_.transpose() * MR_;
+  RMR_inv_ = RMR_.inverse();
 }
 
 void ElasticBody::choose_supports() {
@@ -109,7 +109,8 @@ void ElasticBody::choose_supports() {
 
 void ElasticBody::factorise() {
   // Ks: the supported dofs replaced by identity rows and columns (lower half stored).
-  Eigen::SparseMatrix<double> Ks = K_;
+  Ks_ = K_;
+  Eigen::SparseMatrix<double>& Ks = Ks_;
   std::vector<char> held(dofs(), 0);
   for (int s : supports_) held[s] = 1;
   double diag_scale = 0.0;

@@ -37,6 +37,12 @@ class ElasticBody {
   void deform(const Eigen::VectorXd& F, Eigen::VectorXd& u) const;
   /// The rigid modes (3n x 6: translations x, y, z, rotations about x, y, z at the centre of mass).
   const Eigen::MatrixXd& rigid_modes() const { return R_; }
+  /// The pieces of deform() for programs that keep the equilibrium as sparse equalities
+  /// (nlp/finite/saddle_form.*): Ks (lower half), the six held dofs, M R and R'M R.
+  const Eigen::SparseMatrix<double>& supported_stiffness() const { return Ks_; }
+  const std::vector<int>& supports() const { return supports_; }
+  const Eigen::MatrixXd& mass_rigid_modes() const { return MR_; }
+  const Eigen::Matrix<double, 6, 6>& rigid_mass() const { return RMR_; }
   /// Stress (Voigt, Pa) at each element's centroid for a displacement field.
   std::vector<Eigen::Matrix<double, 6, 1>> element_stress(const Eigen::VectorXd& u) const;
 
@@ -47,9 +53,9 @@ class ElasticBody {
 
   BodyMesh mesh_;
   std::vector<BodyMaterial> materials_;
-  Eigen::SparseMatrix<double> K_;
+  Eigen::SparseMatrix<double> K_, Ks_;  // lower halves: free and supported stiffness
   Eigen::MatrixXd R_, MR_;     // rigid modes and the mass matrix times them
-  Eigen::Matrix<double, 6, 6> RMR_inv_;
+  Eigen::Matrix<double, 6, 6> RMR_, RMR_inv_;
   std::vector<int> supports_;  // six dofs held in Ks
   double mass_ = 0.0;
   Eigen::Vector3d centre_ = Eigen::Vector3d::Zero();

@@ -4,7 +4,10 @@
 // rigid motion), so the minimax (3.14) becomes one convex program over the contact tractions
 // with the condensed compliance C_halfspace + B'K+B / A (body_compliance.hpp). The normal
 // problem is (4.7) with that compliance: every backend of NormalProblem solves it.
+#include <array>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "case_fe_body.hpp"
 #include "contact_face.hpp"
@@ -21,6 +24,11 @@ struct FiniteNormalSolution {
   double max_body_displacement = 0.0;  ///< m
 };
 
+/// The heights of a profile tilted by rotations (theta_x, theta_y) about the grid origin: the
+/// approach at (x, y) grows by theta_y x - theta_x y (finite_tilt.cpp).
+std::vector<double> tilted_heights(const std::vector<double>& heights, const Grid& grid, double theta_x,
+                                   double theta_y);
+
 class FiniteContact {
  public:
   /// Meshes and factorises the body once; `halfspace` is the substrate (the body's own
@@ -28,6 +36,8 @@ class FiniteContact {
   FiniteContact(const FeBodySpec& body, const Grid& grid, const Elastic& halfspace,
                 OperatorKind kind = OperatorKind::automatic);
 
+  /// The normal problem by the body's `program`: condensed (any backend) or the sparse saddle
+  /// form (Ipopt; saddle_form.hpp), both certified on the condensed program.
   FiniteNormalSolution solve_normal(const NormalSpec& control, const SolverSpec& solver,
                                     const ProgressCallback& progress = {});
   /// The tangential problem (shift, torsion, histories; pressure-dependent friction through
@@ -42,6 +52,8 @@ class FiniteContact {
   const fe::ContactFace& face() const { return *face_; }
   const Grid& grid() const { return grid_; }
   NormalProblem& normal_problem() { return *normal_; }
+  /// The body's tilt (rad, rotations about x and y): given, or solved with the moment rows.
+  std::array<double, 2> tilt() const { return tilt_; }
   /// Seconds spent meshing (Gmsh) and factorising (CHOLMOD).
   double mesh_seconds() const { return mesh_seconds_; }
 
@@ -55,6 +67,18 @@ class FiniteContact {
   std::shared_ptr<const LinearOperator> halfspace_tangential_;
   std::unique_ptr<TangentialProblem> tangential_;
   double mesh_seconds_ = 0.0;
+  std::string program_;
+  std::shared_ptr<const LinearOperator> halfspace_normal_;
+  std::optional<std::array<double, 2>> load_line_;
+  std::array<double, 2> tilt_{0.0, 0.0};
+
+  /// The face's heights tilted by the given tilt.
+  std::vector<double> profile_heights() const;
+  /// The moment rows of a load line (finite_tilt.cpp).
+  NormalSolution solve_tilted(const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress);
+
+  NormalSolution solve_sparse(const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress,
+                              Eigen::VectorXd& body_displacement);
 };
 
 }  // namespace dc

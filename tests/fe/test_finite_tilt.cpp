@@ -1,0 +1,86 @@
+// The moment rows of the body's rigid motion: a stiff hemisphere pressed off its axis tilts
+// until the pressure's centre lies on the load's line of action. For a rigid sphere the tilt
+// theta_y turns the profile r^2 / 2R into ((x - R theta_y)^2 + y^2) / 2R + const: the Hertz
+// contact, centred at x = R theta_y, so the tilt is e / R for a load line at x = e, and the
+// peak pressure is Hertz's.
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "finite_contact.hpp"
+#include "hertz.hpp"
+
+namespace dc {
+namespace {
+
+constexpr double kR = 0.01, kE = 2.1e11, kNu = 0.3;
+
+/// A hemisphere 1000 times stiffer than the half-space (rigid against it), contact elements a / 4.
+FeBodySpec stiff_hemisphere(double a) {
+  FeBodySpec s;
+  s.shape = FeShape::hemisphere;
+  s.radius = kR;
+  s.elements = {8, 8, 4};
+  s.contact_size = 0.25 * a;
+  s.material = {fe::isotropic_stiffness(1000.0 * kE, kNu, "test"), 7800.0};
+  return s;
+}
+
+TEST(FiniteTilt, EccentricLoadTiltsAStiffHemisphereByEOverR) {
+  const double Es = kE / (1.0 - kNu * kNu);
+  const double a_target = 0.06 * kR;
+  const double P = 4.0 * Es * a_target * a_target * a_target / (3.0 * kR);
+  const auto h = hertz::sphere(kR, P, Es);
+  const double e = 0.3 * h.a;
+  FeBodySpec s = stiff_hemisphere(h.a);
+  s.load_line = std::array<double, 2>{e, 0.0};
+  const double L = 1.5 * h.a;
+  const Grid g = Grid::make(3, 24, 24, -L, L, -L, L);
+  FiniteContact fc(s, g, Elastic::from_E_nu(kE, kNu));
+  SolverSpec solver;
+  solver.backend = "native";
+  const FiniteNormalSolution sol = fc.solve_normal({Control::force, P}, solver);
+  ASSERT_EQ(sol.contact.report.status, SolveStatus::converged) << sol.contact.report.message;
+  // The moment rows hold: the pressure's centre is on the load line (to the certificate).
+  double mx = 0.0, my = 0.0;
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      mx += sol.contact.pressure[g.index(i, j)] * g.area() * g.xc(i);
+      my += sol.contact.pressure[g.index(i, j)] * g.area() * g.yc(j);
+    }
+  EXPECT_NEAR(mx / P, e, solver.certificate_tol * h.a);
+  EXPECT_NEAR(my / P, 0.0, solver.certificate_tol * h.a);
+  // The tilt: e / R within the 3 % of the stiff-hemisphere Hertz test (mesh and grid).
+  EXPECT_NEAR(fc.tilt()[1], e / kR, 0.03 * e / kR);
+  EXPECT_NEAR(fc.tilt()[0], 0.0, 1e-3 * e / kR);
+  // The contact is Hertz's, shifted: peak pressure p0 within 3 %, its element within one cell of x = e.
+  const auto peak = std::max_element(sol.contact.pressure.begin(), sol.contact.pressure.end());
+  EXPECT_NEAR(*peak, h.p0, 0.03 * h.p0);
+  const auto k = static_cast<std::size_t>(peak - sol.contact.pressure.begin());
+  EXPECT_NEAR(g.xc(static_cast<int>(k % static_cast<std::size_t>(g.nx))), e, g.dx);
+}
+
+TEST(FiniteTilt, GivenTiltShiftsTheContactByRTheta) {
+  // The same geometry with the tilt given instead: the pressure's centre at x = R theta_y.
+  const double Es = kE / (1.0 - kNu * kNu);
+  const double P = 2000.0;
+  const auto h = hertz::sphere(kR, P, Es);
+  const double theta = 0.3 * h.a / kR;
+  FeBodySpec s = stiff_hemisphere(h.a);
+  s.tilt = {0.0, theta};
+  const double L = 1.5 * h.a;
+  const Grid g = Grid::make(3, 24, 24, -L, L, -L, L);
+  FiniteContact fc(s, g, Elastic::from_E_nu(kE, kNu));
+  SolverSpec solver;
+  solver.backend = "native";
+  const FiniteNormalSolution sol = fc.solve_normal({Control::force, P}, solver);
+  ASSERT_EQ(sol.contact.report.status, SolveStatus::converged) << sol.contact.report.message;
+  double mx = 0.0;
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) mx += sol.contact.pressure[g.index(i, j)] * g.area() * g.xc(i);
+  EXPECT_NEAR(mx / P, kR * theta, 0.03 * kR * theta);
+}
+
+}  // namespace
+}  // namespace dc
