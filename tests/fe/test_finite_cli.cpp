@@ -55,6 +55,15 @@ TEST_F(FiniteCli, BadBodyInputNamesTheKey) {
   expect_rejected([](json& d) { d["fe_body"]["colour"] = "red"; }, "fe_body.colour");
   expect_rejected([](json& d) { d.erase("fe_body"); }, "fe_body");
   expect_rejected([](json& d) { d["profile"] = {{"type", "sphere"}, {"radius", 0.01}}; }, "profile");
+  expect_rejected([](json& d) { d["fe_body"]["program"] = "dense"; }, "fe_body.program");
+  expect_rejected([](json& d) { d["fe_body"]["load_line"] = {0.0, 0.0}; d["fe_body"]["tilt"] = {0.0, 0.0}; },
+                  "fe_body.load_line");
+  expect_rejected([](json& d) { d["fe_body"]["load_line"] = {1e-4}; }, "fe_body.load_line");
+  expect_rejected([](json& d) { d["fe_body"]["load_line"] = {1e-4, 0.0}; d["normal"] = {{"approach", 1e-6}}; },
+                  "fe_body.load_line");
+  // The sparse form is Ipopt's: another backend is an input error, not a silent change of program.
+  expect_rejected([](json& d) { d["fe_body"]["program"] = "sparse"; d["solver"]["backend"] = "native"; },
+                  "solver.backend");
   // The grid far from the body: no face over it.
   expect_rejected([](json& d) { d["grid"]["x"] = {0.5, 0.6}; }, "fe_body");
 }
