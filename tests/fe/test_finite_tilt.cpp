@@ -4,7 +4,9 @@
 // contact, centred at x = R theta_y, so the tilt is e / R for a load line at x = e, and the
 // peak pressure is Hertz's.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -27,6 +29,17 @@ FeBodySpec stiff_hemisphere(double a) {
   return s;
 }
 
+/// The first moments of the pressure about the axes through the origin: sum p A x, sum p A y.
+std::array<double, 2> pressure_moments(const std::vector<double>& p, const Grid& g) {
+  std::array<double, 2> m{0.0, 0.0};
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      m[0] += p[g.index(i, j)] * g.area() * g.xc(i);
+      m[1] += p[g.index(i, j)] * g.area() * g.yc(j);
+    }
+  return m;
+}
+
 TEST(FiniteTilt, EccentricLoadTiltsAStiffHemisphereByEOverR) {
   const double Es = kE / (1.0 - kNu * kNu);
   const double a_target = 0.06 * kR;
@@ -43,12 +56,7 @@ TEST(FiniteTilt, EccentricLoadTiltsAStiffHemisphereByEOverR) {
   const FiniteNormalSolution sol = fc.solve_normal({Control::force, P}, solver);
   ASSERT_EQ(sol.contact.report.status, SolveStatus::converged) << sol.contact.report.message;
   // The moment rows hold: the pressure's centre is on the load line (to the certificate).
-  double mx = 0.0, my = 0.0;
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) {
-      mx += sol.contact.pressure[g.index(i, j)] * g.area() * g.xc(i);
-      my += sol.contact.pressure[g.index(i, j)] * g.area() * g.yc(j);
-    }
+  const auto [mx, my] = pressure_moments(sol.contact.pressure, g);
   EXPECT_NEAR(mx / P, e, solver.certificate_tol * h.a);
   EXPECT_NEAR(my / P, 0.0, solver.certificate_tol * h.a);
   // The tilt: e / R within the 3 % of the stiff-hemisphere Hertz test (mesh and grid).
@@ -76,9 +84,7 @@ TEST(FiniteTilt, GivenTiltShiftsTheContactByRTheta) {
   solver.backend = "native";
   const FiniteNormalSolution sol = fc.solve_normal({Control::force, P}, solver);
   ASSERT_EQ(sol.contact.report.status, SolveStatus::converged) << sol.contact.report.message;
-  double mx = 0.0;
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) mx += sol.contact.pressure[g.index(i, j)] * g.area() * g.xc(i);
+  const double mx = pressure_moments(sol.contact.pressure, g)[0];
   EXPECT_NEAR(mx / P, kR * theta, 0.03 * kR * theta);
 }
 
