@@ -40,6 +40,20 @@ std::array<double, 2> pressure_moments(const std::vector<double>& p, const Grid&
   return m;
 }
 
+/// The body `s` pressed by P on a 24 x 24 grid over 1.5 a, solved by the native backend.
+struct TiltRun {
+  Grid grid;
+  FiniteContact contact;
+  FiniteNormalSolution solution;
+  TiltRun(const FeBodySpec& s, double a, double P)
+      : grid(Grid::make(3, 24, 24, -1.5 * a, 1.5 * a, -1.5 * a, 1.5 * a)),
+        contact(s, grid, Elastic::from_E_nu(kE, kNu)) {
+    SolverSpec solver;
+    solver.backend = "native";
+    solution = contact.solve_normal({Control::force, P}, solver);
+  }
+};
+
 TEST(FiniteTilt, EccentricLoadTiltsAStiffHemisphereByEOverR) {
   const double Es = kE / (1.0 - kNu * kNu);
   const double a_target = 0.06 * kR;
@@ -48,12 +62,11 @@ TEST(FiniteTilt, EccentricLoadTiltsAStiffHemisphereByEOverR) {
   const double e = 0.3 * h.a;
   FeBodySpec s = stiff_hemisphere(h.a);
   s.load_line = std::array<double, 2>{e, 0.0};
-  const double L = 1.5 * h.a;
-  const Grid g = Grid::make(3, 24, 24, -L, L, -L, L);
-  FiniteContact fc(s, g, Elastic::from_E_nu(kE, kNu));
-  SolverSpec solver;
-  solver.backend = "native";
-  const FiniteNormalSolution sol = fc.solve_normal({Control::force, P}, solver);
+  TiltRun run(s, h.a, P);
+  const Grid& g = run.grid;
+  FiniteContact& fc = run.contact;
+  const FiniteNormalSolution& sol = run.solution;
+  const SolverSpec solver;
   ASSERT_EQ(sol.contact.report.status, SolveStatus::converged) << sol.contact.report.message;
   // The moment rows hold: the pressure's centre is on the load line (to the certificate).
   const auto [mx, my] = pressure_moments(sol.contact.pressure, g);
@@ -77,12 +90,9 @@ TEST(FiniteTilt, GivenTiltShiftsTheContactByRTheta) {
   const double theta = 0.3 * h.a / kR;
   FeBodySpec s = stiff_hemisphere(h.a);
   s.tilt = {0.0, theta};
-  const double L = 1.5 * h.a;
-  const Grid g = Grid::make(3, 24, 24, -L, L, -L, L);
-  FiniteContact fc(s, g, Elastic::from_E_nu(kE, kNu));
-  SolverSpec solver;
-  solver.backend = "native";
-  const FiniteNormalSolution sol = fc.solve_normal({Control::force, P}, solver);
+  TiltRun run(s, h.a, P);
+  const Grid& g = run.grid;
+  const FiniteNormalSolution& sol = run.solution;
   ASSERT_EQ(sol.contact.report.status, SolveStatus::converged) << sol.contact.report.message;
   const double mx = pressure_moments(sol.contact.pressure, g)[0];
   EXPECT_NEAR(mx / P, kR * theta, 0.03 * kR * theta);
