@@ -307,6 +307,10 @@ PaperCylinderOutcome simulate_paper_cylinder(const Case& c, bool quiet) {
   json runs = json::array();
   for (std::size_t k = 0; k < units.size() && !out.interrupted; ++k) {
     const json& u = units[k];
+    if (u.is_null()) {  // not run to its end (interrupted): the runs before it
+      out.interrupted = true;
+      break;
+    }
     if (u.contains("error")) {  // a run that failed (e.g. its numerical traction): reported, the others kept
       runs.push_back({{"label", specs[k].label}, {"value", specs[k].value}, {"status", "failed"},
                       {"message", u["error"]}, {"steps", 0}, {"timeseries", nullptr}});

@@ -13,6 +13,8 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
+#include "interrupt.hpp"
+#include "interrupt_handler.hpp"
 #include "progress.hpp"
 #include "table_output.hpp"
 #include "table_points.hpp"
@@ -54,15 +56,26 @@ int run_table(const TableArgs& args, bool root) {
   progress.finish();
   if (!root) return kExitOk;
 
+  // Interrupted: the lines before the first one not finished (whole lines, in table order).
   std::vector<TableRow> rows;
-  for (std::size_t l = 0; l < lines.size(); ++l) {
+  bool interrupted = false;
+  for (std::size_t l = 0; l < lines.size() && !interrupted; ++l) {
+    interrupted = lines[l].is_null();
+    if (interrupted) break;
     const std::vector<TableRow> r = rows_from_line(axes, l, lines[l]);
     rows.insert(rows.end(), r.begin(), r.end());
   }
   namespace fs = std::filesystem;
   const std::string csv = (fs::path(dir) / "table.csv").string();
   write_text_file(csv, table_csv(rows));
-  write_text_file((fs::path(dir) / "table.json").string(), table_json(c, axes, rows).dump(2) + "\n");
+  nlohmann::json meta = table_json(c, axes, rows);
+  meta["status"] = interrupted ? "interrupted" : "completed";
+  write_text_file((fs::path(dir) / "table.json").string(), meta.dump(2) + "\n");
+  if (interrupted) {  // the data so far, no figures
+    std::cerr << "interrupted after " << rows.size() << " of " << axes.size() << " points; wrote " << csv
+              << ", table.json\n";
+    return interrupted_exit_code();
+  }
   const std::vector<std::string> images = c.output.plots ? table_plots(dir, c, axes, rows) : std::vector<std::string>{};
 
   std::size_t bad = 0;

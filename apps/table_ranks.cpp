@@ -15,6 +15,7 @@
 
 #include "cli_common.hpp"
 #include "errors.hpp"
+#include "interrupt.hpp"
 
 namespace dc::cli {
 namespace {
@@ -39,6 +40,8 @@ int local_threads(std::size_t units) {
 nlohmann::json run_unit(const std::function<nlohmann::json(std::size_t)>& work, std::size_t unit) {
   try {
     return work(unit);
+  } catch (const Interrupted&) {  // not finished: no result
+    return nlohmann::json();
   } catch (const std::exception& e) {
     return {{"error", e.what()}};
   } catch (...) {
@@ -46,13 +49,19 @@ nlohmann::json run_unit(const std::function<nlohmann::json(std::size_t)>& work, 
   }
 }
 
-/// The next unit to hand out (local threads and remote ranks alike), -1 when none is left.
+/// The next unit to hand out (local threads and remote ranks alike), -1 when none is left or
+/// an interrupt was requested.
 class UnitQueue {
  public:
   explicit UnitQueue(std::size_t units) : units_(units) {}
   long long take() {
     std::lock_guard<std::mutex> lock(mutex_);
-    return next_ < units_ ? static_cast<long long>(next_++) : -1;
+    return next_ < units_ && !interrupt_requested() ? static_cast<long long>(next_++) : -1;
+  }
+  /// Units handed out so far (fixed once an interrupt is requested).
+  std::size_t handed_out() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return next_;
   }
 
  private:
@@ -201,7 +210,11 @@ std::vector<nlohmann::json> run_distributed(std::size_t units, const std::functi
   int remote_active = size - 1;
   std::size_t finished = 0, reported = 0;
   if (done) done(0, units);
-  while (finished < units || remote_active > 0) {
+  // Until every unit is finished, or after an interrupt every unit handed out.
+  const auto all_finished = [&] {
+    return finished == units || (interrupt_requested() && finished == queue.handed_out());
+  };
+  while (!all_finished() || remote_active > 0) {
 #ifdef DYNCONTACT_WITH_MPI
     if (size > 1) remote_active -= serve_requests(queue, gathered);
 #endif

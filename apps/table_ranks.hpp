@@ -35,7 +35,9 @@ int report_input_errors_on_root(const std::function<int()>& command);
 /// Runs work(u) for every u in [0, units). Returns, on rank 0, the results in unit order; on
 /// other ranks an empty vector. `done(finished, units)` is called on rank 0 (from this thread)
 /// as results arrive. `work` must not throw (a unit reports its own failure in its result);
-/// if it does, the message becomes the unit's result {"error": message}.
+/// if it does, the message becomes the unit's result {"error": message}. Once an interrupt is
+/// requested (core/interrupt.hpp) no further unit starts: a unit that was interrupted
+/// (dc::Interrupted) or never started has a null result.
 /// Under a launcher with several ranks, a build without MPI throws InputError (every rank
 /// would run the whole job alone).
 std::vector<nlohmann::json> run_distributed(std::size_t units, const std::function<nlohmann::json(std::size_t)>& work,

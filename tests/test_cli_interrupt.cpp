@@ -178,12 +178,49 @@ TEST_F(CliInterrupt, SweepWritesWhatItFinished) {
   const json& runs = summary["runs"];
   ASSERT_GE(runs.size(), 2u);
   EXPECT_LT(runs.size(), 2000u);
+  // The runs before the last finished; the last one was stopped in its steps or had just
+  // finished (no run starts after the signal).
   for (std::size_t k = 0; k < runs.size(); ++k) {
-    const bool last = k + 1 == runs.size();
-    EXPECT_EQ(runs[k]["status"], last ? "interrupted" : "completed") << k;
+    if (k + 1 < runs.size()) {
+      EXPECT_EQ(runs[k]["status"], "completed") << k;
+    } else {
+      EXPECT_TRUE(runs[k]["status"] == "interrupted" || runs[k]["status"] == "completed") << runs[k]["status"];
+    }
     expect_whole_rows(dir_ / "res" / runs[k]["timeseries"].get<std::string>(),
                       runs[k]["steps"].get<std::size_t>() + 1);
   }
+}
+
+TEST_F(CliInterrupt, TableWritesTheLinesItFinished) {
+  // 200 lines of 10 points; one worker (the lines finish in order), the signal once the
+  // progress line counts two lines done.
+  json c = dc::test::example_json("rolling-sphere");
+  c["grid"]["nx"] = 12;
+  c["grid"]["ny"] = 12;
+  c["output"] = {{"plots", false}};
+  const std::string file = write(c);
+  ::setenv("DYNCONTACT_THREADS", "1", 1);
+  const Stopped s = interrupt({"table", file, "--creepage", "-0.003:0.003:10", "--lateral", "0:0.002:200", "--out",
+                               "tab"},
+                              SIGINT, [this] {
+                                const std::string err = slurp(dir_ / "stderr.txt");
+                                const auto at = err.rfind(" of 2000 points done");
+                                const auto from = err.rfind(", ", at);
+                                return at != std::string::npos && from != std::string::npos &&
+                                       std::atoi(err.c_str() + from + 2) >= 20;
+                              });
+  ::unsetenv("DYNCONTACT_THREADS");
+  EXPECT_EQ(s.code, 130) << s.err;
+  EXPECT_LT(s.seconds_after_signal, 1.0);
+  const json meta = json::parse(slurp(dir_ / "tab" / "table.json"));
+  EXPECT_EQ(meta["status"], "interrupted");
+  const std::size_t points = meta["points"].get<std::size_t>();
+  EXPECT_GE(points, 20u);
+  EXPECT_LT(points, 2000u);
+  EXPECT_EQ(points % 10, 0u) << "whole lines only";
+  EXPECT_TRUE(meta["failed"].empty()) << meta["failed"].dump();
+  expect_whole_rows(dir_ / "tab" / "table.csv", points);
+  EXPECT_FALSE(fs::exists(dir_ / "tab" / "table_Fx.svg"));
 }
 
 }  // namespace
