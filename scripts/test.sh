@@ -54,7 +54,9 @@ if [[ $sanitize -eq 1 ]]; then
     exit 1
   fi
   # Every report is fatal (the test or the program it runs fails); leaks included.
+  # Gmsh's own end-of-process allocations are suppressed (tests/sanitizer/lsan.supp).
   ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:halt_on_error=1:detect_stack_use_after_return=0" \
+  LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressions=0" \
   UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1" \
     ctest --test-dir "$SANITIZE_DIR" --output-on-failure -j2 -L unit --timeout 900 "${args[@]}" || status=$?
 fi

@@ -56,8 +56,11 @@ void CliTest::expect_input_error(const std::string& command, const std::string& 
 }
 
 CliResult CliTest::run_mpi2(const std::string& args) const {
+  // Under AddressSanitizer the ranks are not leak-checked: Open MPI keeps allocations to the end
+  // of the process from plugins it has unloaded by then (no module name to suppress them by).
+  // The same code runs leak-checked without mpirun in the other tests.
   return run_prefixed("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
-                      "mpirun -n 2 --oversubscribe",
+                      "ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" mpirun -n 2 --oversubscribe",
                       args);
 }
 
