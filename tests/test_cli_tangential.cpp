@@ -189,9 +189,12 @@ TEST_F(CliTangential, CarterRollingCreepageByNewton) {
 }
 
 TEST_F(CliTangential, LoadingHistoryWritesEveryStep) {
+  // The example's own backend (auto: native first): the history's files are checked here,
+  // Ipopt's kappa alternation in the slow validations.
   const std::string file = case_file("spence-sphere", [](json& d) {
     d["grid"]["nx"] = 16;
     d["grid"]["ny"] = 16;
+    d["solver"]["backend"] = "auto";
   });
   const Result r = run("solve " + file + " --out history");
   ASSERT_EQ(r.code, 0) << r.out << r.err;

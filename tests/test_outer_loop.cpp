@@ -3,6 +3,7 @@
 // steps started cold, stops on the coupling certificate, and needs fewer alternations.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -53,6 +54,38 @@ TEST(OuterLoop, WarmStartedHistoryEqualsColdStartedSteps) {
   }
   std::printf("[ outer loop ] alternations over 5 steps: warm %d, cold %d\n", warm_alternations, cold_alternations);
   EXPECT_LE(warm_alternations, cold_alternations);
+}
+
+TEST(OuterLoop, IpoptAndNativeReachTheSameState) {
+  // One Spence-like indentation step (kappa != 0) by each backend alone: both certified, the
+  // same pressure, traction and stick set.
+  const MaterialPair m{Elastic::make_rigid(), Elastic::from_E_nu(7e10, 0.33)};
+  ASSERT_NE(m.kappa(), 0.0);
+  const auto su = test::sphere_setup(12, 1.3, m, 0.01, 150.0);
+  TangentialLoad load;
+  load.modes = {amplitude(0.0), amplitude(0.0), amplitude(0.0)};
+  load.normal = {Control::force, 150.0};
+  SolverSpec ipopt = test::native_tangential_solver();
+  ipopt.backend = "ipopt";
+  TangentialProblem by_native(su.grid, m, su.heights, FrictionLaw::coulomb(0.2));
+  TangentialProblem by_ipopt(su.grid, m, su.heights, FrictionLaw::coulomb(0.2));
+  const TangentialSolution a = by_native.step(load, test::native_tangential_solver());
+  const TangentialSolution b = by_ipopt.step(load, ipopt);
+  expect_certified(a);
+  expect_certified(b);
+  EXPECT_EQ(b.report.backend, "ipopt");
+  double p_max = 0.0, f_max = 0.0;
+  for (std::size_t e = 0; e < su.grid.size(); ++e) {
+    p_max = std::max(p_max, a.normal.pressure[e]);
+    f_max = std::max(f_max, a.bound[e]);
+  }
+  for (std::size_t e = 0; e < su.grid.size(); ++e) {
+    EXPECT_NEAR(a.normal.pressure[e], b.normal.pressure[e], 1e-6 * p_max) << e;
+    EXPECT_NEAR(a.tx[e], b.tx[e], 1e-5 * f_max) << e;
+    EXPECT_NEAR(a.ty[e], b.ty[e], 1e-5 * f_max) << e;
+  }
+  EXPECT_GT(a.n_stick, 0);
+  EXPECT_EQ(a.n_stick, b.n_stick);
 }
 
 TEST(OuterLoop, AndersonSolvesALinearFixedPointInFewSteps) {
