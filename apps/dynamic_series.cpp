@@ -42,12 +42,12 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
   series << kColumns;
   const auto start = std::chrono::steady_clock::now();
   Progress line("dynamic", progress);
-  const ProgressCallback report = line.callback();
+  const double t_end = c.dynamic->t_end;
   DynamicOutcome out;
   out.result = sim.run([&](const dynamics::DynamicSample& s) {
     append_row(series, s);
     if (on_step) on_step(s);
-    if (report) report({s.step, s.state.time, s.contact_state.certificate});
+    if (progress) line.time(s.state.time, t_end);
   });
   line.finish();
   out.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

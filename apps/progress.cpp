@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -19,39 +20,77 @@ Progress::~Progress() { finish(); }
 
 ProgressCallback Progress::callback() {
   return [this](const ProgressInfo& info) {
+    const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     std::lock_guard<std::mutex> lock(mutex_);
+    // A new solve (the iteration count starts again, another target) or a larger residual
+    // restarts the rate's reference.
+    const bool new_solve = !have_info_ || info.iteration < info_.iteration || info.target != info_.target ||
+                           info.step != info_.step;
+    if (new_solve || info.residual >= rate_residual_) {
+      rate_from_ = now;
+      rate_residual_ = info.residual;
+    }
     info_ = info;
+    info_at_ = now;
     have_info_ = true;
+    if (info.steps > 0) {  // a history: step `step` of `steps` under way
+      share_ = Share::count;
+      done_ = info.step;
+      total_ = info.steps;
+      what_ = "steps";
+    }
   };
 }
 
 void Progress::count(std::size_t done, std::size_t total, const char* what) {
   std::lock_guard<std::mutex> lock(mutex_);
-  done_ = done;
-  total_ = total;
+  share_ = Share::count;
+  done_ = static_cast<double>(done);
+  total_ = static_cast<double>(total);
   what_ = what;
 }
 
+void Progress::time(double t, double t_end) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  share_ = Share::time;
+  done_ = t;
+  total_ = t_end;
+}
+
+double Progress::solve_time_left() const {
+  const double r = info_.residual, target = info_.target;
+  if (!have_info_ || !(target > 0.0) || !(r > target) || !(rate_residual_ > r) || !(info_at_ > rate_from_))
+    return -1.0;
+  // log-linear convergence: the decades still to go at the decades per second so far.
+  return (info_at_ - rate_from_) * std::log(r / target) / std::log(rate_residual_ / r);
+}
+
 std::string Progress::line(double elapsed) const {
-  char buf[256];
-  if (total_ > 0) {
-    if (done_ == 0)
-      std::snprintf(buf, sizeof buf, "%s: %.1f s, 0 of %zu %s done", label_.c_str(), elapsed, total_, what_);
-    else
-      std::snprintf(buf, sizeof buf, "%s: %.1f s, %zu of %zu %s done, about %.0f s left", label_.c_str(), elapsed,
-                    done_, total_, what_, elapsed * static_cast<double>(total_ - done_) / static_cast<double>(done_));
-    return buf;
+  char buf[320];
+  std::string text = label_;
+  auto add = [&](const char* format, auto... values) {
+    std::snprintf(buf, sizeof buf, format, values...);
+    text += buf;
+  };
+  add(": %.1f s", elapsed);
+  double left = -1.0;
+  if (share_ == Share::time && total_ > 0.0) {
+    add(", t = %.4g of %.4g s", done_, total_);
+    if (done_ > 0.0) left = elapsed * (total_ - done_) / done_;
+  } else if (share_ == Share::count && total_ > 0.0) {
+    add(", %.0f of %.0f %s done", done_, total_, what_);
+    if (done_ > 0.0) left = elapsed * (total_ - done_) / done_;
   }
-  // Not every solver reports its objective while it runs (0 then): shown only when it does.
-  if (have_info_ && info_.objective != 0.0)
-    std::snprintf(buf, sizeof buf, "%s: %.1f s, iteration %d, objective %.6g, residual %.2e", label_.c_str(), elapsed,
-                  info_.iteration, info_.objective, info_.residual);
-  else if (have_info_)
-    std::snprintf(buf, sizeof buf, "%s: %.1f s, iteration %d, residual %.2e", label_.c_str(), elapsed,
-                  info_.iteration, info_.residual);
-  else
-    std::snprintf(buf, sizeof buf, "%s: %.1f s", label_.c_str(), elapsed);
-  return buf;
+  // A single solve, or the step of a history under way: its iteration and residual. Not every
+  // solver reports its objective while it runs (0 then): shown only when it does.
+  if (have_info_ && share_ != Share::time && (share_ == Share::none || info_.steps > 0)) {
+    add(", iteration %d", info_.iteration);
+    if (info_.objective != 0.0) add(", objective %.6g", info_.objective);
+    add(", residual %.2e", info_.residual);
+    if (share_ == Share::none) left = solve_time_left();
+  }
+  if (left >= 0.0) add(", about %.0f s left", left);
+  return text;
 }
 
 void Progress::run() {

@@ -214,7 +214,7 @@ class QpTnlp final : public Ipopt::TNLP {
                              Number, Number, Number, Number, Number, Number, Index,
                              const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
     iterations_ = std::max(iterations_, static_cast<int>(iter));
-    if (options_.progress) options_.progress(ProgressInfo{static_cast<int>(iter), obj_value, inf_pr});
+    if (options_.progress) options_.progress(ProgressInfo{static_cast<int>(iter), obj_value, inf_pr, options_.tol});
     return !interrupt_requested();  // false stops Ipopt; run_backend then throws Interrupted
   }
 

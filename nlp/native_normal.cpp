@@ -98,7 +98,7 @@ SolveOutcome solve_normal_native(const QuadraticProgram& qp, const SolveOptions&
       sum_x += x[i];
     }
     const double rel = sum_x > 0.0 ? change / sum_x : 0.0;
-    if (options.progress) options.progress({it, 0.0, rel});
+    if (options.progress) options.progress({it, 0.0, rel, options.tol});
     if (sum_x == 0.0 && !force_control) {  // no overlap anywhere: p = 0 is the solution
       out.success = n_contact == 0 && !entered;
       if (out.success) {

@@ -549,7 +549,7 @@ SolveOutcome NativeTangential::solve() {
     tol_x = options_.tol * level;
     eq_res = equality_residual(x);
     history.push_back(res);
-    if (options_.progress) options_.progress({applies_, f, res});
+    if (options_.progress) options_.progress({applies_, f, res, tol_x});
     if (res <= tol_x && equalities_met(x)) {
       converged = true;
       break;

@@ -186,7 +186,7 @@ SolveOutcome solve_normal_preconditioned(const QuadraticProgram& qp, const Solve
       ++since_refresh;
     }
     const double rel = sum_x > 0.0 ? change / sum_x : 0.0;
-    if (options.progress) options.progress({it, 0.0, rel});
+    if (options.progress) options.progress({it, 0.0, rel, options.tol});
     if (rel < options.tol && !entered) {
       out.success = true;
       out.message = "converged (relative change " + std::to_string(rel) + ")";

@@ -56,6 +56,9 @@ struct ProgressInfo {
   int iteration = 0;
   double objective = 0.0;
   double residual = 0.0;
+  double target = 0.0;  ///< the residual at which the solver stops (0: not known); the time left follows
+  int step = 0;         ///< a history: the step being solved (0-based) of `steps` (0: not a history)
+  int steps = 0;
 };
 using ProgressCallback = std::function<void(const ProgressInfo&)>;
 

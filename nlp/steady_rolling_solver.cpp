@@ -242,7 +242,7 @@ SteadyRollingOutcome SteadyRollingNewton::solve() {
   for (; it < options_.max_iter; ++it) {
     throw_if_interrupted();
     out.residual = max_abs(F);
-    if (options_.progress) options_.progress({it, 0.0, out.residual});
+    if (options_.progress) options_.progress({it, 0.0, out.residual, tol});
     if (out.residual <= tol) {
       out.success = true;
       break;

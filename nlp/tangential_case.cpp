@@ -32,6 +32,16 @@ std::vector<TangentialSolution> solve_tangential_case(const Case& c, const Progr
     out.push_back(solve());
     out.back().report.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
+  // A history's progress says which step of how many is being solved.
+  const int n_steps = static_cast<int>(t.regime == TangentialRegime::rolling ? t.rolling_history.size()
+                                                                             : t.history.size());
+  ProgressCallback step_progress;
+  if (progress)
+    step_progress = [&](ProgressInfo info) {
+      info.step = static_cast<int>(out.size());
+      info.steps = n_steps;
+      progress(info);
+    };
   if (t.regime == TangentialRegime::rolling) {
     if (!t.has_history) {
       timed([&] { return problem.steady_rolling(t.rolling, c.solver, progress); });
@@ -39,7 +49,7 @@ std::vector<TangentialSolution> solve_tangential_case(const Case& c, const Progr
     }
     try {
       for (const RollingStep& step : t.rolling_history)
-        timed([&] { return problem.roll(step.load, step.distance, c.solver, progress); });
+        timed([&] { return problem.roll(step.load, step.distance, c.solver, step_progress); });
     } catch (const Interrupted&) {
       if (out.empty()) throw;  // else: the finished steps (interrupt_requested() says why no more)
     }
@@ -50,7 +60,7 @@ std::vector<TangentialSolution> solve_tangential_case(const Case& c, const Progr
     return out;
   }
   try {
-    for (const TangentialLoad& step : t.history) timed([&] { return problem.step(step, c.solver, progress); });
+    for (const TangentialLoad& step : t.history) timed([&] { return problem.step(step, c.solver, step_progress); });
   } catch (const Interrupted&) {
     if (out.empty()) throw;  // else: the finished steps (interrupt_requested() says why no more)
   }

@@ -676,7 +676,7 @@ struct TangentialProblem::Impl {
       if (m.sol.report.status == SolveStatus::failed) break;
       for (int k = 0; k < 3; ++k) amplitude_prev[k] += m.sol.amplitudes[k];
       const double change = relative_change(tau_prev, input);
-      if (progress) progress({m.steps, 0.0, change});
+      if (progress) progress({m.steps, 0.0, change, steady_tol});
       if (steady_tol > 0.0 && m.steps > 1 && change < steady_tol) {
         m.steady = true;
         break;
