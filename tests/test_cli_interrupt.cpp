@@ -27,6 +27,10 @@ using json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
 using dc::test::slurp;
 
+/// The promised stop within a second of the signal; a sanitizer build (every memory access
+/// checked, 2-5 times slower, CI runs it on a busy machine) is given three.
+constexpr double kStopSeconds = DYNCONTACT_SANITIZED ? 3.0 : 1.0;
+
 struct Stopped {
   int code = -1;
   double seconds_after_signal = 0.0;
@@ -119,7 +123,7 @@ TEST_F(CliInterrupt, LongSolveStopsWithinASecond) {
     c["solver"] = {{"backend", backend}, {"max_iter", 100000}, {"tol", 1e-14}, {"fallback", false}};
     const Stopped s = interrupt({"solve", write(c), "--out", "res"}, SIGINT, after_progress());
     EXPECT_EQ(s.code, 130) << s.err;
-    EXPECT_LT(s.seconds_after_signal, 1.0);
+    EXPECT_LT(s.seconds_after_signal, kStopSeconds);
     const json summary = json::parse(slurp(dir_ / "res" / "summary.json"));
     EXPECT_EQ(summary["status"], "interrupted");
     EXPECT_FALSE(fs::exists(dir_ / "res" / "fields.csv"));
@@ -139,7 +143,7 @@ TEST_F(CliInterrupt, HistoryKeepsTheFinishedSteps) {
     return slurp(dir_ / "stderr.txt").find("solving") != std::string::npos;
   });
   EXPECT_EQ(s.code, 143) << s.err;
-  EXPECT_LT(s.seconds_after_signal, 1.0);
+  EXPECT_LT(s.seconds_after_signal, kStopSeconds);
   const json summary = json::parse(slurp(dir_ / "res" / "summary.json"));
   EXPECT_EQ(summary["status"], "interrupted");
   ASSERT_TRUE(summary.contains("steps"));
@@ -172,7 +176,7 @@ TEST_F(CliInterrupt, SweepWritesWhatItFinished) {
   });
   ::unsetenv("DYNCONTACT_THREADS");
   EXPECT_EQ(s.code, 130) << s.err;
-  EXPECT_LT(s.seconds_after_signal, 1.0);
+  EXPECT_LT(s.seconds_after_signal, kStopSeconds);
   const json summary = json::parse(slurp(dir_ / "res" / "summary.json"));
   EXPECT_EQ(summary["status"], "interrupted");
   const json& runs = summary["runs"];
@@ -211,7 +215,7 @@ TEST_F(CliInterrupt, TableWritesTheLinesItFinished) {
                               });
   ::unsetenv("DYNCONTACT_THREADS");
   EXPECT_EQ(s.code, 130) << s.err;
-  EXPECT_LT(s.seconds_after_signal, 1.0);
+  EXPECT_LT(s.seconds_after_signal, kStopSeconds);
   const json meta = json::parse(slurp(dir_ / "tab" / "table.json"));
   EXPECT_EQ(meta["status"], "interrupted");
   const std::size_t points = meta["points"].get<std::size_t>();
