@@ -139,7 +139,13 @@ std::vector<double> profile_heights(const ProfileSpec& profile, const Grid& grid
 }
 
 std::vector<double> profile_heights(const ProfileSpec& profile, const Grid& grid, double heading) {
-  std::vector<double> h(grid.size(), 0.0);
+  std::vector<double> h;
+  profile_heights(profile, grid, heading, h);
+  return h;
+}
+
+void profile_heights(const ProfileSpec& profile, const Grid& grid, double heading, std::vector<double>& h) {
+  h.assign(grid.size(), 0.0);
   const bool two_d = grid.dimension == 2;
   // The body's own axes, turned by `heading` about z: (x_b, y_b) = Rz(-heading) (x, y).
   const double c = two_d ? 1.0 : std::cos(heading), s = two_d ? 0.0 : std::sin(heading);
@@ -148,7 +154,7 @@ std::vector<double> profile_heights(const ProfileSpec& profile, const Grid& grid
     for (int j = 0; j < grid.ny; ++j)
       for (int i = 0; i < grid.nx; ++i)
         h[grid.index(i, j)] = lattice.at(c * grid.xc(i) + s * grid.yc(j), -s * grid.xc(i) + c * grid.yc(j));
-    return h;
+    return;
   }
   for (int j = 0; j < grid.ny; ++j) {
     for (int i = 0; i < grid.nx; ++i) {
@@ -177,7 +183,6 @@ std::vector<double> profile_heights(const ProfileSpec& profile, const Grid& grid
       h[grid.index(i, j)] = value;
     }
   }
-  return h;
 }
 
 const char* to_string(ProfileType type) {
