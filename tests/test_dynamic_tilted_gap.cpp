@@ -17,6 +17,7 @@
 #include "body_gap.hpp"
 #include "case_model.hpp"
 #include "contact_wrench.hpp"
+#include "dynamic_case_support.hpp"
 #include "dynamic_simulation.hpp"
 #include "errors.hpp"
 #include "hertz.hpp"
@@ -42,17 +43,10 @@ TiltedEllipsoid closed_form(double theta) {
 }
 
 nlohmann::json ellipsoid_case(double x_lo, double x_hi, double y_half, int n, const char* normal_model) {
-  return {{"schema", "dyncontact/1"},
-          {"name", "tilted-ellipsoid"},
-          {"problem", "dynamic"},
-          {"dimension", 3},
-          {"materials", {{"body", {{"E", 2.1e11}, {"nu", 0.3}}}, {"base", {{"E", 2.1e11}, {"nu", 0.3}}}}},
-          {"profile", {{"type", "ellipsoid"}, {"radius_x", kRx}, {"radius_y", kRy}}},
-          {"grid", {{"nx", n}, {"ny", n}, {"x", {x_lo, x_hi}}, {"y", {-y_half, y_half}}}},
-          {"body", {{"mass", 1.0}, {"inertia", {1e-4, 1e-4, 1e-4}}, {"radius", kC}}},
-          {"loads", {{"force", {{"z", {{"value", -kLoad}}}}}}},
-          {"time", {{"dt", 1e-4}, {"t_end", 1e-3}}},
-          {"normal_model", normal_model}};
+  return test::steel_dynamic_case("tilted-ellipsoid", {{"type", "ellipsoid"}, {"radius_x", kRx}, {"radius_y", kRy}},
+                                  {{"nx", n}, {"ny", n}, {"x", {x_lo, x_hi}}, {"y", {-y_half, y_half}}},
+                                  {{"mass", 1.0}, {"inertia", {1e-4, 1e-4, 1e-4}}, {"radius", kC}}, kLoad, 1e-4,
+                                  normal_model);
 }
 
 StepKinematics at_rest(double z, const Eigen::Quaterniond& q) {
@@ -210,17 +204,10 @@ TEST(DynamicTiltedGap, RockingEllipsoidLiftsItsCentreByTheDepthOfItsLowestPoint)
 }
 
 nlohmann::json wheel_case(int ny) {
-  return {{"schema", "dyncontact/1"},
-          {"name", "cambered-wheel"},
-          {"problem", "dynamic"},
-          {"dimension", 3},
-          {"materials", {{"body", {{"E", 2.1e11}, {"nu", 0.3}}}, {"base", {{"E", 2.1e11}, {"nu", 0.3}}}}},
-          {"profile", {{"type", "cylinder"}, {"radius", 0.1}, {"length", 0.01}}},
-          {"grid", {{"nx", 12}, {"ny", ny}, {"x", {-4.5e-4, 4.5e-4}}, {"y", {-6.0e-3, 6.0e-3}}}},
-          {"body", {{"mass", 100.0}, {"inertia", {0.25, 0.5, 0.25}}, {"radius", 0.1}}},
-          {"loads", {{"force", {{"z", {{"value", -1000.0}}}}}}},
-          {"time", {{"dt", 0.02}, {"t_end", 0.1}}},
-          {"normal_model", "quasi_static"}};
+  return test::steel_dynamic_case("cambered-wheel", {{"type", "cylinder"}, {"radius", 0.1}, {"length", 0.01}},
+                                  {{"nx", 12}, {"ny", ny}, {"x", {-4.5e-4, 4.5e-4}}, {"y", {-6.0e-3, 6.0e-3}}},
+                                  {{"mass", 100.0}, {"inertia", {0.25, 0.5, 0.25}}, {"radius", 0.1}}, 1000.0, 0.02,
+                                  "quasi_static");
 }
 
 TEST(DynamicTiltedGap, WheelRolledAboutItsAxisKeepsItsGapBitForBit) {
