@@ -5,7 +5,6 @@
 #include <string>
 
 #include "errors.hpp"
-#include "profile_turned.hpp"
 
 namespace dc::dynamics {
 namespace {
@@ -29,6 +28,7 @@ BodyGap::BodyGap(const ProfileSpec& profile, const Grid& grid, double centre_hei
     : profile_(profile),
       grid_(grid),
       radius_(centre_height),
+      upright_(profile, grid),
       heights_(profile_heights(profile, grid)),
       ellipsoid_shape_(std::sqrt(profile.radius_x * centre_height), std::sqrt(profile.radius_y * centre_height),
                        centre_height),
@@ -45,7 +45,7 @@ bool BodyGap::turn(double heading) {
   mode_ = Mode::upright;
   heading_ = heading;
   oriented_ = {radius_, Eigen::Vector2d::Zero()};
-  profile_heights(profile_, grid_, heading, heights_);
+  upright_.heights(heading, heights_);
   return true;
 }
 

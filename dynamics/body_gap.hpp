@@ -17,6 +17,7 @@
 #include "body_shape.hpp"
 #include "grid.hpp"
 #include "profile.hpp"
+#include "profile_turned.hpp"
 
 namespace dc::dynamics {
 
@@ -60,6 +61,7 @@ class BodyGap {
   const ProfileSpec& profile_;
   const Grid& grid_;
   const double radius_;
+  TurnedProfile upright_;  // the profile's own gap, turned about z
   std::vector<double> heights_;
   OrientedShape oriented_;
   Mode mode_ = Mode::upright;
