@@ -38,11 +38,13 @@ std::size_t nearest(const std::vector<double>& axis, double x) {
   return (x - axis[hi - 1] <= axis[hi] - x) ? hi - 1 : hi;
 }
 
+}  // namespace
+
 /// The table's points rearranged on their regular lattice: h[ix + mx * iy].
-struct Lattice {
+struct TableLattice {
   std::vector<double> xs, ys, h;
 
-  explicit Lattice(const ProfileSpec& p) {
+  explicit TableLattice(const ProfileSpec& p) {
     const std::size_t n = p.table_h.size();
     if (n == 0) throw InputError("profile.file", "the table has no rows");
     if (p.table_x.size() != n || p.table_y.size() != n)
@@ -107,8 +109,6 @@ struct Lattice {
   }
 };
 
-}  // namespace
-
 void ProfileSpec::quadratic_coefficients(double& A, double& B) const {
   switch (type) {
     case ProfileType::sphere:
@@ -139,16 +139,30 @@ std::vector<double> profile_heights(const ProfileSpec& profile, const Grid& grid
 }
 
 std::vector<double> profile_heights(const ProfileSpec& profile, const Grid& grid, double heading) {
-  std::vector<double> h(grid.size(), 0.0);
+  std::vector<double> h;
+  TurnedProfile(profile, grid).heights(heading, h);
+  return h;
+}
+
+TurnedProfile::TurnedProfile(const ProfileSpec& profile, const Grid& grid)
+    : profile_(profile),
+      grid_(grid),
+      table_(profile.type == ProfileType::table ? std::make_unique<TableLattice>(profile) : nullptr) {}
+
+TurnedProfile::~TurnedProfile() = default;
+
+void TurnedProfile::heights(double heading, std::vector<double>& h) const {
+  const ProfileSpec& profile = profile_;
+  const Grid& grid = grid_;
+  h.assign(grid.size(), 0.0);
   const bool two_d = grid.dimension == 2;
   // The body's own axes, turned by `heading` about z: (x_b, y_b) = Rz(-heading) (x, y).
   const double c = two_d ? 1.0 : std::cos(heading), s = two_d ? 0.0 : std::sin(heading);
-  if (profile.type == ProfileType::table) {
-    const Lattice lattice(profile);
+  if (table_) {
     for (int j = 0; j < grid.ny; ++j)
       for (int i = 0; i < grid.nx; ++i)
-        h[grid.index(i, j)] = lattice.at(c * grid.xc(i) + s * grid.yc(j), -s * grid.xc(i) + c * grid.yc(j));
-    return h;
+        h[grid.index(i, j)] = table_->at(c * grid.xc(i) + s * grid.yc(j), -s * grid.xc(i) + c * grid.yc(j));
+    return;
   }
   for (int j = 0; j < grid.ny; ++j) {
     for (int i = 0; i < grid.nx; ++i) {
@@ -177,7 +191,6 @@ std::vector<double> profile_heights(const ProfileSpec& profile, const Grid& grid
       h[grid.index(i, j)] = value;
     }
   }
-  return h;
 }
 
 const char* to_string(ProfileType type) {

@@ -6,23 +6,21 @@
 
 #include "errors.hpp"
 #include "friction_law.hpp"
-#include "profile.hpp"
-#include "profile_turned.hpp"
 
 namespace dc::dynamics {
 
 ContactWrench::ContactWrench(const Case& c)
-    : case_(c), spec_(*c.dynamic), solver_(c.solver), heights_(profile_heights(c.profile, c.grid)) {
+    : case_(c), spec_(*c.dynamic), solver_(c.solver), gap_(c.profile, c.grid, c.dynamic->radius) {
   // auto: FFT at every size. A run applies the operators thousands of times, and the padded FFT
   // product is the faster one from 12^2 elements (3-D) and 200 strips (2-D) up (scripts/bench.sh
   // dynamic with solver.operator dense / fft).
   const OperatorKind kind = c.solver.operator_kind == "dense" ? OperatorKind::dense : OperatorKind::fft;
   if (c.friction) {
     law_ = FrictionLaw::from_spec(*c.friction);
-    tangential_ = std::make_unique<TangentialProblem>(c.grid, c.materials, heights_, *law_, kind);
+    tangential_ = std::make_unique<TangentialProblem>(c.grid, c.materials, gap_.heights(), *law_, kind);
   }
   else
-    normal_ = std::make_unique<NormalProblem>(c.grid, c.materials, heights_, kind);
+    normal_ = std::make_unique<NormalProblem>(c.grid, c.materials, gap_.heights(), kind);
   // Every step is one warm-started program: `auto` tries the native solvers first at any size,
   // the others are their fallbacks.
   if (normal_) normal_->set_native_first(true);
@@ -38,8 +36,9 @@ void ContactWrench::begin_step(double dt) { dt_ = dt; }
 
 NormalSpec ContactWrench::normal_load(const StepKinematics& k, double vertical_load) const {
   if (spec_.normal_model == NormalModel::quasi_static) return {Control::force, std::max(0.0, -vertical_load)};
-  // (2.6): the lowest point of the body is radius below the centre of mass; the base is z = 0.
-  return {Control::approach, spec_.radius - k.position.z()};
+  // (2.6): the lowest point of the body at its orientation is centre_height() below the centre
+  // of mass (body.radius upright); the base is z = 0.
+  return {Control::approach, gap_.centre_height() - k.position.z()};
 }
 
 void ContactWrench::no_contact() {
@@ -47,25 +46,20 @@ void ContactWrench::no_contact() {
   if (tangential_) tangential_->reset();
 }
 
-void ContactWrench::turn_profile(const Eigen::Quaterniond& q) {
-  // (2.6): the gap of the body at its current orientation. Its heading (the body's x axis
-  // turned about z) turns the profile; a sphere or a flat punch is the same at any heading.
-  const ProfileType type = case_.profile.type;
-  if (case_.grid.dimension == 2 || type == ProfileType::sphere || type == ProfileType::flat_punch) return;
-  const Eigen::Vector3d ex = q * Eigen::Vector3d::UnitX();
-  const double heading = std::atan2(ex.y(), ex.x());
-  if (heading == heading_) return;
-  heading_ = heading;
-  heights_ = profile_heights(case_.profile, case_.grid, heading);
-  if (tangential_) tangential_->set_heights(heights_);
+void ContactWrench::orient(const StepKinematics& k) {
+  // (2.6): the gap of the body at its current orientation (body_gap.hpp).
+  if (!gap_.update(k.orientation, k.time)) return;
+  if (tangential_) tangential_->set_heights(gap_.heights());
+  if (normal_) normal_->set_heights(gap_.heights());
 }
 
 Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
   if (tangential_) tangential_->restore(committed_);
-  turn_profile(k.orientation);
+  orient(k);
   last_ = k;
   const NormalSpec load = normal_load(k, vertical_load);
-  lever_ = spec_.normal_model == NormalModel::quasi_static ? spec_.radius : k.position.z();
+  // The height of the centre of mass over the base: quasi-static, over the lowest point.
+  lever_ = spec_.normal_model == NormalModel::quasi_static ? gap_.centre_height() : k.position.z();
   if (!(load.value > 0.0)) {
     no_contact();
     return state_.wrench;
@@ -119,7 +113,6 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
     state_.n_stick = solution_.n_stick;
     state_.n_slip = solution_.n_slip;
   } else {
-    normal_->set_heights(heights_);
     normal_solution_ = normal_->solve(load, solver_);
     pressure = &normal_solution_.pressure;
     state_.certificate = normal_solution_.report.certificate.worst();

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "body_gap.hpp"
 #include "case_model.hpp"
 #include "contact_sensitivity.hpp"
 #include "friction_law.hpp"
@@ -64,13 +65,13 @@ class ContactWrench {
  private:
   NormalSpec normal_load(const StepKinematics& k, double vertical_load) const;
   void no_contact();
-  /// The undeformed gap at the body's heading (recomputed when it changes).
-  void turn_profile(const Eigen::Quaterniond& q);
+  /// The undeformed gap at the body's orientation (the problems' heights when it changes).
+  void orient(const StepKinematics& k);
 
   const Case& case_;
   const DynamicSpec& spec_;
   SolverSpec solver_;
-  std::vector<double> heights_;
+  BodyGap gap_;
   std::unique_ptr<NormalProblem> normal_;          // frictionless
   std::unique_ptr<TangentialProblem> tangential_;  // with friction
   std::optional<FrictionLaw> law_;                 // with friction
@@ -81,7 +82,6 @@ class ContactWrench {
   ContactState state_;
   StepKinematics last_{};
   double dt_ = 0.0;
-  double heading_ = 0.0;  // of heights_ (rad about z)
   double lever_ = 0.0;  // height of the centre of mass over the contact plane at the last evaluation
   bool steady_ = false;
   bool model_resolved_ = false;

@@ -39,9 +39,9 @@ NormalProblem::NormalProblem(std::shared_ptr<const LinearOperator> compliance, c
     throw std::invalid_argument("normal problem: the compliance must have a positive diagonal");
 }
 
-void NormalProblem::set_heights(std::vector<double> heights) {
+void NormalProblem::set_heights(const std::vector<double>& heights) {
   if (heights.size() != grid_.size()) throw std::invalid_argument("normal problem: one height per element");
-  heights_ = std::move(heights);
+  heights_.assign(heights.begin(), heights.end());  // reuses the buffer: no allocation per step
   if (std::none_of(heights_.begin(), heights_.end(), [](double h) { return std::isfinite(h); }))
     throw InputError("profile", "no element of the grid can touch the body");
 }

@@ -38,7 +38,7 @@ class NormalProblem {
   /// Certificate of an arbitrary pressure field (for tests and for every solve).
   Certificate certify(const std::vector<double>& pressure, double approach, const NormalSpec& control) const;
   /// Rigid-body shift of the profile between solves (dynamic steps move the body).
-  void set_heights(std::vector<double> heights);
+  void set_heights(const std::vector<double>& heights);  // copied into the problem's own buffer
   /// Warm start: every converged solve starts the next one (load histories, time steps) from
   /// its pressure. set_warm_start() gives another starting pressure (Pa, one per element; the
   /// next solve starts there), clear_warm_start() makes the next solve cold.

@@ -871,7 +871,9 @@ void TangentialProblem::restore(const TangentialMemory& m) {
   s.amplitude_prev = m.amplitudes;
 }
 
-void TangentialProblem::set_heights(std::vector<double> heights) { impl_->heights = std::move(heights); }
+void TangentialProblem::set_heights(const std::vector<double>& heights) {
+  impl_->heights.assign(heights.begin(), heights.end());  // reuses the buffer: no allocation per step
+}
 
 const LinearOperator& TangentialProblem::tangential_compliance() const { return *impl_->Ct; }
 

@@ -121,7 +121,7 @@ class TangentialProblem {
   TangentialMemory memory() const;
   void restore(const TangentialMemory& memory);
   /// The body's gap profile on the grid (a moving body changes it between steps).
-  void set_heights(std::vector<double> heights);
+  void set_heights(const std::vector<double>& heights);  // copied into the problem's own buffer
   /// B22, the tangential compliance (sensitivities of a solution with its active set fixed).
   const LinearOperator& tangential_compliance() const;
   /// B31, the normal compliance.

@@ -9,6 +9,7 @@
 
 #include "case_model.hpp"
 #include "contact_wrench.hpp"
+#include "dynamic_case_support.hpp"
 #include "hertz.hpp"
 
 namespace dc::dynamics {
@@ -16,17 +17,10 @@ namespace {
 
 nlohmann::json ellipsoid_case() {
   const double L = 1.2e-3;
-  return {{"schema", "dyncontact/1"},
-          {"name", "turned-ellipsoid"},
-          {"problem", "dynamic"},
-          {"dimension", 3},
-          {"materials", {{"body", {{"E", 2.1e11}, {"nu", 0.3}}}, {"base", {{"E", 2.1e11}, {"nu", 0.3}}}}},
-          {"profile", {{"type", "ellipsoid"}, {"radius_x", 0.04}, {"radius_y", 0.01}}},
-          {"grid", {{"nx", 32}, {"ny", 32}, {"x", {-L, L}}, {"y", {-L, L}}}},
-          {"body", {{"mass", 1.0}, {"inertia", {1e-4, 1e-4, 1e-4}}, {"radius", 0.01}}},
-          {"loads", {{"force", {{"z", {{"value", -100.0}}}}}}},
-          {"time", {{"dt", 1e-4}, {"t_end", 1e-3}}},
-          {"normal_model", "quasi_static"}};
+  return test::steel_dynamic_case("turned-ellipsoid", {{"type", "ellipsoid"}, {"radius_x", 0.04}, {"radius_y", 0.01}},
+                                  {{"nx", 32}, {"ny", 32}, {"x", {-L, L}}, {"y", {-L, L}}},
+                                  {{"mass", 1.0}, {"inertia", {1e-4, 1e-4, 1e-4}}, {"radius", 0.01}}, 100.0, 1e-4,
+                                  "quasi_static");
 }
 
 struct Moments {
