@@ -27,13 +27,13 @@ TEST(ContactSensitivity, MatchesFiniteDifferencesAndMindlin) {
   const NormalSpec load{Control::force, P};
   // A small shift: nearly all of the contact sticks (Mindlin).
   const double shift = 1e-9;
-  TangentialSolution base = problem.convected_step(load, {shift, 0.0, 0.0}, 0.0, solver);
+  TangentialSolution base = problem.convected_step(load, {shift, 0.0, 0.0}, {0.0, 0.0}, solver);
   expect_certified(base);
   const TangentialMemory memory = problem.memory();
   TangentialSensitivity sensitivity;
   const Eigen::Matrix3d G = sensitivity.compute(problem.tangential_compliance(), s.grid, base);
   const double h = 1e-11;
-  const TangentialSolution more = problem.convected_step(load, {h, 0.0, 0.0}, 0.0, solver);
+  const TangentialSolution more = problem.convected_step(load, {h, 0.0, 0.0}, {0.0, 0.0}, solver);
   problem.restore(memory);
   const double fd = (more.resultants[0] - base.resultants[0]) / h;
   EXPECT_NEAR(G(0, 0) / fd, 1.0, 0.02) << "G00 " << G(0, 0) << " finite difference " << fd;
@@ -65,7 +65,7 @@ TEST(ContactSensitivity, DissimilarMaterialsCouplePressureAndTraction) {
   const double shift = mu * P / (16.0 * G_star * s.hz.a);
   const TangentialMemory memory = problem.memory();  // before the step
   const std::array<double, 3> a = {shift, 0.3 * shift, 0.0};
-  const TangentialSolution base = problem.convected_step(load, a, 0.0, solver);
+  const TangentialSolution base = problem.convected_step(load, a, {0.0, 0.0}, solver);
   expect_certified(base);
   ASSERT_GT(base.n_slip, 0);
   ASSERT_GT(base.n_stick, 0);
@@ -83,9 +83,9 @@ TEST(ContactSensitivity, DissimilarMaterialsCouplePressureAndTraction) {
     plus[l] += h;
     minus[l] -= h;
     problem.restore(memory);
-    const TangentialSolution more = problem.convected_step(load, plus, 0.0, solver);
+    const TangentialSolution more = problem.convected_step(load, plus, {0.0, 0.0}, solver);
     problem.restore(memory);
-    const TangentialSolution less = problem.convected_step(load, minus, 0.0, solver);
+    const TangentialSolution less = problem.convected_step(load, minus, {0.0, 0.0}, solver);
     const double fd = (more.resultants[l] - less.resultants[l]) / (2.0 * h);
     EXPECT_NEAR(G(l, l) / fd, 1.0, 1e-3) << "mode " << l << ": coupled " << G(l, l) << ", uncoupled " << G0(l, l)
                                          << ", finite difference " << fd;
