@@ -131,25 +131,23 @@ struct TangentialProblem::Impl {
   /// also beyond the grid edge. shift_y = 0 is the linear interpolation along x alone (the same
   /// arithmetic, bit for bit, as before y was convected).
   void convected_displacement(double shift_x, double shift_y, std::vector<double>& u) {
-    const int ky = static_cast<int>(std::floor(shift_y));
-    const double theta_y = shift_y - ky;
-    convected_along_x(shift_x, ky, u);
-    if (theta_y <= 0.0) return;
-    std::vector<double>& u1 = convected_row_work;
-    convected_along_x(shift_x, ky + 1, u1);
-    for (std::size_t i = 0; i < u.size(); ++i) u[i] = (1.0 - theta_y) * u[i] + theta_y * u1[i];
+    interpolate(shift_y, u, convected_row_work, [&](int ky, std::vector<double>& row) {
+      interpolate(shift_x, row, convected_x_work, [&](int kx, std::vector<double>& out) {
+        shifted_displacement(kx, ky, out);
+      });
+    });
   }
 
-  /// At the whole-element y shift ky: linear interpolation along x between the two neighbouring
-  /// whole-element x shifts.
-  void convected_along_x(double shift_x, int ky, std::vector<double>& u) {
-    const int kx = static_cast<int>(std::floor(shift_x));
-    const double theta = shift_x - kx;
-    shifted_displacement(kx, ky, u);
+  /// u at the shift s (elements) along one axis: linear interpolation between the neighbouring
+  /// whole-element shifts, at_whole(k, out) filling out at the shift k; `work` holds the second.
+  template <class AtWhole>
+  static void interpolate(double s, std::vector<double>& u, std::vector<double>& work, AtWhole&& at_whole) {
+    const int k = static_cast<int>(std::floor(s));
+    const double theta = s - k;
+    at_whole(k, u);
     if (theta <= 0.0) return;
-    std::vector<double>& u1 = convected_x_work;
-    shifted_displacement(kx + 1, ky, u1);
-    for (std::size_t i = 0; i < u.size(); ++i) u[i] = (1.0 - theta) * u[i] + theta * u1[i];
+    at_whole(k + 1, work);
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] = (1.0 - theta) * u[i] + theta * work[i];
   }
 
   /// The previous relative displacement at the whole-element shift (kx, ky).
