@@ -95,10 +95,10 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
   const std::vector<double>* pressure = nullptr;
   state_ = ContactState{};
   off_axis_ = !travel_along_x(V);
-  steady_step_ = steady_ && !off_axis_;
+  const bool steady_step = steady_ && !off_axis_;
   if (tangential_) {
     auto solve = [&](const SolverSpec& solver) {
-      if (steady_step_) {
+      if (steady_step) {
         RollingLoad rolling;
         rolling.normal = load;
         rolling.velocity = V.x();

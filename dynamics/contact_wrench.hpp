@@ -89,7 +89,6 @@ class ContactWrench {
   double heading_ = 0.0;  // of heights_ (rad about z)
   double lever_ = 0.0;  // height of the centre of mass over the contact plane at the last evaluation
   bool steady_ = false;            // the steady model chosen (or auto resolved to it)
-  bool steady_step_ = false;       // the last evaluation used it
   bool off_axis_ = false;          // the last evaluation's travel was not along +x
   bool model_resolved_ = false;
   int steps_in_contact_ = 0;       // accepted steps in contact
