@@ -181,11 +181,14 @@ std::unique_ptr<LinearOperator> HalfSpace::tangential_from_normal(OperatorKind k
 }
 
 namespace {
-/// Table of the same kernel with every offset moved by `shift` along x: at(di, dj) = K(di + shift, dj).
-KernelTable shifted_table(const Grid& grid, const MaterialPair& m, Axis out, Axis in, int shift,
+/// Table of the same kernel with every offset moved by (shift_x, shift_y) elements:
+/// at(di, dj) = K(di + shift_x, dj + shift_y). 2-D grids have no y offsets (shift_y must be 0).
+KernelTable shifted_table(const Grid& grid, const MaterialPair& m, Axis out, Axis in, int shift_x, int shift_y,
                           const InfluenceOptions& options) {
+  if (grid.dimension == 2 && shift_y != 0) throw std::invalid_argument("a 2-D kernel has no y shift");
   Grid wide = grid;
-  wide.nx = grid.nx + std::abs(shift);
+  wide.nx = grid.nx + std::abs(shift_x);
+  wide.ny = grid.ny + std::abs(shift_y);
   InfluenceOptions o = options;
   if (grid.dimension == 2 && o.reference_length <= 0.0) o.reference_length = grid.nx * grid.dx;
   const KernelTable big = influence_table(wide, m, out, in, o);
@@ -194,38 +197,40 @@ KernelTable shifted_table(const Grid& grid, const MaterialPair& m, Axis out, Axi
   t.ny = grid.ny;
   t.values.assign(static_cast<std::size_t>(2 * grid.nx - 1) * static_cast<std::size_t>(2 * grid.ny - 1), 0.0);
   for (int dj = -(grid.ny - 1); dj <= grid.ny - 1; ++dj)
-    for (int di = -(grid.nx - 1); di <= grid.nx - 1; ++di) t.at(di, dj) = big.at(di + shift, dj);
+    for (int di = -(grid.nx - 1); di <= grid.nx - 1; ++di) t.at(di, dj) = big.at(di + shift_x, dj + shift_y);
   return t;
 }
 
-/// The tangential blocks (xx | xx, xy, yx, yy) with every offset moved by `shift` along x.
-std::vector<KernelTable> tangential_tables(const Grid& grid, const MaterialPair& m, int shift,
+/// The tangential blocks (xx | xx, xy, yx, yy) with every offset moved by (shift_x, shift_y).
+std::vector<KernelTable> tangential_tables(const Grid& grid, const MaterialPair& m, int shift_x, int shift_y,
                                            const InfluenceOptions& options) {
   const std::vector<Axis> axes = grid.dimension == 2 ? std::vector<Axis>{kX} : std::vector<Axis>{kX, kY};
   std::vector<KernelTable> blocks;
   for (Axis out : axes)
-    for (Axis in : axes) blocks.push_back(shifted_table(grid, m, out, in, shift, options));
+    for (Axis in : axes) blocks.push_back(shifted_table(grid, m, out, in, shift_x, shift_y, options));
   return blocks;
 }
 }  // namespace
 
-std::unique_ptr<LinearOperator> HalfSpace::tangential_shifted(int shift, OperatorKind kind) const {
+std::unique_ptr<LinearOperator> HalfSpace::tangential_shifted(int shift_x, int shift_y, OperatorKind kind) const {
   const int m = tangential_components();
-  return make_convolution_operator(grid_, tangential_tables(grid_, materials_, shift, options_), m, m, kind);
+  return make_convolution_operator(grid_, tangential_tables(grid_, materials_, shift_x, shift_y, options_), m, m,
+                                   kind);
 }
 
 std::unique_ptr<LinearOperator> HalfSpace::tangential_convective(int shift, OperatorKind kind) const {
-  std::vector<KernelTable> blocks = tangential_tables(grid_, materials_, 0, options_);
-  const std::vector<KernelTable> upstream = tangential_tables(grid_, materials_, shift, options_);
+  std::vector<KernelTable> blocks = tangential_tables(grid_, materials_, 0, 0, options_);
+  const std::vector<KernelTable> upstream = tangential_tables(grid_, materials_, shift, 0, options_);
   for (std::size_t b = 0; b < blocks.size(); ++b)
     for (std::size_t i = 0; i < blocks[b].values.size(); ++i) blocks[b].values[i] -= upstream[b].values[i];
   const int m = tangential_components();
   return make_convolution_operator(grid_, std::move(blocks), m, m, kind);
 }
 
-std::unique_ptr<LinearOperator> HalfSpace::tangential_from_normal_shifted(int shift, OperatorKind kind) const {
-  std::vector<KernelTable> blocks{shifted_table(grid_, materials_, kX, kZ, shift, options_)};
-  if (grid_.dimension == 3) blocks.push_back(shifted_table(grid_, materials_, kY, kZ, shift, options_));
+std::unique_ptr<LinearOperator> HalfSpace::tangential_from_normal_shifted(int shift_x, int shift_y,
+                                                                         OperatorKind kind) const {
+  std::vector<KernelTable> blocks{shifted_table(grid_, materials_, kX, kZ, shift_x, shift_y, options_)};
+  if (grid_.dimension == 3) blocks.push_back(shifted_table(grid_, materials_, kY, kZ, shift_x, shift_y, options_));
   return make_convolution_operator(grid_, std::move(blocks), tangential_components(), 1, kind);
 }
 

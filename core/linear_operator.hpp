@@ -56,11 +56,13 @@ class HalfSpace {
   std::unique_ptr<LinearOperator> tangential(OperatorKind kind = OperatorKind::automatic) const;
   std::unique_ptr<LinearOperator> tangential_from_normal(OperatorKind kind = OperatorKind::automatic) const;
   std::unique_ptr<LinearOperator> normal_from_tangential(OperatorKind kind = OperatorKind::automatic) const;
-  /// The same tangential compliances evaluated `shift` elements downstream along x:
-  /// row i gives w at the centre of element i + shift (the convective term of (3.8): the
-  /// previous displacement of the material point now at i). Exact also beyond the grid edge.
-  std::unique_ptr<LinearOperator> tangential_shifted(int shift, OperatorKind kind = OperatorKind::automatic) const;
-  std::unique_ptr<LinearOperator> tangential_from_normal_shifted(int shift,
+  /// The same tangential compliances evaluated (shift_x, shift_y) elements downstream: row
+  /// (i, j) gives w at the centre of element (i + shift_x, j + shift_y) (the convective term of
+  /// (3.8): the previous displacement of the material point now at (i, j)). Exact also beyond
+  /// the grid edge. 2-D: shift_y must be 0 (std::invalid_argument otherwise).
+  std::unique_ptr<LinearOperator> tangential_shifted(int shift_x, int shift_y,
+                                                     OperatorKind kind = OperatorKind::automatic) const;
+  std::unique_ptr<LinearOperator> tangential_from_normal_shifted(int shift_x, int shift_y,
                                                                  OperatorKind kind = OperatorKind::automatic) const;
   /// Steady rolling's convective compliance tangential() - tangential_shifted(shift) as one
   /// operator (one transform per apply): the slip a traction field produces per `shift`

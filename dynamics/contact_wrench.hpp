@@ -3,7 +3,7 @@
 // trial end-of-step kinematics (R, q, V, Omega), the approach and the undeformed gap (2.6) on a
 // grid that follows the body (its origin under the centre of mass), the rigid slip V + Omega x r
 // of each element over the step, the normal pressure (4.7), the tangential traction (4.8) with
-// the memory of the previous step carried over the step's travel V_x dt, and the resultant force
+// the memory of the previous step carried over the step's travel (V_x dt, V_y dt), and the resultant force
 // and moment about the centre of mass. The memory is committed only when the step is accepted.
 // Operators and plans are set up once (constructor); solves are warm-started from the last.
 #include <memory>
@@ -58,8 +58,13 @@ class ContactWrench {
   void reject();
 
   const ContactState& state() const { return state_; }
-  /// The tangential model actually used ("transient" or "steady"; auto resolved on the first step).
-  const char* model_used() const;
+  /// The tangential model actually used ("transient" or "steady"; auto resolved on the first
+  /// step), and the accepted steps the steady model left to the transient one because their
+  /// travel was not along +x: "steady (transient in 3 of 120 steps: travel not along +x)".
+  std::string model_used() const;
+  /// The steady model rolls along +x: it takes a step only when V_x > 0 and |V_y| <= 0.1 V_x
+  /// (the travel within 5.7 degrees of x); other steps are transient.
+  static bool travel_along_x(const Eigen::Vector3d& velocity);
   int solves() const { return solves_; }
 
  private:
@@ -83,8 +88,11 @@ class ContactWrench {
   StepKinematics last_{};
   double dt_ = 0.0;
   double lever_ = 0.0;  // height of the centre of mass over the contact plane at the last evaluation
-  bool steady_ = false;
+  bool steady_ = false;            // the steady model chosen (or auto resolved to it)
+  bool off_axis_ = false;          // the last evaluation's travel was not along +x
   bool model_resolved_ = false;
+  int steps_in_contact_ = 0;       // accepted steps in contact
+  int transient_steps_ = 0;        // of these, solved by the transient model although steady_
   int solves_ = 0;
 };
 

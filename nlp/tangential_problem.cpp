@@ -52,8 +52,14 @@ struct TangentialProblem::Impl {
   std::unique_ptr<LinearOperator> B21, B32;  // kappa terms (only when coupled)
   std::unique_ptr<LinearOperator> Ct_up, B21_up;  // rolling: upstream displacement
   std::unique_ptr<LinearOperator> D_conv;          // steady rolling: Ct - Ct_up
-  // convected steps: Ct and kappa B21 shifted by whole elements along x (built once per shift)
-  std::map<int, std::pair<std::unique_ptr<LinearOperator>, std::unique_ptr<LinearOperator>>> shifted;
+  // convected steps: Ct and kappa B21 shifted by whole elements (kx, ky), built once per shift
+  // pair and kept (a step interpolates between at most four of them)
+  struct ShiftedCompliance {
+    std::unique_ptr<LinearOperator> ct, b21;
+  };
+  std::map<std::pair<int, int>, ShiftedCompliance> shifted;
+  std::vector<double> convected_row_work, convected_x_work;  // convected_displacement's buffers
+  mutable std::vector<double> displacement_work;             // displacement()'s kappa B21 p
   std::unique_ptr<NormalProblem> normal;
   std::vector<double> heights;
 
@@ -113,32 +119,46 @@ struct TangentialProblem::Impl {
                     const LinearOperator& ct, const LinearOperator* b21) const {
     ct.apply(tau, u);
     if (coupled && b21) {
-      std::vector<double> w;
+      std::vector<double>& w = displacement_work;
       b21->apply(p, w);
       for (std::size_t i = 0; i < u.size(); ++i) u[i] += w[i];
     }
   }
 
-  /// The previous relative displacement taken `shift` elements downstream along x (the material
-  /// now at x was at x + shift dx at the start of the step, (3.8)): linear interpolation between
-  /// the neighbouring whole-element shifts, each exact also beyond the grid edge.
-  void convected_displacement(double shift, std::vector<double>& u) {
-    const int n0 = static_cast<int>(std::floor(shift));
-    const double theta = shift - n0;
-    auto at = [&](int s, std::vector<double>& out) {
-      if (s == 0) return displacement(p_prev, tau_prev, out, *Ct, B21.get());
-      auto& ops = shifted[s];
-      if (!ops.first) {
-        ops.first = half_space->tangential_shifted(s, kind);
-        if (coupled) ops.second = half_space->tangential_from_normal_shifted(s, kind);
-      }
-      displacement(p_prev, tau_prev, out, *ops.first, ops.second.get());
-    };
-    at(n0, u);
+  /// The previous relative displacement taken (shift_x, shift_y) elements downstream (the
+  /// material now at (x, y) was at (x + shift_x dx, y + shift_y dy) at the start of the step,
+  /// (3.8)): bilinear interpolation between the four neighbouring whole-element shifts, each exact
+  /// also beyond the grid edge. shift_y = 0 is the linear interpolation along x alone (the same
+  /// arithmetic, bit for bit, as before y was convected).
+  void convected_displacement(double shift_x, double shift_y, std::vector<double>& u) {
+    interpolate(shift_y, u, convected_row_work, [&](int ky, std::vector<double>& row) {
+      interpolate(shift_x, row, convected_x_work, [&](int kx, std::vector<double>& out) {
+        shifted_displacement(kx, ky, out);
+      });
+    });
+  }
+
+  /// u at the shift s (elements) along one axis: linear interpolation between the neighbouring
+  /// whole-element shifts, at_whole(k, out) filling out at the shift k; `work` holds the second.
+  template <class AtWhole>
+  static void interpolate(double s, std::vector<double>& u, std::vector<double>& work, AtWhole&& at_whole) {
+    const int k = static_cast<int>(std::floor(s));
+    const double theta = s - k;
+    at_whole(k, u);
     if (theta <= 0.0) return;
-    std::vector<double> u1;
-    at(n0 + 1, u1);
-    for (std::size_t i = 0; i < u.size(); ++i) u[i] = (1.0 - theta) * u[i] + theta * u1[i];
+    at_whole(k + 1, work);
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] = (1.0 - theta) * u[i] + theta * work[i];
+  }
+
+  /// The previous relative displacement at the whole-element shift (kx, ky).
+  void shifted_displacement(int kx, int ky, std::vector<double>& out) {
+    if (kx == 0 && ky == 0) return displacement(p_prev, tau_prev, out, *Ct, B21.get());
+    ShiftedCompliance& ops = shifted[{kx, ky}];
+    if (!ops.ct) {
+      ops.ct = half_space->tangential_shifted(kx, ky, kind);
+      if (coupled) ops.b21 = half_space->tangential_from_normal_shifted(kx, ky, kind);
+    }
+    displacement(p_prev, tau_prev, out, *ops.ct, ops.b21.get());
   }
 
   // The last normal solution and what it was solved for: rolling and histories with kappa = 0
@@ -511,16 +531,19 @@ struct TangentialProblem::Impl {
   }
 
   /// One step with the outer loop (4.26)-(4.27) / (3.31)-(3.32); rigid slips are increments.
-  /// `shift` (elements, >= 0) is the travel of the step: 0 quasi-static, 1 a marching step.
+  /// `shift` (elements along x and y) is the travel of the step: (0, 0) quasi-static, (1, 0) a
+  /// marching step. It enters through W alone (the previous displacement at the upstream point),
+  /// so the slip ds = W + rigid + Ct tau and the gap function (4.24)-(4.25) of the certificate
+  /// are those of the convected step.
   TangentialSolution solve_step(const NormalSpec& normal_load, const std::array<ModeControl, 3>& modes,
-                                const std::array<double, 3>& given_increment, double shift,
+                                const std::array<double, 3>& given_increment, const std::array<double, 2>& shift,
                                 const SolverSpec& solver, const ProgressCallback& progress) {
     const std::size_t n = comps * N;
     std::vector<double> u_prev;
-    if (shift == 1.0 && Ct_up)
+    if (shift[0] == 1.0 && shift[1] == 0.0 && Ct_up)
       displacement(p_prev, tau_prev, u_prev, *Ct_up, B21_up.get());
     else
-      convected_displacement(shift, u_prev);
+      convected_displacement(shift[0], shift[1], u_prev);
 
     TangentialSolution sol;
     std::vector<double> tau = tau_warm.size() == n ? tau_warm : std::vector<double>(n, 0.0);
@@ -558,7 +581,7 @@ struct TangentialProblem::Impl {
                                                           const SolverSpec& solver, const ProgressCallback& progress,
                                                           std::string& why_not) {
     if (!D_conv) D_conv = half_space->tangential_convective(1, kind);
-    if (coupled && !B21_up) B21_up = half_space->tangential_from_normal_shifted(1, kind);
+    if (coupled && !B21_up) B21_up = half_space->tangential_from_normal_shifted(1, 0, kind);
     const std::size_t n = comps * N;
     SteadyRollingProgram program;
     program.D = D_conv.get();
@@ -653,8 +676,8 @@ struct TangentialProblem::Impl {
     if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
     // Rolling in +x: the material now at x was at x + dx one step (dt = dx / V) earlier.
     if (!Ct_up) {
-      Ct_up = half_space->tangential_shifted(1, kind);
-      if (coupled) B21_up = half_space->tangential_from_normal_shifted(1, kind);
+      Ct_up = half_space->tangential_shifted(1, 0, kind);
+      if (coupled) B21_up = half_space->tangential_from_normal_shifted(1, 0, kind);
     }
     // Per step the rigid slip is v dt = dx (creepage - phi y, eta + phi x): increments dx * mode.
     std::array<double, 3> increment{};
@@ -671,7 +694,7 @@ struct TangentialProblem::Impl {
     March m;
     for (m.steps = 1; m.steps <= max_steps; ++m.steps) {
       const std::vector<double> input = tau_prev;
-      m.sol = solve_step(load.normal, load.modes, increment, 1.0, step_solver, {});
+      m.sol = solve_step(load.normal, load.modes, increment, {1.0, 0.0}, step_solver, {});
       if (m.sol.report.status != SolveStatus::converged && m.first_unconverged == 0) m.first_unconverged = m.steps;
       if (m.sol.report.status == SolveStatus::failed) break;
       for (int k = 0; k < 3; ++k) amplitude_prev[k] += m.sol.amplitudes[k];
@@ -718,7 +741,7 @@ TangentialSolution TangentialProblem::step(const TangentialLoad& load, const Sol
   std::array<double, 3> increment{};
   for (int k = 0; k < 3; ++k)
     if (load.modes[k].kind == ModeControl::Kind::amplitude) increment[k] = load.modes[k].value - s.amplitude_prev[k];
-  TangentialSolution sol = s.solve_step(load.normal, load.modes, increment, 0.0, solver, progress);
+  TangentialSolution sol = s.solve_step(load.normal, load.modes, increment, {0.0, 0.0}, solver, progress);
   for (int k = 0; k < 3; ++k) sol.amplitudes[k] += s.amplitude_prev[k];
   s.amplitude_prev = sol.amplitudes;
   return sol;
@@ -812,7 +835,7 @@ TangentialSolution TangentialProblem::roll(const RollingLoad& load, double dista
     // No travel, no convective term: the quasi-static step (2.16) of the same controls; a
     // creepage applies no rigid slip over zero distance, a prescribed force is carried by a shift.
     if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
-    TangentialSolution sol = s.solve_step(load.normal, load.modes, {0.0, 0.0, 0.0}, 0.0, solver, progress);
+    TangentialSolution sol = s.solve_step(load.normal, load.modes, {0.0, 0.0, 0.0}, {0.0, 0.0}, solver, progress);
     for (int k = 0; k < 3; ++k) s.amplitude_prev[k] += sol.amplitudes[k];
     return sol;  // amplitudes: the rigid shift (m, m, rad) of this step; marching_steps = 0
   }
@@ -840,10 +863,14 @@ TangentialSolution TangentialProblem::roll(const RollingLoad& load, double dista
 }
 
 TangentialSolution TangentialProblem::convected_step(const NormalSpec& normal, const std::array<double, 3>& increment,
-                                                   double travel, const SolverSpec& solver) {
+                                                   const std::array<double, 2>& travel, const SolverSpec& solver) {
   Impl& s = *impl_;
-  if (!std::isfinite(travel)) throw InputError("travel", "must be finite");
-  if (s.given_operators && travel != 0.0)
+  if (!std::isfinite(travel[0]) || !std::isfinite(travel[1])) throw InputError("travel", "must be finite");
+  // 2-D (plane strain): there is no y direction to travel along, so a y travel is a caller's
+  // error, rejected rather than ignored.
+  if (s.grid.dimension == 2 && travel[1] != 0.0)
+    throw InputError("travel", "a 2-D contact has no y direction: the travel along y must be 0");
+  if (s.given_operators && (travel[0] != 0.0 || travel[1] != 0.0))
     throw InputError("travel", "a finite body's contact is not convected (no shifted compliances)");
   std::array<ModeControl, 3> modes{};
   for (int k = 0; k < 3; ++k) modes[k].value = increment[k];
@@ -853,7 +880,12 @@ TangentialSolution TangentialProblem::convected_step(const NormalSpec& normal, c
     bool& flag;
     ~Restore() { flag = false; }
   } restore{s.native_first};
-  TangentialSolution sol = s.solve_step(normal, modes, increment, travel / s.grid.dx, solver, {});
+  double shift_y = s.grid.dimension == 3 ? travel[1] / s.grid.dy : 0.0;
+  // A lateral travel below 1e-12 element (round-off in V_y of a body rolling along x) is not
+  // convected: it would change the memory 1000 times less than the solver's tolerance, and cost
+  // two more operator applies per step (and, below zero, the operators of the shift -1).
+  if (std::abs(shift_y) < 1e-12) shift_y = 0.0;
+  TangentialSolution sol = s.solve_step(normal, modes, increment, {travel[0] / s.grid.dx, shift_y}, solver, {});
   for (int k = 0; k < 3; ++k) s.amplitude_prev[k] += sol.amplitudes[k];
   return sol;
 }

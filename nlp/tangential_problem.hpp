@@ -112,12 +112,14 @@ class TangentialProblem {
 
   /// One step of a moving contact ((3.8), dynamic problems): the rigid-slip increments of the
   /// step given (x, y (m), rotation about z (rad)), the previous relative displacement taken
-  /// `travel` (m, either sign) downstream along x - the material now at x was at x + travel when
-  /// the step began; not a whole number of elements: linear interpolation between the two
-  /// neighbouring whole-element shifts (their operators are built once per shift). The normal
-  /// load is `normal` on the current heights. The memory advances (restore() to undo).
-  TangentialSolution convected_step(const NormalSpec& normal, const std::array<double, 3>& increment, double travel,
-                                    const SolverSpec& solver);
+  /// `travel` = (travel_x, travel_y) (m, either sign) downstream - the material now at (x, y)
+  /// was at (x + travel_x, y + travel_y) when the step began; not a whole number of elements:
+  /// bilinear interpolation between the four neighbouring whole-element shifts (linear along x
+  /// when travel_y = 0; their operators are built once per shift pair and kept). 2-D: travel_y
+  /// must be 0 (InputError("travel") otherwise). The normal load is `normal` on the current
+  /// heights. The memory advances (restore() to undo).
+  TangentialSolution convected_step(const NormalSpec& normal, const std::array<double, 3>& increment,
+                                    const std::array<double, 2>& travel, const SolverSpec& solver);
   TangentialMemory memory() const;
   void restore(const TangentialMemory& memory);
   /// The body's gap profile on the grid (a moving body changes it between steps).

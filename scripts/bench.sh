@@ -5,7 +5,8 @@
 #                               shift: 32..256; rolling: 32..256 (native and auto)
 #   scripts/bench.sh --quick    32,64 for each
 #   scripts/bench.sh dynamic    1000 steps of problem "dynamic": a sphere rolling on a 32^2 grid
-#                               (transient contact) and the 2-D cylinder on 200 strips (steady):
+#                               along x and diagonally (transient contact: the memory convected
+#                               along x, and along x and y) and the 2-D cylinder on 200 strips (steady):
 #                               ms per step, contact solves and Newton iterations per step
 #   scripts/bench.sh peer [--repeat 3] [case.json...]
 #                               the cases of examples/bench/ (Hertz 512^2 and 1024^2, the wheel/rail
@@ -75,6 +76,8 @@ if [[ $mode == dynamic ]]; then
   echo "== dynamic (1000 steps each)"
   run_dynamic "sphere rolling, 32^2, transient" bowling-ball grid.nx=32 grid.ny=32 contact_model=transient \
     time.dt=1e-4 time.t_end=0.1 'body.initial.omega=[0,27.5229,0]'
+  run_dynamic "sphere rolling diagonally, 32^2, transient" bowling-ball grid.nx=32 grid.ny=32 contact_model=transient \
+    time.dt=1e-4 time.t_end=0.1 'body.initial.velocity=[2.12132,2.12132,0]' 'body.initial.omega=[-19.4617,19.4617,0]'
   run_dynamic "2-D cylinder, 200 strips, steady" cylinder-dynamic-2d grid.nx=200 time.dt=0.005 time.t_end=5
   exit 0
 fi

@@ -27,13 +27,13 @@ TEST(ContactSensitivity, MatchesFiniteDifferencesAndMindlin) {
   const NormalSpec load{Control::force, P};
   // A small shift: nearly all of the contact sticks (Mindlin).
   const double shift = 1e-9;
-  TangentialSolution base = problem.convected_step(load, {shift, 0.0, 0.0}, 0.0, solver);
+  TangentialSolution base = problem.convected_step(load, {shift, 0.0, 0.0}, {0.0, 0.0}, solver);
   expect_certified(base);
   const TangentialMemory memory = problem.memory();
   TangentialSensitivity sensitivity;
   const Eigen::Matrix3d G = sensitivity.compute(problem.tangential_compliance(), s.grid, base);
   const double h = 1e-11;
-  const TangentialSolution more = problem.convected_step(load, {h, 0.0, 0.0}, 0.0, solver);
+  const TangentialSolution more = problem.convected_step(load, {h, 0.0, 0.0}, {0.0, 0.0}, solver);
   problem.restore(memory);
   const double fd = (more.resultants[0] - base.resultants[0]) / h;
   EXPECT_NEAR(G(0, 0) / fd, 1.0, 0.02) << "G00 " << G(0, 0) << " finite difference " << fd;
@@ -43,29 +43,16 @@ TEST(ContactSensitivity, MatchesFiniteDifferencesAndMindlin) {
   EXPECT_NEAR(G(1, 1) / G(0, 0), 1.0, 0.02);  // the circle: x and y alike
 }
 
-TEST(ContactSensitivity, DissimilarMaterialsCouplePressureAndTraction) {
-  // A soft body on steel (kappa != 0, (4.3)) under partial slip: the traction changes the
-  // pressure (kappa B32) and the pressure the slip (kappa B21), and the slipping elements'
-  // traction turns with the slip. Newton's Jacobian is the derivative of the step's resultants
-  // with respect to the step's own increment: against central differences of the same step
-  // (from the same memory) for each shift. With no element changing state within +-h the map
-  // is linear there, so they agree to the solver's tolerance: bound 1e-3 (the stick-set-only
-  // sensitivity, which holds the pressure and the slipping tractions, is off by ~2x).
-  const MaterialPair m{Elastic::from_E_nu(2.0e9, 0.4), Elastic::from_E_nu(2.1e11, 0.3)};
-  ASSERT_GT(std::abs(m.kappa()) * m.body.G, 0.1);
-  const double R = 0.01, P = 10.0, mu = 0.3;
-  const SphereSetup s = sphere_setup(20, 1.3, m, R, P);
-  TangentialProblem problem(s.grid, m, s.heights, FrictionLaw::coulomb(mu));
-  SolverSpec solver = native_tangential_solver();
-  solver.tol = 1e-12;
-  const NormalSpec load{Control::force, P};
-  // Partial slip: a shift of a third of the full-sliding one (Mindlin: 3 mu P / (16 G* a)),
-  // a small rotation about z too.
-  const double G_star = 1.0 / ((2.0 - m.body.nu) / m.body.G + (2.0 - m.base.nu) / m.base.G);
-  const double shift = mu * P / (16.0 * G_star * s.hz.a);
+/// Newton's Jacobian of a step (`compute_full`, partial slip, kappa != 0) against central
+/// differences of the same step (from the same memory, the same travel) in each shift, to 1e-3.
+/// The step: a shift `a` with the memory carried over `travel` (m, along x and y).
+void expect_full_sensitivity_matches_central_differences(TangentialProblem& problem, double mu,
+                                                         const NormalSpec& load,
+                                                         const std::array<double, 3>& a,
+                                                         const std::array<double, 2>& travel,
+                                                         const SolverSpec& solver) {
   const TangentialMemory memory = problem.memory();  // before the step
-  const std::array<double, 3> a = {shift, 0.3 * shift, 0.0};
-  const TangentialSolution base = problem.convected_step(load, a, 0.0, solver);
+  const TangentialSolution base = problem.convected_step(load, a, travel, solver);
   expect_certified(base);
   ASSERT_GT(base.n_slip, 0);
   ASSERT_GT(base.n_stick, 0);
@@ -74,22 +61,64 @@ TEST(ContactSensitivity, DissimilarMaterialsCouplePressureAndTraction) {
   TangentialSensitivity::Coupling coupling{&problem.normal_compliance(), problem.tangential_from_normal(),
                                            problem.normal_from_tangential(), true};
   const Eigen::Matrix3d G =
-      sensitivity.compute_full(problem.tangential_compliance(), coupling, FrictionLaw::coulomb(mu), s.grid, base);
-  const Eigen::Matrix3d G0 = sensitivity.compute(problem.tangential_compliance(), s.grid, base);
+      sensitivity.compute_full(problem.tangential_compliance(), coupling, FrictionLaw::coulomb(mu), problem.grid(), base);
+  const Eigen::Matrix3d G0 = sensitivity.compute(problem.tangential_compliance(), problem.grid(), base);
   // Newton's Jacobian: the same step (from the same memory) with its increment changed by +-h.
-  const double h = 1e-4 * shift;
+  const double h = 1e-4 * std::hypot(a[0], a[1]);
   for (int l = 0; l < 2; ++l) {
     std::array<double, 3> plus = a, minus = a;
     plus[l] += h;
     minus[l] -= h;
     problem.restore(memory);
-    const TangentialSolution more = problem.convected_step(load, plus, 0.0, solver);
+    const TangentialSolution more = problem.convected_step(load, plus, travel, solver);
     problem.restore(memory);
-    const TangentialSolution less = problem.convected_step(load, minus, 0.0, solver);
+    const TangentialSolution less = problem.convected_step(load, minus, travel, solver);
     const double fd = (more.resultants[l] - less.resultants[l]) / (2.0 * h);
     EXPECT_NEAR(G(l, l) / fd, 1.0, 1e-3) << "mode " << l << ": coupled " << G(l, l) << ", uncoupled " << G0(l, l)
                                          << ", finite difference " << fd;
   }
+}
+
+/// A soft body on steel (kappa != 0, (4.3)), its Hertz setup and a partial-slip shift: a third of
+/// the full-sliding one (Mindlin: 3 mu P / (16 G* a)).
+struct SoftSphere {
+  MaterialPair m{Elastic::from_E_nu(2.0e9, 0.4), Elastic::from_E_nu(2.1e11, 0.3)};
+  double R = 0.01, P = 10.0, mu = 0.3;
+  SphereSetup s = sphere_setup(20, 1.3, m, R, P);
+  double shift = mu * P / (16.0 * (1.0 / ((2.0 - m.body.nu) / m.body.G + (2.0 - m.base.nu) / m.base.G)) * s.hz.a);
+  SolverSpec solver = [] {
+    SolverSpec sp = native_tangential_solver();
+    sp.tol = 1e-12;
+    return sp;
+  }();
+};
+
+TEST(ContactSensitivity, DissimilarMaterialsCouplePressureAndTraction) {
+  // A soft body on steel (kappa != 0, (4.3)) under partial slip: the traction changes the
+  // pressure (kappa B32) and the pressure the slip (kappa B21), and the slipping elements'
+  // traction turns with the slip. Newton's Jacobian is the derivative of the step's resultants
+  // with respect to the step's own increment: against central differences of the same step
+  // (from the same memory) for each shift. With no element changing state within +-h the map
+  // is linear there, so they agree to the solver's tolerance: bound 1e-3 (the stick-set-only
+  // sensitivity, which holds the pressure and the slipping tractions, is off by ~2x).
+  const SoftSphere b;
+  ASSERT_GT(std::abs(b.m.kappa()) * b.m.body.G, 0.1);
+  TangentialProblem problem(b.s.grid, b.m, b.s.heights, FrictionLaw::coulomb(b.mu));
+  expect_full_sensitivity_matches_central_differences(problem, b.mu, {Control::force, b.P},
+                                                      {b.shift, 0.3 * b.shift, 0.0}, {0.0, 0.0}, b.solver);
+}
+
+TEST(ContactSensitivity, HoldsForAStepWithLateralConvection) {
+  // The same after a first step, with the memory carried over a diagonal travel of (0.3, 0.4)
+  // elements (bilinear between four shifts): the travel is held in Newton's Jacobian, and at a
+  // fixed travel the step's linearisation is still the derivative of its resultants.
+  const SoftSphere b;
+  TangentialProblem problem(b.s.grid, b.m, b.s.heights, FrictionLaw::coulomb(b.mu));
+  const NormalSpec load{Control::force, b.P};
+  const std::array<double, 3> a = {0.3 * b.shift, 0.2 * b.shift, 0.0};
+  expect_certified(problem.convected_step(load, a, {0.0, 0.0}, b.solver));
+  expect_full_sensitivity_matches_central_differences(problem, b.mu, load, a,
+                                                      {0.3 * b.s.grid.dx, 0.4 * b.s.grid.dy}, b.solver);
 }
 
 }  // namespace
