@@ -10,6 +10,7 @@
 #include "dynamic_series.hpp"
 #include "fields_writer.hpp"
 #include "gnuplot_figures.hpp"
+#include "interrupt_handler.hpp"
 #include "summary_writer.hpp"
 
 namespace dc::cli {
@@ -78,7 +79,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   json summary = out.summary;
   json files = {{"summary", "summary.json"}, {"timeseries", "timeseries.csv"}};
   if (!snapshots.empty()) files["snapshots"] = snapshots;
-  if (c.output.plots) {
+  if (c.output.plots && !r.interrupted) {  // an interrupted run writes its data, not figures
     json plots = json::array();
     for (const auto& img : render_gnuplot(dir, c.name, figures(c))) plots.push_back(fs::path(img).filename().string());
     files["plots"] = plots;
@@ -87,7 +88,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   const std::string path = write_summary(dir, summary);
   if (!quiet) {
     std::printf("%s: %s, %d steps (%d rejected), contact model %s, %.3g s; worst certificate %.2e\n", c.name.c_str(),
-                r.completed ? "completed" : "stopped", r.steps, r.rejected_steps, r.contact_model.c_str(), elapsed,
+                r.completed ? "completed" : r.interrupted ? "interrupted" : "stopped", r.steps, r.rejected_steps, r.contact_model.c_str(), elapsed,
                 r.worst_certificate);
     if (r.fallback_steps > 0)
       std::printf("  %d steps fell back from the first backend (backends used: %s)\n", r.fallback_steps,
@@ -98,6 +99,15 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
                 r.final.velocity.y(), r.final.velocity.z(), r.final.omega.x(), r.final.omega.y(), r.final.omega.z());
     std::printf("wrote %s\n", path.c_str());
     std::fflush(stdout);
+  }
+  if (r.interrupted) {
+    std::cerr << "interrupted after " << r.steps << " step(s); the time series so far is in " << dir << "\n";
+    return interrupted_exit_code();
+  }
+  if (!r.input_error.empty()) {  // input a step could not take: named as any input error
+    std::cerr << "error: " << r.input_error << " (the run stopped there; the time series so far is in " << dir
+              << ")\n";
+    return kExitBadInput;
   }
   if (!r.completed) {
     std::cerr << "error: dynamic run " << r.status << "; the time series so far is in " << dir << "\n";

@@ -56,7 +56,7 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
   const dynamics::DynamicResult& r = out.result;
   const auto& sp = *c.dynamic;
   json summary = summary_header(c);
-  summary["status"] = r.completed ? "completed" : "stopped";
+  summary["status"] = r.completed ? "completed" : r.interrupted ? "interrupted" : "stopped";
   summary["message"] = r.status;
   summary["steps"] = r.steps;
   summary["rejected_steps"] = r.rejected_steps;

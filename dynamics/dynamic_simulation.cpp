@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "errors.hpp"
+#include "interrupt.hpp"
+
 namespace dc::dynamics {
 namespace {
 
@@ -61,62 +64,79 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
     // One step of the nominal dt, or 2^m sub-steps of it after failures (halving, then back).
     bool ok = false;
     std::string why;
-    for (int halvings = 0; halvings <= kMaxHalvings && !ok; ++halvings) {
-      if (halvings > 0) ++result.rejected_steps;
-      const int parts = 1 << halvings;
-      const RigidBodyState start = state;
-      const double h = (t_target - state.time) / parts;
-      ok = true;
-      Eigen::Vector3d imp = Eigen::Vector3d::Zero();
-      double imp_size = 0.0, w_ext = 0.0, w_contact = 0.0;
-      for (int part = 0; part < parts && ok; ++part) {
-        contact_.begin_step(h);
-        const int solves_before = contact_.solves();
-        auto wrench = [&](const StepKinematics& k) {
-          const Wrench ext = external(k.time);
-          const Wrench con = contact_.evaluate(k, ext.force.z());
-          return Wrench{ext.force + con.force, ext.moment + con.moment};
-        };
-        auto jacobian = [&](const StepKinematics&) { return contact_.jacobian(); };
-        const RigidBodyState before = state;
-        const StepReport report = stepper_.step(state, h, wrench, jacobian);
-        sample.newton_iterations += report.iterations;
-        if (!report.converged()) {
-          contact_.reject();
-          why = std::string("the step's Newton iteration did not converge (") + to_string(report.status) +
-                ", residual " + std::to_string(report.residual) + " m/s)";
-          ok = false;
-          break;
+    const RigidBodyState step_start = state;
+    try {
+      throw_if_interrupted();
+      for (int halvings = 0; halvings <= kMaxHalvings && !ok; ++halvings) {
+        if (halvings > 0) ++result.rejected_steps;
+        const int parts = 1 << halvings;
+        const RigidBodyState start = state;
+        const double h = (t_target - state.time) / parts;
+        ok = true;
+        Eigen::Vector3d imp = Eigen::Vector3d::Zero();
+        double imp_size = 0.0, w_ext = 0.0, w_contact = 0.0;
+        for (int part = 0; part < parts && ok; ++part) {
+          contact_.begin_step(h);
+          const int solves_before = contact_.solves();
+          auto wrench = [&](const StepKinematics& k) {
+            const Wrench ext = external(k.time);
+            const Wrench con = contact_.evaluate(k, ext.force.z());
+            return Wrench{ext.force + con.force, ext.moment + con.moment};
+          };
+          auto jacobian = [&](const StepKinematics&) { return contact_.jacobian(); };
+          const RigidBodyState before = state;
+          const StepReport report = stepper_.step(state, h, wrench, jacobian);
+          sample.newton_iterations += report.iterations;
+          if (!report.converged()) {
+            contact_.reject();
+            why = std::string("the step's Newton iteration did not converge (") + to_string(report.status) +
+                  ", residual " + std::to_string(report.residual) + " m/s)";
+            ok = false;
+            break;
+          }
+          const StepKinematics end{state.position, state.orientation, state.velocity, state.omega, state.time};
+          const Wrench ext = external(state.time);
+          contact_.accept(end, ext.force.z());
+          sample.contact_solves += contact_.solves() - solves_before;
+          const ContactState& cs = contact_.state();
+          if (!cs.converged) {
+            why = "the contact solve did not converge (" + cs.message + ")";
+            ok = false;
+            break;
+          }
+          const Wrench& con = cs.wrench;
+          const Eigen::Vector3d F = ext.force + con.force;
+          imp += h * F;
+          imp_size += h * F.norm();
+          // Work: the end-of-step wrench over the step's displacement and rotation (the scheme's own).
+          const Eigen::Vector3d dR = state.position - before.position;
+          const Eigen::Vector3d dTheta = h * state.omega;
+          w_ext += ext.force.dot(dR) + ext.moment.dot(dTheta);
+          w_contact += con.force.dot(dR) + con.moment.dot(dTheta);
         }
-        const StepKinematics end{state.position, state.orientation, state.velocity, state.omega, state.time};
-        const Wrench ext = external(state.time);
-        contact_.accept(end, ext.force.z());
-        sample.contact_solves += contact_.solves() - solves_before;
-        const ContactState& cs = contact_.state();
-        if (!cs.converged) {
-          why = "the contact solve did not converge (" + cs.message + ")";
-          ok = false;
-          break;
+        if (!ok) {
+          state = start;
+          stepper_.reset();
+          continue;
         }
-        const Wrench& con = cs.wrench;
-        const Eigen::Vector3d F = ext.force + con.force;
-        imp += h * F;
-        imp_size += h * F.norm();
-        // Work: the end-of-step wrench over the step's displacement and rotation (the scheme's own).
-        const Eigen::Vector3d dR = state.position - before.position;
-        const Eigen::Vector3d dTheta = h * state.omega;
-        w_ext += ext.force.dot(dR) + ext.moment.dot(dTheta);
-        w_contact += con.force.dot(dR) + con.moment.dot(dTheta);
+        impulse += imp;
+        impulse_size += imp_size;
+        external_work += w_ext;
+        contact_work += w_contact;
       }
-      if (!ok) {
-        state = start;
-        stepper_.reset();
-        continue;
-      }
-      impulse += imp;
-      impulse_size += imp_size;
-      external_work += w_ext;
-      contact_work += w_contact;
+    } catch (const Interrupted&) {  // the steps so far stand
+      result.interrupted = true;
+      why = "interrupted";
+      ok = false;
+    } catch (const InputError& e) {  // nothing a smaller step could mend
+      result.input_error = e.what();
+      why = e.what();
+      ok = false;
+    }
+    if (!ok) {
+      contact_.reject();
+      state = step_start;
+      stepper_.reset();
     }
     result.newton_iterations += sample.newton_iterations;
     result.contact_solves += sample.contact_solves;

@@ -31,6 +31,9 @@ struct DynamicSample {
 struct DynamicResult {
   bool completed = false;        ///< reached t_end with every step converged
   std::string status = "converged";  ///< or why and when it stopped
+  bool interrupted = false;      ///< stopped by an interrupt (core/interrupt.hpp) before a step
+  std::string input_error;       ///< "key: reason" when a step met input it cannot take (e.g. an
+                                 ///< upright-only profile tilting): the run stopped there
   int steps = 0, rejected_steps = 0;  ///< accepted steps; step halvings after a failed step
   int newton_iterations = 0, contact_solves = 0;
   std::string contact_model;     ///< transient | steady (auto resolved)
@@ -46,7 +49,8 @@ class DynamicSimulation {
  public:
   explicit DynamicSimulation(const Case& c);
   /// Runs to t_end; `on_step` after every accepted step (output, progress). Never throws for
-  /// non-convergence: the result says where and why it stopped.
+  /// non-convergence, an interrupt or input a step cannot take: the result says where and why
+  /// it stopped, with the steps before it.
   DynamicResult run(const std::function<void(const DynamicSample&)>& on_step);
 
   const RigidBody& body() const { return stepper_.body(); }

@@ -195,6 +195,24 @@ TEST_F(CliInterrupt, SweepWritesWhatItFinished) {
   }
 }
 
+TEST_F(CliInterrupt, DynamicRunWritesTheStepsItFinished) {
+  // A ball dropped on the half-space in 4000 steps; SIGTERM once the progress line shows.
+  json c = dc::test::example_json("ball-impact");
+  c["time"]["dt"] = 2e-8;
+  c["output"] = {{"plots", true}};
+  const Stopped s = interrupt({"solve", write(c), "--out", "res"}, SIGTERM,
+                              [this] { return slurp(dir_ / "stderr.txt").find("dynamic: ") != std::string::npos; });
+  EXPECT_EQ(s.code, 143) << s.err;
+  EXPECT_LT(s.seconds_after_signal, kStopSeconds);
+  const json summary = json::parse(slurp(dir_ / "res" / "summary.json"));
+  EXPECT_EQ(summary["status"], "interrupted");
+  const int steps = summary["steps"].get<int>();
+  EXPECT_GT(steps, 0);
+  EXPECT_LT(steps, 4000);
+  expect_whole_rows(dir_ / "res" / "timeseries.csv", static_cast<std::size_t>(steps));  // a row per step
+  EXPECT_FALSE(summary["files"].contains("plots")) << "an interrupted run writes its data, not figures";
+}
+
 TEST_F(CliInterrupt, TableWritesTheLinesItFinished) {
   // 200 lines of 10 points; one worker (the lines finish in order), the signal once the
   // progress line counts two lines done.

@@ -36,6 +36,11 @@ TEST_F(CliTiltedBody, UprightOnlyProfileThatTiltsIsAnInputErrorAtThatTime) {
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("error: profile.type: at t = "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("ellipsoid"), std::string::npos) << r.err;
+  // The run stopped cleanly at that step: the steps before it written, the summary says why.
+  const json s = json::parse(slurp(dir_ / "out" / "summary.json"));
+  EXPECT_EQ(s["status"], "stopped");
+  EXPECT_NE(s["message"].get<std::string>().find("profile.type"), std::string::npos) << s["message"];
+  EXPECT_EQ(slurp(dir_ / "out" / "timeseries.csv").empty(), false);
   const std::string ellipsoid = case_file({{"type", "ellipsoid"}, {"radius_x", R}, {"radius_y", R}});
   const CliResult ok = run("solve " + ellipsoid + " --out ok -q");
   EXPECT_EQ(ok.code, 0) << ok.err;
