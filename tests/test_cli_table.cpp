@@ -179,6 +179,13 @@ TEST_F(CliTable, AFailingPointIsReportedAndTheOthersKept) {
   EXPECT_EQ(meta["failed"][0]["row"], 2);
   EXPECT_EQ(meta["failed"][1]["row"], 3);
   EXPECT_FALSE(meta["failed"][0]["message"].get<std::string>().empty());
+  // Over MPI ranks: the same failures reported, the same files written.
+  if (!have_mpirun()) GTEST_SKIP() << "no mpirun here";
+  const auto mpi = run_mpi2("table " + file + " --creepage 0,1e-3,1e308,1e200 -q --out tab-ranks");
+  EXPECT_EQ(mpi.code, 3) << mpi.err;
+  EXPECT_NE(mpi.err.find("point 2"), std::string::npos) << mpi.err;
+  EXPECT_EQ(slurp(dir_ / "tab-ranks" / "table.csv"), slurp(dir_ / "tab" / "table.csv"));
+  EXPECT_EQ(slurp(dir_ / "tab-ranks" / "table.json"), slurp(dir_ / "tab" / "table.json"));
 }
 
 TEST_F(CliTable, BadRangesAreInputErrorsNamingTheOption) {
