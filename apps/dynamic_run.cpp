@@ -8,6 +8,7 @@
 
 #include "cli_common.hpp"
 #include "dynamic_series.hpp"
+#include "dynamic_sweep.hpp"
 #include "fields_writer.hpp"
 #include "gnuplot_figures.hpp"
 #include "interrupt_handler.hpp"
@@ -29,32 +30,21 @@ StaticFields step_fields(const Case& c, const dynamics::ContactState& cs) {
   return normal_fields(std::vector<double>(c.grid.size(), 0.0), 1e-9);
 }
 
-std::vector<GnuplotFigure> figures(const Case& c) {
-  struct Series {
-    const char* stem;
-    const char* ylabel;
-    std::vector<std::pair<int, const char*>> columns;
-  };
-  const std::vector<Series> all = {
-      {"position", "position (m)", {{2, "x"}, {3, "y"}, {4, "z"}}},
-      {"velocity", "velocity (m/s)", {{5, "vx"}, {6, "vy"}, {7, "vz"}}},
-      {"omega", "angular velocity (rad/s)", {{8, "wx"}, {9, "wy"}, {10, "wz"}}},
-      {"force", "contact force (N)", {{11, "Fx"}, {12, "Fy"}, {13, "Fz"}}},
-      {"moment", "contact moment about the centre of mass (N m)", {{14, "Mx"}, {15, "My"}, {16, "Mz"}}},
-      {"creepage", "creepage (-)", {{17, "creepage"}}},
-      {"stick", "stick fraction of the contact", {{18, "stick_fraction"}}},
-      {"approach", "approach (m)", {{19, "approach"}}},
-      {"contact_area", c.dimension == 2 ? "contact length (m)" : "contact area (m^2)", {{20, "contact area"}}},
-      {"energy", "kinetic energy (J)", {{24, "kinetic energy"}}},
-  };
+/// One figure per plotted quantity, every run's curves in it (`runs`: time series file and
+/// label; one run without a label for a single run).
+std::vector<GnuplotFigure> figures(const Case& c, const std::vector<std::pair<std::string, std::string>>& runs) {
   std::vector<GnuplotFigure> out;
-  for (const Series& s : all) {
+  for (const DynamicPlotSeries& s : dynamic_plot_series(c.dimension)) {
     std::ostringstream b;
     b << "set datafile separator \",\"\nset key top right noenhanced\nset grid\nset xlabel \"time (s)\"\n"
       << "set ylabel \"" << s.ylabel << "\"\nset title \"" << c.name << "\" noenhanced\nplot ";
-    for (std::size_t k = 0; k < s.columns.size(); ++k)
-      b << (k ? ", " : "") << "\"timeseries.csv\" using 1:" << s.columns[k].first << " skip 1 with lines lw 2 title \""
-        << s.columns[k].second << "\"";
+    bool first = true;
+    for (const auto& [file, label] : runs)
+      for (const auto& [column, name] : s.columns) {
+        b << (first ? "" : ", ") << "\"" << file << "\" using 1:" << column << " skip 1 with lines lw 2 title \""
+          << (label.empty() ? name : label + ": " + name) << "\"";
+        first = false;
+      }
     b << "\n";
     out.push_back({s.stem, b.str()});
   }
@@ -81,7 +71,8 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   if (!snapshots.empty()) files["snapshots"] = snapshots;
   if (c.output.plots && !r.interrupted) {  // an interrupted run writes its data, not figures
     json plots = json::array();
-    for (const auto& img : render_gnuplot(dir, c.name, figures(c))) plots.push_back(fs::path(img).filename().string());
+    for (const auto& img : render_gnuplot(dir, c.name, figures(c, {{"timeseries.csv", ""}})))
+      plots.push_back(fs::path(img).filename().string());
     files["plots"] = plots;
   }
   summary["files"] = files;
@@ -111,6 +102,46 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   }
   if (!r.completed) {
     std::cerr << "error: dynamic run " << r.status << "; the time series so far is in " << dir << "\n";
+    return kExitUnconverged;
+  }
+  return kExitOk;
+}
+
+int run_dynamic_sweep(const Case& c, const std::string& dir, bool quiet) {
+  DynamicSweepOutcome out = simulate_dynamic_sweep(c, quiet);
+  if (!out.root) return kExitOk;
+  for (std::size_t k = 0; k < out.files.size(); ++k) write_text_file((fs::path(dir) / out.files[k]).string(), out.texts[k]);
+  json& summary = out.summary;
+  json files = {{"summary", "summary.json"}, {"timeseries", out.files}};
+  if (c.output.plots && !out.interrupted) {  // an interrupted sweep writes its data, not figures
+    std::vector<std::pair<std::string, std::string>> runs;
+    for (std::size_t k = 0; k < out.files.size(); ++k) runs.emplace_back(out.files[k], out.labels[k]);
+    json plots = json::array();
+    for (const auto& img : render_gnuplot(dir, c.name, figures(c, runs))) plots.push_back(fs::path(img).filename().string());
+    files["plots"] = plots;
+  }
+  summary["files"] = files;
+  const std::string path = write_summary(dir, summary);
+  if (!quiet) {
+    for (const json& r : summary["runs"])
+      std::printf("%s %s: %s%s\n", c.name.c_str(), r["label"].get<std::string>().c_str(),
+                  r["status"].get<std::string>().c_str(),
+                  r.contains("message") && r["status"] != "completed" ? (", " + r["message"].get<std::string>()).c_str()
+                                                                        : "");
+    std::printf("wrote %s\n", path.c_str());
+    std::fflush(stdout);
+  }
+  if (out.interrupted) {
+    std::cerr << "interrupted after " << out.files.size() << " of " << out.planned
+              << " run(s) (the last may be partial); see " << path << '\n';
+    return interrupted_exit_code();
+  }
+  if (!out.input_error.empty()) {
+    std::cerr << "error: " << out.input_error << " (that run stopped there; see " << path << ")\n";
+    return kExitBadInput;
+  }
+  if (!out.all_completed) {
+    std::cerr << "error: a run stopped early (see " << path << ")\n";
     return kExitUnconverged;
   }
   return kExitOk;

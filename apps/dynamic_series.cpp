@@ -35,6 +35,21 @@ json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 }  // namespace
 
+std::vector<DynamicPlotSeries> dynamic_plot_series(int dimension) {
+  return {
+      {"position", "position (m)", {{2, "x"}, {3, "y"}, {4, "z"}}},
+      {"velocity", "velocity (m/s)", {{5, "vx"}, {6, "vy"}, {7, "vz"}}},
+      {"omega", "angular velocity (rad/s)", {{8, "wx"}, {9, "wy"}, {10, "wz"}}},
+      {"force", "contact force (N)", {{11, "Fx"}, {12, "Fy"}, {13, "Fz"}}},
+      {"moment", "contact moment about the centre of mass (N m)", {{14, "Mx"}, {15, "My"}, {16, "Mz"}}},
+      {"creepage", "creepage (-)", {{17, "creepage"}}},
+      {"stick", "stick fraction of the contact", {{18, "stick_fraction"}}},
+      {"approach", "approach (m)", {{19, "approach"}}},
+      {"contact_area", dimension == 2 ? "contact length (m)" : "contact area (m^2)", {{20, "contact area"}}},
+      {"energy", "kinetic energy (J)", {{24, "kinetic energy"}}},
+  };
+}
+
 DynamicOutcome simulate_dynamic(const Case& c, bool progress,
                                 const std::function<void(const dynamics::DynamicSample&)>& on_step) {
   dynamics::DynamicSimulation sim(c);

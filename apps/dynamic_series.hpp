@@ -4,6 +4,8 @@
 // returns them (the time series as NumPy columns).
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -18,6 +20,16 @@ struct DynamicOutcome {
   std::string timeseries;  ///< timeseries.csv: a header line, one row per accepted step
   double elapsed = 0.0;    ///< wall time of the run (s)
 };
+
+/// A plotted quantity of timeseries.csv: its figure's file stem, axis label and columns
+/// (1-based column number, legend).
+struct DynamicPlotSeries {
+  const char* stem;
+  const char* ylabel;
+  std::vector<std::pair<int, const char*>> columns;
+};
+/// The figures a dynamic run draws, one per quantity (the contact area's label by dimension).
+std::vector<DynamicPlotSeries> dynamic_plot_series(int dimension);
 
 /// Runs the case; `on_step` (optional) after every accepted step, e.g. to write snapshots; a
 /// progress line on stderr when `progress`. Never throws for non-convergence (the summary's

@@ -83,6 +83,8 @@ int run_solve(const SolveArgs& args) {
   const bool root = launch_rank().root();
   if (c.problem == ProblemKind::paper_cylinder)
     return run_paper_cylinder(c, root ? prepare_output_dir(c, args.out) : std::string(), args.quiet);
+  if (c.problem == ProblemKind::dynamic && c.sweep)
+    return run_dynamic_sweep(c, root ? prepare_output_dir(c, args.out) : std::string(), args.quiet);
   if (!root) return kExitOk;
   if (c.problem == ProblemKind::dynamic) return run_dynamic(c, prepare_output_dir(c, args.out), args.quiet);
   if (c.problem == ProblemKind::finite) return run_finite(c, prepare_output_dir(c, args.out), args.quiet);

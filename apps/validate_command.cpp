@@ -128,10 +128,13 @@ int run_validate(const ValidateArgs& args) {
       std::fprintf(stderr, "warning: grid: fewer than 6 elements across the contact; refine the grid\n");
   }
   if (c.problem == ProblemKind::paper_cylinder) validate_paper_cylinder(c);
-  else if (c.problem == ProblemKind::dynamic)
+  else if (c.problem == ProblemKind::dynamic) {
     std::printf("dynamic: %.6g s in steps of %.6g s (%s), normal model %s, contact model %s, %s\n", c.dynamic->t_end,
                 c.dynamic->dt, c.dynamic->bdf2 ? "bdf2" : "bdf1", to_string(c.dynamic->normal_model),
                 to_string(c.dynamic->contact_model), c.friction ? "with friction" : "frictionless");
+    if (c.sweep)  // every run's case read and checked
+      std::printf("sweep: %zu runs over %s\n", sweep_points(c).size(), c.sweep->key.c_str());
+  }
   else if (c.problem == ProblemKind::finite && !finite_supported())
     std::printf("note: this build has no finite-element support (needs libgmsh-dev, libsuitesparse-dev)\n");
   else if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential && c.problem != ProblemKind::finite)

@@ -277,7 +277,7 @@ const std::vector<BlockUse>& block_uses() {
       {"contact_model", {P::dynamic}},
       {"traction_model", {P::paper_cylinder}},
       {"dimensionless", {P::paper_cylinder}},
-      {"sweep", {P::paper_cylinder}},
+      {"sweep", {P::paper_cylinder, P::dynamic}},
       {"fe_body", {P::finite}},
   };
   return uses;
@@ -351,6 +351,9 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
     c.allow_edge_contact = JsonBlock(top.at("grid"), "grid").boolean_or("allow_edge_contact", false);
     check_contact_in_grid(c);
   }
+  if (top.has("sweep") && top.at("sweep").is_object() &&
+      (c.problem == ProblemKind::paper_cylinder || c.problem == ProblemKind::dynamic))
+    c.sweep = read_sweep(top.at("sweep"));
   if (c.problem == ProblemKind::paper_cylinder) c.paper_cylinder = read_paper_cylinder(document, c);
 
   // Blocks of the dynamic and finite problems: shape only, until their readers are here.

@@ -55,6 +55,12 @@ struct OutputSpec {
 // Solvers (nlp/, dynamics/) and the command line take these specs, never JSON.
 // Blocks still to come this way: none.
 
+/// `sweep`: one run per value of one key of the case (paper_cylinder, dynamic).
+struct SweepSpec {
+  std::string key;        ///< the swept key's path, e.g. "loads.moment.y.rate"
+  nlohmann::json values;  ///< a non-empty array, one run each
+};
+
 struct Case {
   std::string schema = "dyncontact/1";
   std::string name;
@@ -72,6 +78,7 @@ struct Case {
   std::optional<PaperCylinderSpec> paper_cylinder;  ///< problem paper_cylinder
   std::optional<FeBodySpec> fe_body;                ///< problem finite
   std::optional<DynamicSpec> dynamic;               ///< problem dynamic
+  std::optional<SweepSpec> sweep;                   ///< problems paper_cylinder, dynamic
   SolverSpec solver;
   OutputSpec output;
   std::vector<std::string> blocks;  ///< the top-level keys the case file gave
@@ -88,8 +95,11 @@ struct SweepPoint {
   Case run;
 };
 
-/// The runs of a case's sweep (paper_cylinder), each its own validated case; without a sweep
-/// the case itself.
+/// Reads the top-level `sweep` block (core/case_sweep.cpp).
+SweepSpec read_sweep(const nlohmann::json& block);
+
+/// The runs of a case's sweep, each its own validated case (its label "key = value", a
+/// "dimensionless." prefix left out); without a sweep the case itself (core/case_sweep.cpp).
 std::vector<SweepPoint> sweep_points(const Case& c);
 
 /// Parses JSON text; `origin` (file name) is used in messages, malformed JSON reports its line.

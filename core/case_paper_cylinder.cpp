@@ -122,32 +122,9 @@ PaperCylinderSpec read_paper_cylinder(const json& document, const Case& c) {
     }
   }
   s.traction_model = top.choice("traction_model", s.traction_model, {"numerical", "carter_poritsky"});
-  if (top.has("sweep")) {
-    const JsonBlock sw = top.child("sweep");
-    if (sw.raw().size() != 1)
-      throw InputError("sweep", "give exactly one key to sweep, e.g. {\"dimensionless.gamma_bar\": [...]}");
-    s.sweep_key = sw.raw().begin().key();
-    s.sweep_values = sw.raw().begin().value();
-    if (!s.sweep_values.is_array() || s.sweep_values.empty())
-      throw InputError("sweep." + s.sweep_key, "must be a non-empty array of values");
-    if (!s.dimensional && s.sweep_key.rfind("dimensionless.", 0) != 0)
-      throw InputError("sweep." + s.sweep_key, "with dimensionless inputs, sweep a dimensionless.* key");
-  }
+  if (c.sweep && !s.dimensional && c.sweep->key.rfind("dimensionless.", 0) != 0)
+    throw InputError("sweep." + c.sweep->key, "with dimensionless inputs, sweep a dimensionless.* key");
   return s;
-}
-
-std::vector<SweepPoint> sweep_points(const Case& c) {
-  if (!c.paper_cylinder || c.paper_cylinder->sweep_key.empty()) return {{"", json(), c}};
-  const PaperCylinderSpec& s = *c.paper_cylinder;
-  std::vector<SweepPoint> out;
-  for (const json& v : s.sweep_values) {
-    json doc = c.source;
-    doc.erase("sweep");
-    apply_override(doc, s.sweep_key + "=" + v.dump());
-    const std::string shown = s.dimensional ? s.sweep_key : s.sweep_key.substr(std::string("dimensionless.").size());
-    out.push_back({shown + " = " + (v.is_string() ? v.get<std::string>() : v.dump()), v, build_case(doc)});
-  }
-  return out;
 }
 
 }  // namespace dc

@@ -36,8 +36,6 @@ struct PaperCylinderSpec {
   PaperCylinderBody body;    ///< dimensional inputs
   bool bdf2 = false;         ///< time.scheme
   std::string traction_model = "carter_poritsky";  ///< or "numerical"
-  std::string sweep_key;                 ///< empty: no sweep
-  nlohmann::json sweep_values;           ///< the values of sweep_key, one run each
 };
 
 struct Case;

@@ -12,6 +12,7 @@
 
 #include "case_model.hpp"
 #include "dynamic_series.hpp"
+#include "dynamic_sweep.hpp"
 #include "module_common.hpp"
 #include "paper_cylinder_run.hpp"
 #include "python_runs.hpp"
@@ -42,7 +43,33 @@ py::dict csv_columns(const std::string& text) {
   return out;
 }
 
+/// A sweep's summary with each run's time series (by its file name) as NumPy columns in place
+/// of the name.
+py::dict with_series(const nlohmann::json& summary, const std::vector<std::string>& files,
+                     const std::vector<std::string>& texts) {
+  py::dict result = to_python(summary);
+  py::dict series;
+  for (std::size_t k = 0; k < files.size(); ++k) series[py::str(files[k])] = csv_columns(texts[k]);
+  auto columns_of = [&](py::handle run) {
+    const py::object name = run["timeseries"];
+    if (!name.is_none() && series.contains(name)) run["timeseries"] = series[name];
+  };
+  if (result.contains("runs"))
+    for (py::handle run : py::list(result["runs"])) columns_of(run);
+  if (result.contains("run")) columns_of(result["run"]);
+  if (result.contains("timeseries") && series.contains(result["timeseries"])) result["timeseries"] = series[result["timeseries"]];
+  return result;
+}
+
 py::dict run_dynamic_case(const Case& c, bool progress) {
+  if (c.sweep) {  // one run per value, each with its time series
+    cli::DynamicSweepOutcome out;
+    {
+      py::gil_scoped_release release;
+      out = cli::simulate_dynamic_sweep(c, !progress);
+    }
+    return with_series(out.summary, out.files, out.texts);
+  }
   cli::DynamicOutcome out;
   {
     py::gil_scoped_release release;
@@ -59,19 +86,7 @@ py::dict run_paper_cylinder_case(const Case& c, bool progress) {
     py::gil_scoped_release release;
     out = cli::simulate_paper_cylinder(c, !progress);
   }
-  py::dict result = to_python(out.summary);
-  // Each run's time series (by its file name) as NumPy columns in place of the name.
-  py::dict series;
-  for (std::size_t k = 0; k < out.files.size(); ++k) series[py::str(out.files[k])] = csv_columns(out.texts[k]);
-  auto columns_of = [&](py::handle run) {
-    const py::object name = run["timeseries"];
-    if (!name.is_none() && series.contains(name)) run["timeseries"] = series[name];
-  };
-  if (result.contains("runs"))
-    for (py::handle run : py::list(result["runs"])) columns_of(run);
-  if (result.contains("run")) columns_of(result["run"]);
-  if (result.contains("timeseries") && series.contains(result["timeseries"])) result["timeseries"] = series[result["timeseries"]];
-  return result;
+  return with_series(out.summary, out.files, out.texts);
 }
 
 namespace {

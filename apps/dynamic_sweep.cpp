@@ -1,0 +1,67 @@
+#include "dynamic_sweep.hpp"
+
+#include "dynamic_series.hpp"
+#include "progress.hpp"
+#include "table_ranks.hpp"
+
+namespace dc::cli {
+
+using nlohmann::json;
+
+DynamicSweepOutcome simulate_dynamic_sweep(const Case& c, bool quiet) {
+  const std::vector<SweepPoint> points = sweep_points(c);
+  const LaunchRank launched = launch_rank();
+  Progress progress("sweep", launched.root() && !quiet);
+  // One unit per run: its summary, its time series and how it ended (null: not run, interrupted).
+  const std::vector<json> units = run_distributed(
+      points.size(),
+      [&](std::size_t k) -> json {
+        const DynamicOutcome run = simulate_dynamic(points[k].run, false);
+        return {{"summary", run.summary},
+                {"timeseries", run.timeseries},
+                {"completed", run.result.completed},
+                {"interrupted", run.result.interrupted},
+                {"input_error", run.result.input_error}};
+      },
+      [&](std::size_t done, std::size_t total) { progress.count(done, total, "runs"); });
+  progress.finish();
+  DynamicSweepOutcome out;
+  out.root = launched.root();
+  if (!out.root) return out;
+  out.planned = points.size();
+
+  json runs = json::array();
+  for (std::size_t k = 0; k < units.size() && !out.interrupted; ++k) {
+    const json& u = units[k];
+    if (u.is_null()) {  // not run (interrupted): the runs before it
+      out.interrupted = true;
+      break;
+    }
+    json run = {{"label", points[k].label}, {"value", points[k].value}};
+    if (u.contains("error")) {  // a run that failed: reported, the others kept
+      run["status"] = "failed";
+      run["message"] = u["error"];
+      out.all_completed = false;
+      runs.push_back(run);
+      continue;
+    }
+    const std::string file = "timeseries_" + std::to_string(k) + ".csv";
+    for (auto it = u["summary"].begin(); it != u["summary"].end(); ++it) run[it.key()] = it.value();
+    run["timeseries"] = file;
+    runs.push_back(run);
+    out.files.push_back(file);
+    out.texts.push_back(u["timeseries"].get<std::string>());
+    out.labels.push_back(points[k].label);
+    out.all_completed = out.all_completed && u["completed"].get<bool>();
+    out.interrupted = u["interrupted"].get<bool>();
+    if (out.input_error.empty()) out.input_error = u["input_error"].get<std::string>();
+  }
+  out.summary = {{"name", c.name},
+                 {"problem", "dynamic"},
+                 {"sweep", {{"key", c.sweep->key}, {"values", c.sweep->values}}},
+                 {"status", out.interrupted ? "interrupted" : out.all_completed ? "completed" : "stopped"},
+                 {"runs", runs}};
+  return out;
+}
+
+}  // namespace dc::cli
