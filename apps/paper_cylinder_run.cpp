@@ -1,7 +1,9 @@
 #include "paper_cylinder_run.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -234,6 +236,21 @@ void validate_paper_cylinder(const Case& c) {
 
 namespace {
 
+/// The largest value in column `index` (0-based) of a CSV text with a header line.
+double column_max(const std::string& csv, std::size_t index) {
+  std::istringstream in(csv);
+  std::string line, cell;
+  std::getline(in, line);  // the header
+  double best = 0.0;
+  while (std::getline(in, line)) {
+    std::istringstream row(line);
+    for (std::size_t k = 0; k <= index && std::getline(row, cell, ','); ++k) {
+    }
+    best = std::max(best, std::strtod(cell.c_str(), nullptr));
+  }
+  return best;
+}
+
 /// One run of the sweep (a work unit of run_distributed): {"started", "ok", "interrupted", "run"
 /// (its entry of summary "runs"), "timeseries" (the CSV text), "line" (the report line)}.
 json sweep_unit(const Case& c, const std::vector<SweepPoint>& specs, std::size_t k) {
@@ -360,10 +377,17 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
     const char* names[][3] = {{"F_bar", "20", "friction force |F|/({/Symbol m}P)"},
                               {"l_bar", "21", "adhesion half-length 1 - d/l"},
                               {"v_bar", "22", "rigid-slip velocity |v|/({/Symbol m}{/Symbol e}V(0))"}};
+    // Gross sliding makes v^ of order 1/epsilon (10^3-10^4), which flattens the pre-sliding part
+    // (v^ of order 1) to zero on a linear axis: then v^ is drawn on a log axis.
+    double v_max = 0.0;
+    for (const std::string& text : out.texts) v_max = std::max(v_max, column_max(text, 21));
     for (const auto& n : names) {
+      const bool log_axis = std::string(n[0]) == "v_bar" && v_max > 10.0;
       std::ostringstream b;
       b << "set datafile separator \",\"\nset key top left noenhanced\nset grid\n"
-        << "set xlabel \"time  t {/Symbol m}P / (M V(0))\"\nset yrange [0:*]\nset ylabel \"" << n[2] << "\"\n"
+        << "set xlabel \"time  t {/Symbol m}P / (M V(0))\"\n"
+        << (log_axis ? "set logscale y\nset format y \"10^{%T}\"\n" : "set yrange [0:*]\n") << "set ylabel \""
+        << n[2] << (log_axis ? " (log scale)" : "") << "\"\n"
         << "set title \"" << c.name << "\" noenhanced\nplot ";
       for (std::size_t k = 0; k < files.size(); ++k)
         b << (k ? ", " : "") << "\"" << files[k] << "\" using 19:" << n[1] << " skip 1 with lines lw 2 title \""

@@ -72,6 +72,25 @@ TEST_F(CliPaperCylinder, SweepOfTheMomentRateReachesGrossSlidingWhereTheQuasiSta
   EXPECT_EQ(rows, s["runs"][0]["steps"].get<int>() + 1);
 }
 
+TEST_F(CliPaperCylinder, RigidSlipVelocityGoesOnALogAxisOnlyWhenARunSlides) {
+  // Gross sliding makes v_bar about 1/epsilon: a linear axis would flatten the creep phase.
+  auto v_bar_block = [&](const std::string& out) {
+    const std::string gp = slurp(dir_ / out / "plots.gp");
+    const auto at = gp.rfind("rigid-slip velocity");
+    return at == std::string::npos ? std::string() : gp.substr(gp.rfind("reset", at), gp.find("plot ", at) - gp.rfind("reset", at));
+  };
+  ASSERT_EQ(run("solve " + case_file([](json& d) { d["output"] = {{"plots", true}}; }) + " --out sliding -q").code, 0);
+  EXPECT_NE(v_bar_block("sliding").find("set logscale y"), std::string::npos) << v_bar_block("sliding");
+  const std::string creeping = case_file([](json& d) {
+    d["output"] = {{"plots", true}};
+    d["sweep"] = {{"dimensionless.gamma_bar", {0.1, 0.2}}};
+  });
+  ASSERT_EQ(run("solve " + creeping + " --out creeping -q").code, 0);
+  const std::string block = v_bar_block("creeping");
+  ASSERT_FALSE(block.empty());
+  EXPECT_EQ(block.find("set logscale y"), std::string::npos) << block;
+}
+
 TEST_F(CliPaperCylinder, SweepOverThreadsAndRanksWritesTheSameBytes) {
   // The sweep's runs spread over threads or `mpirun -n 2` ranks (dynamic assignment, gathered in
   // sweep order): the same summary.json and time series as one thread.
