@@ -38,12 +38,14 @@ std::vector<GnuplotFigure> figures(const Case& c, const std::vector<std::pair<st
     std::ostringstream b;
     b << "set datafile separator \",\"\nset key top right noenhanced\nset grid\nset xlabel \"time (s)\"\n"
       << "set ylabel \"" << s.ylabel << "\"\nset title \"" << c.name << "\" noenhanced\nplot ";
-    bool first = true;
-    for (const auto& [file, label] : runs)
-      for (const auto& [column, name] : s.columns) {
-        b << (first ? "" : ", ") << "\"" << file << "\" using 1:" << column << " skip 1 with lines lw 2 title \""
-          << (label.empty() ? name : label + ": " + name) << "\"";
-        first = false;
+    // A sweep: a colour per run, a dash pattern per column.
+    for (std::size_t r = 0; r < runs.size(); ++r)
+      for (std::size_t k = 0; k < s.columns.size(); ++k) {
+        const auto& [file, label] = runs[r];
+        b << (r + k == 0 ? "" : ", ") << "\"" << file << "\" using 1:" << s.columns[k].first
+          << " skip 1 with lines lw 2";
+        if (runs.size() > 1) b << " lc " << r + 1 << " dt " << k + 1;
+        b << " title \"" << (label.empty() ? s.columns[k].second : label + ": " + s.columns[k].second) << "\"";
       }
     b << "\n";
     out.push_back({s.stem, b.str()});
