@@ -152,7 +152,9 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
   state_.pressure = pressure;
   state_.contact_area = state_.n_contact * A;
   state_.stick_fraction = state_.n_contact > 0 ? static_cast<double>(state_.n_stick) / state_.n_contact : 0.0;
-  state_.creepage = V.x() != 0.0 ? increment[0] / (std::abs(V.x()) * dt_) : 0.0;
+  // Kalker's longitudinal creepage: the slip along the direction of travel over the speed.
+  const double speed2 = V.x() * V.x() + V.y() * V.y();
+  state_.creepage = speed2 > 0.0 ? (increment[0] * V.x() + increment[1] * V.y()) / (speed2 * dt_) : 0.0;
   state_.wrench = {F, M};
   if (!model_resolved_ && state_.in_contact) {
     // auto: transient while the step's travel |V| dt resolves the contact (a quarter of its
