@@ -13,7 +13,7 @@
 #                               table at 23k/93k/372k elements, Spence 35 and 69 steps) timed whole by
 #                               dyncontact_peer_bench: time (median of the runs), iterations,
 #                               alternations, error against the closed form (docs/solvers.md)
-#   scripts/bench.sh finite [--repeat 2] [--sparse-dofs 10k,50k] [--dofs 10k,50k,200k] [--grids 32,64]
+#   scripts/bench.sh finite [--repeat 2] [--sparse-dofs 10k] [--dofs 10k,50k,200k] [--grids 32,64]
 #                               problem "finite" (examples/bench/finite-hemisphere.json): a hemisphere of
 #                               about 10k, 50k and 200k dofs on a 32^2 and a 64^2 grid, condensed program
 #                               (native), and the sparse saddle form (Ipopt) for the bodies of
