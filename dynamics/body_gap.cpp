@@ -113,4 +113,27 @@ bool BodyGap::update(const Eigen::Quaterniond& q, double t) {
   return false;
 }
 
+GapSensitivity BodyGap::sensitivity(const Eigen::Quaterniond& q) const {
+  GapSensitivity d;
+  const bool ellipsoid = profile_.type == ProfileType::ellipsoid && grid_.dimension == 3;
+  if (!ellipsoid && !wheel_) return d;
+  if (wheel_ && elevation(q * Eigen::Vector3d::UnitY()) <= kSmoothCamber) return d;
+  EllipsoidShape ellipsoid_shape = ellipsoid_shape_;
+  CylinderShape cylinder_shape = cylinder_shape_;
+  auto at = [&](const Eigen::Vector3d& theta) {
+    const Eigen::Quaterniond turned =
+        theta.norm() > 0.0 ? Eigen::Quaterniond(Eigen::AngleAxisd(theta.norm(), theta.normalized())) * q : q;
+    return ellipsoid ? ellipsoid_shape.orient(turned.toRotationMatrix())
+                     : cylinder_shape.orient(turned * Eigen::Vector3d::UnitY());
+  };
+  constexpr double step = 1e-6;  // rad: round-off ~1e-16 / 1e-6 of the lowest point's lever
+  for (int l = 0; l < 3; ++l) {
+    const Eigen::Vector3d e = step * Eigen::Vector3d::Unit(l);
+    const OrientedShape plus = at(e), minus = at(-e);
+    d.centre_height(l) = (plus.centre_height - minus.centre_height) / (2.0 * step);
+    d.lowest.col(l) = (plus.lowest - minus.lowest) / (2.0 * step);
+  }
+  return d;
+}
+
 }  // namespace dc::dynamics

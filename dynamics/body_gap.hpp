@@ -21,6 +21,13 @@
 
 namespace dc::dynamics {
 
+/// How the body's lowest point moves as it turns: per unit rotation vector theta of
+/// q -> exp(theta) q (world frame, columns x, y, z).
+struct GapSensitivity {
+  Eigen::RowVector3d centre_height = Eigen::RowVector3d::Zero();  ///< d centre_height / d theta (m/rad)
+  Eigen::Matrix<double, 2, 3> lowest = Eigen::Matrix<double, 2, 3>::Zero();  ///< d lowest point / d theta (m/rad)
+};
+
 class BodyGap {
  public:
   /// Below this tilt (rad) a body counts as upright: the profile's own gap, turned about z.
@@ -47,6 +54,11 @@ class BodyGap {
   double centre_height() const { return oriented_.centre_height; }
   /// Horizontal position of the lowest point from the centre of mass.
   const Eigen::Vector2d& lowest_point() const { return oriented_.lowest; }
+  /// The lowest point's motion at orientation q (central differences of the shape's analytic
+  /// lowest point, no heights): an ellipsoid at any orientation, a wheel cambered by more than
+  /// kSmoothCamber (upright its rim contact has a kink); zero for the invariant and upright-only gaps.
+  GapSensitivity sensitivity(const Eigen::Quaterniond& q) const;
+  static constexpr double kSmoothCamber = 1e-3;
 
  private:
   enum class Mode { fixed, upright, tilted };

@@ -176,7 +176,8 @@ WrenchJacobian ContactWrench::jacobian() {
     kn = 2.0 * case_.materials.E_star() * std::sqrt(state_.contact_area / M_PI);
   if (kn > 0.0 && F.z() > 0.0) {
     // The pressure's centroid, and the slipping traction (proportional to p) follow the load.
-    const double mx = -state_.wrench.moment.y() + h * F.x(), my = state_.wrench.moment.x() - h * F.y();
+    // M = sum r x f, r = (x, y, -h): M_x = ybar F_z + h F_y, M_y = -xbar F_z - h F_x.
+    const double mx = -state_.wrench.moment.y() - h * F.x(), my = state_.wrench.moment.x() - h * F.y();
     const double xbar = mx / F.z(), ybar = my / F.z();
     Eigen::Vector3d dF(0.0, 0.0, -kn);
     if (tangential_) {
@@ -191,6 +192,17 @@ WrenchJacobian ContactWrench::jacobian() {
     }
     J.position.col(2).head<3>() = dF;
     J.position.col(2).tail<3>() = Eigen::Vector3d(h * dF.y() + ybar * dF.z(), -h * dF.x() - xbar * dF.z(), 0.0);
+  }
+  if (F.z() > 0.0) {
+    // The body turning moves its lowest point (2.6): the contact moves with it, carrying the
+    // moment of the normal force, and the approach centre_height - z changes as a lift of the
+    // centre (the position column's response to -dz).
+    const GapSensitivity d = gap_.sensitivity(last_.orientation);
+    for (int l = 0; l < 3; ++l) {
+      J.orientation.col(l) = -d.centre_height(l) * J.position.col(2);
+      J.orientation(3, l) += F.z() * d.lowest(1, l);
+      J.orientation(4, l) -= F.z() * d.lowest(0, l);
+    }
   }
   if (!tangential_) return J;
   // The model of the last evaluation (auto resolves after its first evaluation: that one's

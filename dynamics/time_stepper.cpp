@@ -75,15 +75,17 @@ class StepResidual final : public System6 {
     return r;
   }
 
-  /// dr/dx from the wrench's sensitivity: R = history + beta V, Omega = x_tail / rho; the
-  /// orientation's dependence on Omega (O(beta Omega) relative) is left out of d(I_world Omega).
+  /// dr/dx from the wrench's sensitivity: R = history + beta V, Omega = x_tail / rho, and
+  /// q = exp(theta_hist + beta Omega) q_K turns by beta dOmega (the exponential's differential
+  /// taken as the identity: O(theta) relative). The orientation's share of d(I_world Omega)
+  /// (O(beta Omega) relative) is left out.
   bool jacobian(const Vector6d& x, Matrix6d& J) const override {
     if (!wrench_jacobian_ || !*wrench_jacobian_) return false;
     const StepKinematics k = kinematics(x);
     const WrenchJacobian d = (*wrench_jacobian_)(k);
     if (!d.valid) return false;
     const Eigen::Matrix<double, 6, 3> dV = beta_ * d.position + d.velocity;  // d(F, M)/dV
-    const Eigen::Matrix<double, 6, 3> dW = d.omega / rho_;                    // d(F, M)/d(rho Omega)
+    const Eigen::Matrix<double, 6, 3> dW = (d.omega + beta_ * d.orientation) / rho_;  // d(F, M)/d(rho Omega)
     const double beta_m = beta_ / body_.mass();
     J.block<3, 3>(0, 0) = Eigen::Matrix3d::Identity() - beta_m * dV.topRows<3>();
     J.block<3, 3>(0, 3) = -beta_m * dW.topRows<3>();

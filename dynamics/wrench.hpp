@@ -28,12 +28,14 @@ struct Wrench {
 /// of up to a few pointers without allocating.
 using WrenchFunction = std::function<Wrench(const StepKinematics&)>;
 
-/// The sensitivity of the wrench (rows F, M) to the end-of-step position R, velocity V and
-/// angular velocity Omega (columns x, y, z; world frame); the orientation's share is left out.
+/// The sensitivity of the wrench (rows F, M) to the end-of-step position R, velocity V, angular
+/// velocity Omega and orientation q (columns x, y, z; world frame; the orientation's columns per
+/// unit rotation vector theta of q -> exp(theta) q).
 struct WrenchJacobian {
   Eigen::Matrix<double, 6, 3> position = Eigen::Matrix<double, 6, 3>::Zero();
   Eigen::Matrix<double, 6, 3> velocity = Eigen::Matrix<double, 6, 3>::Zero();
   Eigen::Matrix<double, 6, 3> omega = Eigen::Matrix<double, 6, 3>::Zero();
+  Eigen::Matrix<double, 6, 3> orientation = Eigen::Matrix<double, 6, 3>::Zero();
   bool valid = true;  ///< false: not available (Newton falls back to finite differences)
 };
 

@@ -11,6 +11,7 @@
 //   about x it touches with the rim of its lower end face.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -126,6 +127,31 @@ TEST(DynamicTiltedGap, SmallTiltMovesTheContactToTheTiltedLowestPoint) {
   expect_hertz(0.01);
 }
 
+TEST(DynamicTiltedGap, LowestPointMovesWithTheTurnAsTheClosedForm) {
+  // BodyGap::sensitivity, for Newton's Jacobian: turned further about y, the lowest point runs
+  // ahead by dx0/dtheta = (a^2 - c^2) (cos 2 theta - sin cos x0 / S) / S and the centre rises by
+  // dS/dtheta = x0; a turn about z carries the lowest point round, d lowest_y / d theta_z = x0.
+  const Case c = build_case(ellipsoid_case(-1e-3, 1e-3, 1e-3, 8, "dynamic"));
+  const BodyGap gap(c.profile, c.grid, kC);
+  for (double theta : {0.0, 0.01, 0.3, 1.2}) {
+    const TiltedEllipsoid t = closed_form(theta);
+    const double s = std::sin(theta), co = std::cos(theta);
+    const double dx0 = (kA * kA - kC * kC) * (std::cos(2.0 * theta) - s * co * t.x0 / t.depth) / t.depth;
+    const GapSensitivity d = gap.sensitivity(about_y(theta));
+    const double tol = 1e-6 * kA;  // central differences over 1e-6 rad
+    EXPECT_NEAR(d.lowest(0, 1), dx0, tol) << theta;
+    EXPECT_NEAR(d.centre_height(1), t.x0, tol) << theta;
+    EXPECT_NEAR(d.lowest(1, 2), t.x0, tol) << theta;
+    EXPECT_NEAR(d.lowest(1, 1), 0.0, tol) << theta;
+  }
+  // A sphere's gap is invariant: nothing moves.
+  nlohmann::json sphere = ellipsoid_case(-1e-3, 1e-3, 1e-3, 8, "dynamic");
+  sphere["profile"] = {{"type", "sphere"}, {"radius", kC}};
+  const Case cs = build_case(sphere);
+  const BodyGap round(cs.profile, cs.grid, kC);
+  EXPECT_EQ(round.sensitivity(about_y(0.3)).lowest.norm(), 0.0);
+}
+
 TEST(DynamicTiltedGap, UprightEllipsoidKeepsTheProfileGap) {
   const Case c = build_case(ellipsoid_case(-1e-3, 1e-3, 1e-3, 16, "dynamic"));
   BodyGap gap(c.profile, c.grid, kC);
@@ -153,9 +179,10 @@ TEST(DynamicTiltedGap, FrictionlessEllipsoidRocksWithTheMomentOfItsMovingLowestP
   doc["time"] = {{"dt", dt}, {"t_end", 0.5 * period}, {"scheme", "bdf2"}};
   const Case c = build_case(doc);
   DynamicSimulation run(c);
-  int steps = 0;
+  int steps = 0, worst_newton = 0;
   const DynamicResult r = run.run([&](const DynamicSample& s) {
     ++steps;
+    worst_newton = std::max(worst_newton, s.newton_iterations);
     const Eigen::Vector3d ex = s.state.orientation * Eigen::Vector3d::UnitX();
     const double psi = std::atan2(-ex.z(), ex.x());  // about y
     // The moment of the contact at the lowest point: its centroid to a tenth of an element.
@@ -166,6 +193,9 @@ TEST(DynamicTiltedGap, FrictionlessEllipsoidRocksWithTheMomentOfItsMovingLowestP
   });
   EXPECT_TRUE(r.completed) << r.status;
   EXPECT_EQ(steps, 24);
+  // The step's Jacobian carries the lowest point's motion with the turn (BodyGap::sensitivity):
+  // Newton converges in two iterations (four without it: the moment's stiffness unknown to it).
+  EXPECT_LE(worst_newton, 2);
 }
 
 TEST(DynamicTiltedGap, RockingEllipsoidLiftsItsCentreByTheDepthOfItsLowestPoint) {
@@ -190,7 +220,9 @@ TEST(DynamicTiltedGap, RockingEllipsoidLiftsItsCentreByTheDepthOfItsLowestPoint)
   const Case c = build_case(doc);
   DynamicSimulation run(c);
   double lift = 0.0;
+  int worst_newton = 0;
   const DynamicResult r = run.run([&](const DynamicSample& s) {
+    worst_newton = std::max(worst_newton, s.newton_iterations);
     const Eigen::Vector3d ex = s.state.orientation * Eigen::Vector3d::UnitX();
     const double psi = std::atan2(-ex.z(), ex.x());
     const auto hz = hertz_at(psi, s.contact.force.z());
@@ -201,6 +233,9 @@ TEST(DynamicTiltedGap, RockingEllipsoidLiftsItsCentreByTheDepthOfItsLowestPoint)
   });
   EXPECT_TRUE(r.completed) << r.status;
   EXPECT_GT(lift, 0.5 * (kA * kA - kC * kC) * amplitude * amplitude / (2.0 * kC));
+  // With the lowest point's motion and the approach's change in the Jacobian: at most four
+  // iterations (five without; the normal stiffness is the contact footprint's flat punch).
+  EXPECT_LE(worst_newton, 4);
 }
 
 nlohmann::json wheel_case(int ny) {
