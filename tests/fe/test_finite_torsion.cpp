@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "fe_test_bodies.hpp"
 #include "finite_contact.hpp"
 
 namespace dc {
@@ -29,13 +30,7 @@ double reissner_sagoci_moment(double a, double beta) {
 class StiffPunch {
  public:
   StiffPunch(double a, int n, double P = 1e5) : P_(P) {
-    FeBodySpec s;
-    s.shape = FeShape::cylinder;
-    s.radius = a;
-    s.height = a;
-    s.elements = {6, 6, 3};
-    s.contact_size = a / 6.0;
-    s.material = {fe::isotropic_stiffness(1000.0 * kE, kNu, "test"), 7800.0};
+    const FeBodySpec s = fe::testing::stiff_flat_cylinder(a, kE, kNu);
     const Grid g = Grid::make(3, n, n, -1.25 * a, 1.25 * a, -1.25 * a, 1.25 * a);
     contact_ = std::make_unique<FiniteContact>(s, g, Elastic::from_E_nu(kE, kNu));
     solver_.backend = "native";
