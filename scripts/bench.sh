@@ -14,7 +14,7 @@
 #                               dyncontact_peer_bench: time (median of the runs), iterations,
 #                               alternations, error against the closed form (docs/solvers.md)
 #   scripts/bench.sh finite [--repeat 2] [--sparse-dofs 10k] [--dofs 10k,50k,200k] [--grids 32,64]
-#                               problem "finite" (examples/bench/finite-hemisphere.json): a hemisphere of
+#                               problem "finite" (examples/bench/finite-hemisphere-bench.json): a hemisphere of
 #                               about 10k, 50k and 200k dofs on a 32^2 and a 64^2 grid, condensed program
 #                               (native), and the sparse saddle form (Ipopt) for the bodies of
 #                               --sparse-dofs on 32^2: factorisation, solve, iterations, peak memory,

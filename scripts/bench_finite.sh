@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/bench.sh finite: times problem "finite" (examples/bench/finite-hemisphere.json, a steel
+# scripts/bench.sh finite: times problem "finite" (examples/bench/finite-hemisphere-bench.json, a steel
 # hemisphere on a steel half-space under P, Hertz for the pair) over body sizes and grids.
 #   --dofs 10k,50k,200k     body sizes (about; the mesh's elements along each axis are chosen for them)
 #   --grids 32,64           contact grids (n^2 over +-1.5 a)
@@ -26,7 +26,7 @@ done
 [[ -x /usr/bin/time ]] || { echo "bench finite: /usr/bin/time missing (apt-get install time)" >&2; exit 1; }
 scripts/setup.sh
 exe="$BUILD_DIR/bin/dyncontact"
-case_file=examples/bench/finite-hemisphere.json
+case_file=examples/bench/finite-hemisphere-bench.json
 # The case's constants (Hertz for the pair: E* = E / (2 (1 - nu^2)) for equal materials).
 R=0.01 E=2.1e11 nu=0.3 P=3323.0
 elements_for() {  # body size -> Gmsh elements along x, y, z of the hemisphere (measured: 10.6k, 51k, 205k dofs)
