@@ -47,7 +47,7 @@ inline nlohmann::json drop_case(double E_body, const char* scheme, int steps) {
 
 struct Drop {
   double duration = 0.0, peak = 0.0, rebound = 0.0, mass = 0.0, max_momentum_error = 0.0, impulse = 0.0;
-  double max_body_displacement = 0.0;
+  double max_body_displacement = 0.0, centre_height = 0.0;
   DynamicResult result;
 };
 
@@ -56,7 +56,8 @@ inline Drop run_drop(const nlohmann::json& doc) {
   DynamicSimulation sim(c, make_finite_body(c));
   Drop out;
   out.mass = sim.body().mass();
-  const double zc = sim.finite_body()->centre_height();
+  out.centre_height = sim.finite_body() ? sim.finite_body()->centre_height() : c.dynamic->radius;
+  const double zc = sim.finite_body() ? sim.finite_body()->centre_height() : c.dynamic->radius;
   double t_prev = 0.0, z_prev = zc;
   Eigen::Vector3d v_prev(0.0, 0.0, -kV0);
   bool left = false;
@@ -75,8 +76,23 @@ inline Drop run_drop(const nlohmann::json& doc) {
     v_prev = s.state.velocity;
     out.rebound = s.state.velocity.z();
   });
-  out.max_body_displacement = sim.finite_body()->max_displacement();
+  if (sim.finite_body()) out.max_body_displacement = sim.finite_body()->max_displacement();
   return out;
+}
+
+/// The rigid-body dynamic case of the same drop: a rigid sphere profile of kR with the FE
+/// body's mass and centre height, on the same grid with the same steps.
+inline nlohmann::json rigid_drop_case(const nlohmann::json& fe_case, double mass, double centre_height) {
+  nlohmann::json doc = fe_case;
+  doc.erase("fe_body");
+  doc["materials"]["body"] = {{"rigid", true}};
+  doc["profile"] = {{"type", "sphere"}, {"radius", kR}};
+  const double I = 0.4 * mass * kR * kR;  // a central impact: the inertia plays no part
+  doc["body"] = {{"mass", mass},
+                 {"inertia", {I, I, I}},
+                 {"radius", centre_height},
+                 {"initial", {{"velocity", {0.0, 0.0, -kV0}}}}};
+  return doc;
 }
 
 }  // namespace dc::dynamics::test
