@@ -13,6 +13,7 @@
 #ifdef DYNCONTACT_WITH_FE
 #include "fields_writer.hpp"
 #include "finite_contact.hpp"
+#include "plot_writer.hpp"
 #include "progress.hpp"
 #include "static_fields.hpp"
 #include "summary_writer.hpp"
@@ -123,6 +124,14 @@ int run_finite(const Case& c, const std::string& dir, bool quiet) {
   }
   write_body_vtu((std::filesystem::path(dir) / "body.vtu").string(), fc.body().mesh(), f.body_u,
                  fc.body().element_stress(f.body_u));
+  if (c.output.plots && !f.run.interrupted) {  // as for the local problems: the contact fields
+    Case plotted = c;
+    plotted.normal = f.run.normal;
+    nlohmann::json plots = nlohmann::json::array();
+    for (const auto& p : write_static_plots(dir, plotted, f.run.fields.back()))
+      plots.push_back(std::filesystem::path(p).filename().string());
+    files["plots"] = plots;
+  }
   s["files"] = files;
   const std::string summary_path = write_summary(dir, s);
   if (!quiet) {

@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "blas_threads.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
   using namespace dc::cli;
   int exit_code = kExitOk;
   install_interrupt_handlers();
+  dc::use_one_blas_thread();
   try {
     CLI::App app{
         "dyncontact: frictional contact between an elastic body and an elastic half-space "

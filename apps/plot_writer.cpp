@@ -158,7 +158,7 @@ std::vector<std::string> write_static_plots(const std::string& dir, const Case& 
     figures.push_back({"pressure_map", pm.str()});
     std::ostringstream cm;
     cm << frame.str();
-    if (c.problem == ProblemKind::normal) {
+    if (!friction) {  // normal contact (also a finite body's)
       cm << "set title \"" << c.name << ": contact map\" noenhanced\n"
          << "set palette maxcolors 2\nset palette defined (0 \"#f0f0f0\", 1 \"#2c7bb6\")\n"
          << "set cbrange [-0.5:1.5]\nset cbtics (\"free\" 0, \"contact\" 1)\n";

@@ -5,6 +5,7 @@
 #
 # `cmake --install build --prefix P` installs
 #   P/lib/libdyncontact_{core,nlp,dynamics}.a   (shared with -DBUILD_SHARED_LIBS=ON)
+#   P/lib/libdyncontact_{fe,finite}.a           (with DYNCONTACT_WITH_FE: finite-element bodies)
 #   P/include/dyncontact/*.hpp                  (flat: #include "normal_problem.hpp")
 #   P/bin/dyncontact                            (install rule in apps/CMakeLists.txt)
 #   P/lib/cmake/dyncontact/                     (config, version, targets, find modules)
@@ -26,6 +27,11 @@ set(DYNCONTACT_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/dyncontact
 mark_as_advanced(DYNCONTACT_INSTALL_CMAKEDIR)
 
 set(_dyncontact_libraries dyncontact_core dyncontact_nlp dyncontact_dynamics)
+set(_dyncontact_find_modules ${CMAKE_CURRENT_LIST_DIR}/FindFFTW3.cmake ${CMAKE_CURRENT_LIST_DIR}/FindIpopt.cmake)
+if(DYNCONTACT_WITH_FE)  # finite-element bodies: dyncontact_fe (Gmsh, CHOLMOD) and dyncontact_finite
+  list(APPEND _dyncontact_libraries dyncontact_fe dyncontact_finite)
+  list(APPEND _dyncontact_find_modules ${CMAKE_CURRENT_LIST_DIR}/FindGmsh.cmake ${CMAKE_CURRENT_LIST_DIR}/FindCHOLMOD.cmake)
+endif()
 
 install(TARGETS ${_dyncontact_libraries}
   EXPORT dyncontactTargets
@@ -55,8 +61,8 @@ write_basic_package_version_file(
 install(FILES
   ${CMAKE_CURRENT_BINARY_DIR}/dyncontactConfig.cmake
   ${CMAKE_CURRENT_BINARY_DIR}/dyncontactConfigVersion.cmake
-  ${CMAKE_CURRENT_LIST_DIR}/FindFFTW3.cmake
-  ${CMAKE_CURRENT_LIST_DIR}/FindIpopt.cmake
+  ${_dyncontact_find_modules}
   DESTINATION ${DYNCONTACT_INSTALL_CMAKEDIR})
 
 unset(_dyncontact_libraries)
+unset(_dyncontact_find_modules)

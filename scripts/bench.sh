@@ -13,6 +13,12 @@
 #                               table at 23k/93k/372k elements, Spence 35 and 69 steps) timed whole by
 #                               dyncontact_peer_bench: time (median of the runs), iterations,
 #                               alternations, error against the closed form (docs/solvers.md)
+#   scripts/bench.sh finite [--repeat 2] [--sparse-dofs 10k] [--dofs 10k,50k,200k] [--grids 32,64]
+#                               problem "finite" (examples/bench/finite-hemisphere-bench.json): a hemisphere of
+#                               about 10k, 50k and 200k dofs on a 32^2 and a 64^2 grid, condensed program
+#                               (native), and the sparse saddle form (Ipopt) for the bodies of
+#                               --sparse-dofs on 32^2: factorisation, solve, iterations, peak memory,
+#                               p0 against Hertz (medians of --repeat runs; docs/finite.md)
 # --sizes/--backends override the defaults; other arguments go to dyncontact_bench (e.g. --repeat 3, --force, --csv out/bench.csv).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -41,6 +47,10 @@ if [[ "${1:-}" == "peer" ]]; then
   fi
   echo "== peer cases (threads: ${DYNCONTACT_THREADS:-all cores})"
   exec "$peer" "${opts[@]}" "${cases[@]}"
+fi
+if [[ "${1:-}" == "finite" ]]; then
+  shift
+  exec scripts/bench_finite.sh "$@"
 fi
 while [[ $# -gt 0 ]]; do
   case "$1" in

@@ -26,6 +26,8 @@ PACKAGES=(
   libopenmpi-dev openmpi-bin
   python3-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib
   libgmsh-dev libsuitesparse-dev  # finite-element bodies (DYNCONTACT_WITH_FE)
+  libopenblas0-pthread  # an optimised BLAS for CHOLMOD and MUMPS (reference BLAS: 6x slower factorisations)
+  time  # /usr/bin/time: peak memory in scripts/bench.sh finite
 )
 FUZZ_PACKAGES=(clang libclang-rt-dev)
 if [[ "${DYNCONTACT_WITH_FUZZ:-0}" == 1 ]]; then PACKAGES+=("${FUZZ_PACKAGES[@]}"); fi

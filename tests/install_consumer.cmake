@@ -73,6 +73,23 @@ if(EXISTS ${prefix}/bin/dyncontact)
 else()
   message(FATAL_ERROR "install_consumer: ${prefix}/bin/dyncontact not installed")
 endif()
+# With finite-element bodies: their headers, and the installed command solves a finite case
+# (Gmsh meshes it, CHOLMOD factorises it: nothing else is needed at run time).
+file(STRINGS ${config_file} with_fe REGEX "^set\\(dyncontact_WITH_FE ON\\)")
+if(with_fe)
+  foreach(h finite_contact.hpp elastic_body.hpp)
+    if(NOT EXISTS ${prefix}/include/dyncontact/${h})
+      message(FATAL_ERROR "install_consumer: header ${prefix}/include/dyncontact/${h} not installed")
+    endif()
+  endforeach()
+  run_step("installed dyncontact example finite-hemisphere" ${prefix}/bin/dyncontact example finite-hemisphere)
+  file(WRITE ${WORK_DIR}/finite.json "${step_output}")
+  run_step("installed dyncontact solves a finite case" ${prefix}/bin/dyncontact solve ${WORK_DIR}/finite.json
+           --out ${WORK_DIR}/finite-out -q --set output.plots=false --set grid.nx=12 --set grid.ny=12)
+  if(NOT EXISTS ${WORK_DIR}/finite-out/body.vtu)
+    message(FATAL_ERROR "install_consumer: the installed dyncontact wrote no body.vtu")
+  endif()
+endif()
 
 set(configure_args -S ${CONSUMER_SOURCE} -B ${consumer_build} -G ${GENERATOR}
     -DCMAKE_BUILD_TYPE=${CONFIG}

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "fe_test_bodies.hpp"
 #include "finite_contact.hpp"
 #include "hertz.hpp"
 
@@ -12,17 +13,7 @@ namespace {
 
 constexpr double kE = 2.1e11, kNu = 0.3;
 
-/// A flat-ended cylinder of radius and height a, 1000 times stiffer than the half-space.
-FeBodySpec stiff_flat_cylinder(double a) {
-  FeBodySpec s;
-  s.shape = FeShape::cylinder;
-  s.radius = a;
-  s.height = a;
-  s.elements = {6, 6, 3};
-  s.contact_size = a / 6.0;
-  s.material = {fe::isotropic_stiffness(1000.0 * kE, kNu, "test"), 7800.0};
-  return s;
-}
+FeBodySpec stiff_flat_cylinder(double a) { return fe::testing::stiff_flat_cylinder(a, kE, kNu); }
 
 /// 40 x 40 elements over +-1.25 a: the punch as a staircase of 32 elements across.
 Grid punch_grid(double a) { return Grid::make(3, 40, 40, -1.25 * a, 1.25 * a, -1.25 * a, 1.25 * a); }

@@ -40,6 +40,14 @@ TEST_F(FiniteCli, HemisphereExampleSolvesWithBodyOutputs) {
   EXPECT_GE(s["factorisation_time_s"].get<double>(), 0.0);
   EXPECT_TRUE(fs::exists(dir_ / "out" / "body.vtu"));
   EXPECT_TRUE(fs::exists(dir_ / "out" / "fields.csv"));
+  // Plots as for the local problems (none, without failing, where gnuplot is missing).
+  ASSERT_TRUE(s["files"].contains("plots"));
+  for (const auto& p : s["files"]["plots"]) {
+    EXPECT_TRUE(fs::exists(dir_ / "out" / p.get<std::string>())) << p;
+  }
+  if (!s["files"]["plots"].empty()) {
+    EXPECT_TRUE(fs::exists(dir_ / "out" / "contact_map.svg"));
+  }
   // Hertz for the pair (both steel): peak pressure within 5 % (the mesh error, see test_finite_contact).
   const dc::MaterialPair pair{dc::Elastic::from_E_nu(2.1e11, 0.3), dc::Elastic::from_E_nu(2.1e11, 0.3)};
   const json c = dc::test::example_json("finite-hemisphere");
