@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
   using namespace dc::cli;
   int exit_code = kExitOk;
   install_interrupt_handlers();
-  use_one_blas_thread();  // the same bytes over threads and ranks (blas_threads.hpp)
+  dc::use_one_blas_thread();
   try {
     CLI::App app{
         "dyncontact: frictional contact between an elastic body and an elastic half-space "

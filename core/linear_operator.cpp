@@ -181,6 +181,12 @@ std::unique_ptr<LinearOperator> HalfSpace::tangential_from_normal(OperatorKind k
 }
 
 namespace {
+/// Steady rolling's convective form of a compliance: here minus upstream, table by table.
+void subtract_upstream(std::vector<KernelTable>& blocks, const std::vector<KernelTable>& upstream) {
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    for (std::size_t i = 0; i < blocks[b].values.size(); ++i) blocks[b].values[i] -= upstream[b].values[i];
+}
+
 /// Table of the same kernel with every offset moved by (shift_x, shift_y) elements:
 /// at(di, dj) = K(di + shift_x, dj + shift_y). 2-D grids have no y offsets (shift_y must be 0).
 KernelTable shifted_table(const Grid& grid, const MaterialPair& m, Axis out, Axis in, int shift_x, int shift_y,
@@ -221,10 +227,20 @@ std::unique_ptr<LinearOperator> HalfSpace::tangential_shifted(int shift_x, int s
 std::unique_ptr<LinearOperator> HalfSpace::tangential_convective(int shift, OperatorKind kind) const {
   std::vector<KernelTable> blocks = tangential_tables(grid_, materials_, 0, 0, options_);
   const std::vector<KernelTable> upstream = tangential_tables(grid_, materials_, shift, 0, options_);
-  for (std::size_t b = 0; b < blocks.size(); ++b)
-    for (std::size_t i = 0; i < blocks[b].values.size(); ++i) blocks[b].values[i] -= upstream[b].values[i];
+  subtract_upstream(blocks, upstream);
   const int m = tangential_components();
   return make_convolution_operator(grid_, std::move(blocks), m, m, kind);
+}
+
+std::unique_ptr<LinearOperator> HalfSpace::tangential_from_normal_convective(int shift, OperatorKind kind) const {
+  std::vector<KernelTable> blocks{influence_table(grid_, materials_, kX, kZ, options_)};
+  std::vector<KernelTable> upstream{shifted_table(grid_, materials_, kX, kZ, shift, 0, options_)};
+  if (grid_.dimension == 3) {
+    blocks.push_back(influence_table(grid_, materials_, kY, kZ, options_));
+    upstream.push_back(shifted_table(grid_, materials_, kY, kZ, shift, 0, options_));
+  }
+  subtract_upstream(blocks, upstream);
+  return make_convolution_operator(grid_, std::move(blocks), tangential_components(), 1, kind);
 }
 
 std::unique_ptr<LinearOperator> HalfSpace::tangential_from_normal_shifted(int shift_x, int shift_y,

@@ -68,6 +68,9 @@ class HalfSpace {
   /// operator (one transform per apply): the slip a traction field produces per `shift`
   /// elements of travel when it is the same upstream and here ((2.19), (4.4)-(4.6)).
   std::unique_ptr<LinearOperator> tangential_convective(int shift, OperatorKind kind = OperatorKind::automatic) const;
+  /// The same for the kappa B21 term: tangential_from_normal() - tangential_from_normal_shifted(shift, 0).
+  std::unique_ptr<LinearOperator> tangential_from_normal_convective(int shift,
+                                                                    OperatorKind kind = OperatorKind::automatic) const;
   int tangential_components() const { return grid_.dimension == 2 ? 1 : 2; }
 
  private:

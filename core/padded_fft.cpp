@@ -79,19 +79,35 @@ void PaddedFft::inverse(double* field) {
 
 void PaddedFft::periodic_forward(const std::vector<double>& box, std::vector<double>& out) const {
   if (box.size() != static_cast<std::size_t>(mx_) * my_) throw std::invalid_argument("padded FFT: box size");
-  std::vector<double> in(box);
-  out.assign(2 * spectrum_size(), 0.0);
+  // FFTW's own (SIMD-aligned) buffers: planned on a std::vector's storage, the transform's
+  // codelets, hence its round-off, would depend on where the heap happened to place it (a
+  // process under mpirun gave other last digits than the same run without).
+  const std::size_t complex_values = spectrum_size();
+  double* in = fftw_alloc_real(box.size());
+  fftw_complex* spectrum = fftw_alloc_complex(complex_values);
+  if (!in || !spectrum) {
+    fftw_free(in);
+    fftw_free(spectrum);
+    throw std::bad_alloc();
+  }
+  std::copy(box.begin(), box.end(), in);
   fftw_plan plan;
   {
     std::lock_guard<std::mutex> lock(fft_planner_mutex());
     fftw_plan_with_nthreads(1);
-    plan = my_ > 1 ? fftw_plan_dft_r2c_2d(my_, mx_, in.data(), as_complex(out.data()), FFTW_ESTIMATE)
-                   : fftw_plan_dft_r2c_1d(mx_, in.data(), as_complex(out.data()), FFTW_ESTIMATE);
+    plan = my_ > 1 ? fftw_plan_dft_r2c_2d(my_, mx_, in, spectrum, FFTW_ESTIMATE)
+                   : fftw_plan_dft_r2c_1d(mx_, in, spectrum, FFTW_ESTIMATE);
   }
+  if (plan) {
+    fftw_execute(plan);
+    const double* values = reinterpret_cast<const double*>(spectrum);
+    out.assign(values, values + 2 * complex_values);
+    std::lock_guard<std::mutex> lock(fft_planner_mutex());
+    fftw_destroy_plan(plan);
+  }
+  fftw_free(in);
+  fftw_free(spectrum);
   if (!plan) throw std::runtime_error("FFTW could not plan a periodic transform");
-  fftw_execute(plan);
-  std::lock_guard<std::mutex> lock(fft_planner_mutex());
-  fftw_destroy_plan(plan);
 }
 
 }  // namespace dc

@@ -152,7 +152,9 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
   state_.pressure = pressure;
   state_.contact_area = state_.n_contact * A;
   state_.stick_fraction = state_.n_contact > 0 ? static_cast<double>(state_.n_stick) / state_.n_contact : 0.0;
-  state_.creepage = V.x() != 0.0 ? increment[0] / (std::abs(V.x()) * dt_) : 0.0;
+  // Kalker's longitudinal creepage: the slip along the direction of travel over the speed.
+  const double speed2 = V.x() * V.x() + V.y() * V.y();
+  state_.creepage = speed2 > 0.0 ? (increment[0] * V.x() + increment[1] * V.y()) / (speed2 * dt_) : 0.0;
   state_.wrench = {F, M};
   if (!model_resolved_ && state_.in_contact) {
     // auto: transient while the step's travel |V| dt resolves the contact (a quarter of its
@@ -210,19 +212,26 @@ WrenchJacobian ContactWrench::jacobian() {
   const bool steady = steady_ && !off_axis_;
   // G = d(F_x, F_y, M_z)/d(q_x, q_y, q_z): transient q = a = dt (V_x - h W_y, V_y + h W_x, W_z),
   // steady q = a / (V_x dt) (creepages and spin).
-  // Transient: the full linearisation (kappa != 0: the pressure follows the traction,
-  // (4.2)-(4.3)); steady: the creep law's, the pressure held.
+  // The full linearisation, kappa != 0 included (the pressure follows the traction,
+  // (4.2)-(4.3)): transient d(ds) = dm + B22 dtau + kappa B21 dp; steady, per element of
+  // travel, d(ds) = dx dxi m + (B22 - S B22) dtau + kappa (B21 - S B21) dp. Without kappa the
+  // steady creep law's own linearisation (compute_steady) is the same and cheaper.
   TangentialSensitivity::Coupling coupling;
   if (const LinearOperator* B21 = tangential_->tangential_from_normal()) {
     coupling.C = &tangential_->normal_compliance();
-    coupling.B21 = B21;
+    coupling.B21 = steady ? tangential_->convective_from_normal() : B21;
     coupling.B32 = tangential_->normal_from_tangential();
     coupling.force_control = spec_.normal_model == NormalModel::quasi_static;
   }
-  const Eigen::Matrix3d G =
-      steady ? sensitivity_.compute_steady(tangential_->convective_compliance(), tangential_->tangential_compliance(),
-                                           case_.grid, solution_)
-             : sensitivity_.compute_full(tangential_->tangential_compliance(), coupling, *law_, case_.grid, solution_);
+  Eigen::Matrix3d G;
+  if (!steady)
+    G = sensitivity_.compute_full(tangential_->tangential_compliance(), coupling, *law_, case_.grid, solution_);
+  else if (coupling.B21)
+    G = case_.grid.dx *
+        sensitivity_.compute_full(tangential_->convective_compliance(), coupling, *law_, case_.grid, solution_);
+  else
+    G = sensitivity_.compute_steady(tangential_->convective_compliance(), tangential_->tangential_compliance(),
+                                    case_.grid, solution_);
   Eigen::Matrix<double, 6, 3> dq;  // the wrench rows per unit q_l
   for (int l = 0; l < 3; ++l) {
     dq(0, l) = G(0, l);

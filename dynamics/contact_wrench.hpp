@@ -29,7 +29,8 @@ struct ContactState {
   double contact_area = 0.0;     ///< m^2 (2-D: contact length, m)
   double stick_fraction = 0.0;   ///< stick area / contact area (0 without contact)
   int n_contact = 0, n_stick = 0, n_slip = 0;
-  double creepage = 0.0;         ///< rigid slip velocity at the contact centre / |V_x| along x (0 when V_x = 0)
+  double creepage = 0.0;         ///< longitudinal creepage: the rigid slip velocity at the contact centre along the
+                                 ///< horizontal travel, over the travel speed (0 at rest); a pure x roll: slip_x / V_x
   double certificate = 0.0;      ///< worst residual of the contact solve (0 without contact)
   bool converged = true;
   std::string message;           ///< why not converged

@@ -52,6 +52,7 @@ struct TangentialProblem::Impl {
   std::unique_ptr<LinearOperator> B21, B32;  // kappa terms (only when coupled)
   std::unique_ptr<LinearOperator> Ct_up, B21_up;  // rolling: upstream displacement
   std::unique_ptr<LinearOperator> D_conv;          // steady rolling: Ct - Ct_up
+  std::unique_ptr<LinearOperator> D21_conv;        // its kappa term B21 - B21_up (sensitivities)
   // convected steps: Ct and kappa B21 shifted by whole elements (kx, ky), built once per shift
   // pair and kept (a step interpolates between at most four of them)
   struct ShiftedCompliance {
@@ -924,6 +925,14 @@ const LinearOperator& TangentialProblem::convective_compliance() {
   if (!s.half_space) throw InputError("tangential.regime", "convection is not available for a finite body");
   if (!s.D_conv) s.D_conv = s.half_space->tangential_convective(1, s.kind);
   return *s.D_conv;
+}
+
+const LinearOperator* TangentialProblem::convective_from_normal() {
+  Impl& s = *impl_;
+  if (!s.coupled) return nullptr;
+  if (!s.half_space) throw InputError("tangential.regime", "convection is not available for a finite body");
+  if (!s.D21_conv) s.D21_conv = s.half_space->tangential_from_normal_convective(1, s.kind);
+  return s.D21_conv.get();
 }
 
 double TangentialProblem::traction_scale(const std::vector<double>& tx, const std::vector<double>& ty,

@@ -134,6 +134,8 @@ class TangentialProblem {
   const LinearOperator* normal_from_tangential() const;
   /// Steady rolling's convective compliance B22 - S B22 (one element of travel), built on first use.
   const LinearOperator& convective_compliance();
+  /// Its kappa term kappa (B21 - S B21), built on first use; null when kappa = 0.
+  const LinearOperator* convective_from_normal();
 
   const Grid& grid() const { return grid_; }
   /// Certificate of a traction field for given slip increments and bounds (every solve, tests):

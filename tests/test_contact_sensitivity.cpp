@@ -121,5 +121,42 @@ TEST(ContactSensitivity, HoldsForAStepWithLateralConvection) {
                                                       {0.3 * b.s.grid.dx, 0.4 * b.s.grid.dy}, b.solver);
 }
 
+TEST(ContactSensitivity, SteadyRollingWithDissimilarMaterialsMatchesCentralDifferences) {
+  // The steady model's Jacobian with kappa != 0: per element of travel the slip is
+  // d(ds) = dx dxi m + (B22 - S B22) dtau + kappa (B21 - S B21) dp, and the pressure follows the
+  // traction through kappa B32. Against central differences of steady rolling in each
+  // creepage, to 1e-3; the creep law's own linearisation (the pressure held) is reported beside.
+  const SoftSphere b;
+  TangentialProblem problem(b.s.grid, b.m, b.s.heights, FrictionLaw::coulomb(b.mu));
+  const double creepage = 0.2 * b.mu * b.s.hz.a / b.R;  // partial slip: about a third of Kalker's saturation
+  RollingLoad rolling;
+  rolling.normal = {Control::force, b.P};
+  rolling.modes[0].value = creepage;
+  rolling.modes[1].value = 0.3 * creepage;
+  const TangentialSolution base = problem.steady_rolling(rolling, b.solver);
+  expect_certified(base);
+  ASSERT_GT(base.n_slip, 0);
+  ASSERT_GT(base.n_stick, 0);
+  ASSERT_NE(problem.convective_from_normal(), nullptr);
+  TangentialSensitivity sensitivity;
+  const TangentialSensitivity::Coupling coupling{&problem.normal_compliance(), problem.convective_from_normal(),
+                                                 problem.normal_from_tangential(), true};
+  const Eigen::Matrix3d G = b.s.grid.dx * sensitivity.compute_full(problem.convective_compliance(), coupling,
+                                                                   FrictionLaw::coulomb(b.mu), problem.grid(), base);
+  const Eigen::Matrix3d G0 = sensitivity.compute_steady(problem.convective_compliance(),
+                                                        problem.tangential_compliance(), problem.grid(), base);
+  const double h = 1e-4 * creepage;
+  for (int l = 0; l < 2; ++l) {
+    RollingLoad plus = rolling, minus = rolling;
+    plus.modes[l].value += h;
+    minus.modes[l].value -= h;
+    const double fd =
+        (problem.steady_rolling(plus, b.solver).resultants[l] - problem.steady_rolling(minus, b.solver).resultants[l]) /
+        (2.0 * h);
+    EXPECT_NEAR(G(l, l) / fd, 1.0, 1e-3) << "creepage " << l << ": coupled " << G(l, l) << ", pressure held "
+                                         << G0(l, l) << ", finite difference " << fd;
+  }
+}
+
 }  // namespace
 }  // namespace dc::dynamics

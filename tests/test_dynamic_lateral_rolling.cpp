@@ -101,6 +101,13 @@ TEST(DynamicLateralRolling, RollingAlongYIsRollingAlongXTransposed) {
       diff = std::max({diff, std::abs(Y.fields->ty[e] - X.fields->tx[t]), std::abs(Y.fields->tx[e] - X.fields->ty[t])});
     }
   EXPECT_LE(diff / f_max, tol) << "the y roll's traction is the x roll's transposed";
+  // The reported creepage is the longitudinal one, along the travel, for either direction.
+  EXPECT_NEAR(X.creepage, xi, 1e-12 * xi);
+  EXPECT_NEAR(Y.creepage, xi, 1e-12 * xi);
+  ContactWrench diagonal(s.c);
+  const double r = std::sqrt(0.5);
+  roll(diagonal, s.kinematics(V, r, r, xi, eta), s.P, dt, 1);
+  EXPECT_NEAR(diagonal.state().creepage, xi, 1e-12 * xi);
   std::printf("[ lateral symmetry ] F_x %.6g N (x roll) %.6g N (y roll, F_y); stick %d of %d\n", X.wrench.force.x(),
               Y.wrench.force.y(), X.n_stick, X.n_contact);
 }

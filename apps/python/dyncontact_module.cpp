@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "blas_threads.hpp"
 #include "case_model.hpp"
 #include "cli_common.hpp"
 #include "errors.hpp"
@@ -157,6 +158,7 @@ void import_numpy() {
 
 PYBIND11_MODULE(dyncontact, m) {
   import_numpy();
+  dc::use_one_blas_thread();
   m.doc() =
       "dyncontact: frictional contact between an elastic body and an elastic half-space (after Spector & "
       "Batra), solved as convex programs with certified results.\n\n"
