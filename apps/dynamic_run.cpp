@@ -13,6 +13,9 @@
 #include "gnuplot_figures.hpp"
 #include "interrupt_handler.hpp"
 #include "summary_writer.hpp"
+#ifdef DYNCONTACT_WITH_FE
+#include "body_snapshots.hpp"
+#endif
 
 namespace dc::cli {
 namespace {
@@ -58,11 +61,18 @@ std::vector<GnuplotFigure> figures(const Case& c, const std::vector<std::pair<st
 int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   json snapshots = json::array();
   const int every = c.output.snapshot_every;
+#ifdef DYNCONTACT_WITH_FE
+  BodySnapshots body_series(dir);  // an fe_body: body_NNNN.vtu per snapshot and body.pvd
+#endif
   const DynamicOutcome out = simulate_dynamic(c, !quiet, [&](const dynamics::DynamicSample& s) {
     if (every > 0 && s.step % every == 0) {
       const std::string name = "fields_" + std::to_string(s.step) + ".csv";
       write_fields(dir, c.grid, step_fields(c, s.contact_state), name);
-      snapshots.push_back({{"step", s.step}, {"time", s.state.time}, {"file", name}});
+      json snapshot = {{"step", s.step}, {"time", s.state.time}, {"file", name}};
+#ifdef DYNCONTACT_WITH_FE
+      if (s.finite_body) snapshot["body"] = body_series.write(*s.finite_body, s.state);
+#endif
+      snapshots.push_back(snapshot);
     }
   });
   const dynamics::DynamicResult& r = out.result;
@@ -71,6 +81,9 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   json summary = out.summary;
   json files = {{"summary", "summary.json"}, {"timeseries", "timeseries.csv"}};
   if (!snapshots.empty()) files["snapshots"] = snapshots;
+#ifdef DYNCONTACT_WITH_FE
+  if (body_series.count() > 0) files["body_series"] = body_series.collection();
+#endif
   if (c.output.plots && !r.interrupted) {  // an interrupted run writes its data, not figures
     json plots = json::array();
     for (const auto& img : render_gnuplot(dir, c.name, figures(c, {{"timeseries.csv", ""}})))

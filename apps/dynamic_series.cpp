@@ -6,6 +6,10 @@
 
 #include "progress.hpp"
 #include "summary_writer.hpp"
+#ifdef DYNCONTACT_WITH_FE
+#include "elastic_body.hpp"
+#include "finite_body_contact.hpp"
+#endif
 
 namespace dc::cli {
 namespace {
@@ -52,7 +56,11 @@ std::vector<DynamicPlotSeries> dynamic_plot_series(int dimension) {
 
 DynamicOutcome simulate_dynamic(const Case& c, bool progress,
                                 const std::function<void(const dynamics::DynamicSample&)>& on_step) {
-  dynamics::DynamicSimulation sim(c);
+#ifdef DYNCONTACT_WITH_FE
+  dynamics::DynamicSimulation sim(c, dynamics::make_finite_body(c));
+#else
+  dynamics::DynamicSimulation sim(c);  // an fe_body: an input error saying how to build with it
+#endif
   std::ostringstream series;
   series << kColumns;
   const auto start = std::chrono::steady_clock::now();
@@ -92,6 +100,19 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
                        {"time_s", out.elapsed},
                        {"certificate", {{"worst", r.worst_certificate}, {"last", r.last_certificate}}}};
   summary["balances"] = {{"momentum", r.momentum_imbalance}, {"energy", r.energy_imbalance}};
+#ifdef DYNCONTACT_WITH_FE
+  if (const dynamics::FiniteBody* body = sim.finite_body()) {  // as for problem "finite"
+    summary["body_dofs"] = body->elastic_body().dofs();
+    summary["body_elements"] = body->elastic_body().mesh().elements.size();
+    summary["max_body_displacement"] = body->max_displacement();
+    summary["mesh_time_s"] = body->mesh_seconds();
+    summary["factorisation_time_s"] = body->elastic_body().factorisation_seconds();
+    summary["body"] = {{"mass", sim.body().mass()},
+                       {"inertia", {sim.body().inertia_body()(0, 0), sim.body().inertia_body()(1, 1),
+                                    sim.body().inertia_body()(2, 2)}},
+                       {"radius", body->centre_height()}};
+  }
+#endif
   out.summary = std::move(summary);
   return out;
 }

@@ -33,6 +33,7 @@ const std::vector<BundledExample>& bundled_examples() {
         {"ball-impact-speeds", "the same ball dropped at 0.5, 1 and 2 m/s: a sweep of three impacts (3-D, dynamic)"},
         {"finite-hemisphere", "FE steel hemisphere (R = 10 mm) on steel, 3.3 kN: Hertz for the pair (finite)"},
         {"finite-torsion", "FE steel hemisphere on steel, 100 N, twisting moment, mu = 0.3 (finite, torsion)"},
+        {"fe-hemisphere-drop", "FE steel hemisphere dropped at 1 m/s on steel: Hertz impact of the pair, body_*.vtu (dynamic)"},
     };
     for (auto& e : list) {
       e.text = embedded_example_text(e.name);

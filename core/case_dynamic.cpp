@@ -21,12 +21,15 @@ std::array<double, 3> vector3(const JsonBlock& o, const char* k) {
 
 void read_body(const JsonBlock& body, const Case& c, DynamicSpec& s) {
   body.allow({"mass", "inertia", "radius", "initial"});
-  s.mass = body.positive("mass");
-  const json& inertia = body.at("inertia");
-  if (inertia.is_number()) {
+  // An fe_body's mass, inertia and radius come from its mesh (given ones are checked against it).
+  s.has_mass = body.has("mass") || !s.fe_body;
+  s.has_inertia = body.has("inertia") || !s.fe_body;
+  s.has_radius = body.has("radius");
+  if (s.has_mass) s.mass = body.positive("mass");
+  if (s.has_inertia && body.at("inertia").is_number()) {
     const double i = body.positive("inertia");
     s.inertia = {i, i, i};
-  } else {
+  } else if (s.has_inertia) {
     s.inertia = vector3(body, "inertia");
     for (int k = 0; k < 3; ++k)
       if (!(s.inertia[k] > 0.0))
@@ -34,9 +37,9 @@ void read_body(const JsonBlock& body, const Case& c, DynamicSpec& s) {
   }
   if (body.has("radius")) {
     s.radius = body.positive("radius");
-  } else if (c.profile.type == ProfileType::sphere || c.profile.type == ProfileType::cylinder) {
+  } else if (!s.fe_body && (c.profile.type == ProfileType::sphere || c.profile.type == ProfileType::cylinder)) {
     s.radius = c.profile.radius;  // a ball or a wheel: the centre of mass at the centre
-  } else {
+  } else if (!s.fe_body) {
     throw InputError("body.radius", "missing required key (the height of the centre of mass over the lowest point "
                                     "of the profile; only a sphere or cylinder profile implies it)");
   }
@@ -50,7 +53,7 @@ void read_body(const JsonBlock& body, const Case& c, DynamicSpec& s) {
     if (init.has("velocity")) s.velocity = vector3(init, "velocity");
     if (init.has("omega")) s.omega = vector3(init, "omega");
   }
-  if (!s.has_position) s.position = {0.0, 0.0, s.radius};
+  if (!s.has_position) s.position = {0.0, 0.0, s.radius};  // fe_body: set from the mesh's radius
   if (c.dimension == 2) {
     // Plane strain: motion in the x-z plane, rotation about y only.
     if (s.velocity[1] != 0.0) throw InputError("body.initial.velocity[1]", "a 2-D body moves in the x-z plane (0)");
@@ -78,6 +81,26 @@ void read_loads(const JsonBlock& loads, const Case& c, DynamicSpec& s) {
   }
 }
 
+/// A finite body's dynamic contact is shift and torsion only (2.16), as the paper restricts
+/// case (a): nothing that rolls it or convects its contact.
+void check_shift_torsion(const JsonBlock& top, DynamicSpec& s) {
+  const char* why = " (a finite body's contact is shift and torsion only, (2.16))";
+  if (top.has("profile"))
+    throw InputError("profile", "not used with an fe_body: its mesh's face gives the gap");
+  if (top.has("contact_model"))
+    throw InputError("contact_model", std::string("not taken with an fe_body: no convected or steady rolling "
+                                                  "contact") + why);
+  if (s.omega[0] != 0.0 || s.omega[1] != 0.0)
+    throw InputError("body.initial.omega", std::string("an fe_body turns about z only ([0, 0, w]): rolling") + why);
+  for (int k = 0; k < 2; ++k)
+    if (s.moment[k].value != 0.0 || s.moment[k].rate != 0.0)
+      throw InputError(std::string("loads.moment.") + (k == 0 ? "x" : "y"),
+                       std::string("an fe_body takes a moment about z only: rolling") + why);
+  if (s.normal_model == NormalModel::quasi_static)
+    throw InputError("normal_model", "an fe_body's normal contact follows its height ('dynamic')");
+  s.contact_model = ContactModel::transient;
+}
+
 void read_time(const JsonBlock& time, DynamicSpec& s) {
   time.allow({"dt", "t_end", "scheme"});
   s.dt = time.positive("dt");
@@ -90,9 +113,11 @@ void read_time(const JsonBlock& time, DynamicSpec& s) {
 
 DynamicSpec read_dynamic(const nlohmann::json& document, const Case& c) {
   const JsonBlock top(document, "");
-  for (const char* k : {"materials", "profile", "grid", "body", "time"})
-    if (!top.has(k)) throw InputError(k, "missing required key (a dynamic case needs it)");
   DynamicSpec s;
+  s.fe_body = top.has("fe_body");
+  for (const char* k : {"materials", "profile", "grid", "body", "time"})
+    if (!top.has(k) && !(s.fe_body && std::string(k) == "profile"))
+      throw InputError(k, "missing required key (a dynamic case needs it)");
   read_body(top.child("body"), c, s);
   if (top.has("loads")) read_loads(top.child("loads"), c, s);
   read_time(top.child("time"), s);
@@ -105,6 +130,7 @@ DynamicSpec read_dynamic(const nlohmann::json& document, const Case& c) {
   s.contact_model = contact == "transient" ? ContactModel::transient
                     : contact == "steady"  ? ContactModel::steady
                                            : ContactModel::automatic;
+  if (s.fe_body) check_shift_torsion(top, s);
   return s;
 }
 

@@ -32,6 +32,11 @@ struct DynamicSpec {
   bool bdf2 = false;                        ///< time.scheme
   NormalModel normal_model = NormalModel::dynamic;
   ContactModel contact_model = ContactModel::automatic;
+  /// An fe_body (docs/dynamics.md "A finite-element body"): mass, inertia and radius come from
+  /// its mesh and density; given ones (has_*) are checked against the mesh's. Shift and torsion
+  /// only (2.16): no rolling, no convected or steady contact model.
+  bool fe_body = false;
+  bool has_mass = false, has_inertia = false, has_radius = false;
 };
 
 struct Case;

@@ -110,13 +110,25 @@ FeBodySpec read_fe_body(const json& block, const std::string& case_dir) {
 
 void read_finite_blocks(const json& document, Case& c, const std::string& base_dir) {
   const JsonBlock top(document, "");
+  // A dynamic case with an fe_body: the body's motion sets the approach (no normal block).
+  const bool dynamic = c.problem == ProblemKind::dynamic;
+  const std::string problem = dynamic ? "'dynamic' with an fe_body" : "'finite'";
   for (const char* k : {"materials", "fe_body", "grid", "normal"})
-    if (!top.has(k)) throw InputError(k, "missing required block for problem 'finite'");
-  if (c.dimension != 3) throw InputError("dimension", "problem 'finite' is 3-D");
+    if (!top.has(k) && !(dynamic && std::string(k) == "normal"))
+      throw InputError(k, "missing required block for problem " + problem);
+  if (dynamic && top.has("normal"))
+    throw InputError("normal", "not used by a dynamic fe_body (its motion sets the approach)");
+  if (c.dimension != 3) throw InputError("dimension", "problem " + problem + " is 3-D");
   c.fe_body = read_fe_body(top.at("fe_body"), base_dir);
   if (JsonBlock(top.at("grid"), "grid").has("extent"))
-    throw InputError("grid.extent", "problem 'finite' needs the grid's x and y bounds (no Hertz estimate of its size)");
+    throw InputError("grid.extent", "problem " + problem + " needs the grid's x and y bounds (no Hertz estimate of its size)");
   c.grid = read_grid(top.at("grid"), c, true);
+  if (dynamic && (c.fe_body->load_line || c.fe_body->tilt != std::array<double, 2>{0.0, 0.0}))
+    throw InputError(c.fe_body->load_line ? "fe_body.load_line" : "fe_body.tilt",
+                     "a dynamic body's tilt is its motion's: not given");
+  if (dynamic && c.fe_body->program != "condensed")
+    throw InputError("fe_body.program", "a dynamic fe_body takes the condensed program (each step a warm-started "
+                                        "solve with the kept factor)");
   if (c.tangential && c.tangential->regime == TangentialRegime::rolling)
     throw InputError("tangential.regime", "rolling is not available for a finite body (shift or torsion)");
   if (c.tangential && !c.friction) throw InputError("friction", "required with a tangential block");

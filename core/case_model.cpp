@@ -278,7 +278,7 @@ const std::vector<BlockUse>& block_uses() {
       {"traction_model", {P::paper_cylinder}},
       {"dimensionless", {P::paper_cylinder}},
       {"sweep", {P::paper_cylinder, P::dynamic}},
-      {"fe_body", {P::finite}},
+      {"fe_body", {P::finite, P::dynamic}},
   };
   return uses;
 }
@@ -324,9 +324,11 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   const bool static_problem = c.problem == ProblemKind::normal || c.problem == ProblemKind::tangential;
   auto required = [&](const char* k) { return static_problem || top.has(k); };
   const bool finite = c.problem == ProblemKind::finite;
+  // A dynamic case may take its body as finite elements (core/case_fe_body.cpp).
+  const bool fe = finite || (c.problem == ProblemKind::dynamic && top.has("fe_body"));
   if (required("materials")) {
-    c.materials = parse_materials(top.at("materials"), finite);
-    if (!finite) c.allow_large_strain = JsonBlock(top.at("materials"), "materials").boolean_or("allow_large_strain", false);
+    c.materials = parse_materials(top.at("materials"), fe);
+    if (!fe) c.allow_large_strain = JsonBlock(top.at("materials"), "materials").boolean_or("allow_large_strain", false);
   }
   const bool has_profile = required("profile");
   if (has_profile) c.profile = read_profile(top.at("profile"), c.dimension, base_dir);
@@ -342,10 +344,10 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   if (top.has("output")) c.output = parse_output(top.at("output"));
   if (c.problem == ProblemKind::dynamic) {
     c.dynamic = read_dynamic(document, c);
-    if (!has_normal) has_normal = dynamic_sizing_load(*c.dynamic, c, c.normal);
+    if (!has_normal && !fe) has_normal = dynamic_sizing_load(*c.dynamic, c, c.normal);
   }
-  if (finite) read_finite_blocks(document, c, base_dir);  // core/case_fe_body.cpp
-  if (required("grid") && !finite) {
+  if (fe) read_finite_blocks(document, c, base_dir);  // core/case_fe_body.cpp
+  if (required("grid") && !fe) {
     if (!has_profile) throw InputError("profile", "missing required key (the grid needs a profile)");
     c.grid = read_grid(top.at("grid"), c, has_normal);
     c.allow_edge_contact = JsonBlock(top.at("grid"), "grid").boolean_or("allow_edge_contact", false);

@@ -9,18 +9,30 @@
 
 namespace dc::dynamics {
 
-ContactWrench::ContactWrench(const Case& c)
-    : case_(c), spec_(*c.dynamic), solver_(c.solver), gap_(c.profile, c.grid, c.dynamic->radius) {
-  // auto: FFT at every size. A run applies the operators thousands of times, and the padded FFT
-  // product is the faster one from 12^2 elements (3-D) and 200 strips (2-D) up (scripts/bench.sh
-  // dynamic with solver.operator dense / fft).
-  const OperatorKind kind = c.solver.operator_kind == "dense" ? OperatorKind::dense : OperatorKind::fft;
-  if (c.friction) {
-    law_ = FrictionLaw::from_spec(*c.friction);
-    tangential_ = std::make_unique<TangentialProblem>(c.grid, c.materials, gap_.heights(), *law_, kind);
+ContactWrench::ContactWrench(const Case& c, std::unique_ptr<FiniteBody> finite)
+    : case_(c), spec_(*c.dynamic), solver_(c.solver), finite_(std::move(finite)) {
+  if (c.friction) law_ = FrictionLaw::from_spec(*c.friction);
+  if (c.fe_body && !finite_)
+    throw InputError("fe_body", "needs finite-element support: this build has none (install libgmsh-dev and "
+                                "libsuitesparse-dev, then reconfigure with -DDYNCONTACT_WITH_FE=ON)");
+  if (finite_) {
+    // The finite program in every step: the factor kept, the problems warm-started.
+    if (law_) tangential_ = &finite_->tangential_problem(*law_);
+    else normal_ = &finite_->normal_problem();
+  } else {
+    gap_.emplace(c.profile, c.grid, c.dynamic->radius);
+    // auto: FFT at every size. A run applies the operators thousands of times, and the padded FFT
+    // product is the faster one from 12^2 elements (3-D) and 200 strips (2-D) up (scripts/bench.sh
+    // dynamic with solver.operator dense / fft).
+    const OperatorKind kind = c.solver.operator_kind == "dense" ? OperatorKind::dense : OperatorKind::fft;
+    if (law_) {
+      own_tangential_ = std::make_unique<TangentialProblem>(c.grid, c.materials, gap_->heights(), *law_, kind);
+      tangential_ = own_tangential_.get();
+    } else {
+      own_normal_ = std::make_unique<NormalProblem>(c.grid, c.materials, gap_->heights(), kind);
+      normal_ = own_normal_.get();
+    }
   }
-  else
-    normal_ = std::make_unique<NormalProblem>(c.grid, c.materials, gap_.heights(), kind);
   // Every step is one warm-started program: `auto` tries the native solvers first at any size,
   // the others are their fallbacks.
   if (normal_) normal_->set_native_first(true);
@@ -30,7 +42,15 @@ ContactWrench::ContactWrench(const Case& c)
   model_resolved_ = spec_.contact_model != ContactModel::automatic;
 }
 
+ContactWrench::~ContactWrench() = default;
+
+double ContactWrench::centre_height() const {
+  if (finite_) return finite_->centre_height();
+  return gap_->centre_height();
+}
+
 std::string ContactWrench::model_used() const {
+  if (finite_) return "shift_torsion";
   if (!steady_) return "transient";
   if (transient_steps_ == 0) return "steady";
   return "steady (transient in " + std::to_string(transient_steps_) + " of " + std::to_string(steps_in_contact_) +
@@ -50,7 +70,7 @@ NormalSpec ContactWrench::normal_load(const StepKinematics& k, double vertical_l
   if (spec_.normal_model == NormalModel::quasi_static) return {Control::force, std::max(0.0, -vertical_load)};
   // (2.6): the lowest point of the body at its orientation is centre_height() below the centre
   // of mass (body.radius upright); the base is z = 0.
-  return {Control::approach, gap_.centre_height() - k.position.z()};
+  return {Control::approach, centre_height() - k.position.z()};
 }
 
 void ContactWrench::no_contact() {
@@ -59,10 +79,19 @@ void ContactWrench::no_contact() {
 }
 
 void ContactWrench::orient(const StepKinematics& k) {
-  // (2.6): the gap of the body at its current orientation (body_gap.hpp).
-  if (!gap_.update(k.orientation, k.time)) return;
-  if (tangential_) tangential_->set_heights(gap_.heights());
-  if (normal_) normal_->set_heights(gap_.heights());
+  // (2.6): the gap of the body at its current orientation (body_gap.hpp; an fe_body's at its
+  // tilt and spin, finite_body_contact.hpp).
+  const std::vector<double>* heights = nullptr;
+  if (finite_) {
+    if (!finite_->update(k)) return;
+    heights = &finite_->heights();
+  }
+  if (gap_) {
+    if (!gap_->update(k.orientation, k.time)) return;
+    heights = &gap_->heights();
+  }
+  if (tangential_) tangential_->set_heights(*heights);
+  if (normal_) normal_->set_heights(*heights);
 }
 
 Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
@@ -71,7 +100,7 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
   last_ = k;
   const NormalSpec load = normal_load(k, vertical_load);
   // The height of the centre of mass over the base: quasi-static, over the lowest point.
-  lever_ = spec_.normal_model == NormalModel::quasi_static ? gap_.centre_height() : k.position.z();
+  lever_ = spec_.normal_model == NormalModel::quasi_static ? centre_height() : k.position.z();
   if (!(load.value > 0.0)) {
     no_contact();
     return state_.wrench;
@@ -99,7 +128,11 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
         for (int m = 0; m < 3; ++m) rolling.modes[m].value = increment[m] / (V.x() * dt_);
         solution_ = tangential_->steady_rolling(rolling, solver);
       } else {
-        solution_ = tangential_->convected_step(load, increment, {V.x() * dt_, V.y() * dt_}, solver);
+        // An fe_body's memory is not convected (shift and torsion, (2.16)): its surface moves
+        // with the grid, and the half-space's travel under it is small against the contact.
+        const std::array<double, 2> travel =
+            finite_ ? std::array<double, 2>{0.0, 0.0} : std::array<double, 2>{V.x() * dt_, V.y() * dt_};
+        solution_ = tangential_->convected_step(load, increment, travel, solver);
       }
     };
     solve(solver_);
@@ -136,7 +169,10 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
     state_.backend = normal_solution_.report.backend;
     state_.fallback_used = normal_solution_.report.fallback_used;
   }
-  // Resultants about the centre of mass: r = (x, y, -h), f = (tau_x, tau_y, p) A.
+  // Resultants about the centre of mass: r = (x, y, -h), f = (tau_x, tau_y, p) A (an fe_body's
+  // centre of mass need not lie over the grid origin).
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  if (finite_) centre = finite_->centre_xy();
   Eigen::Vector3d F = Eigen::Vector3d::Zero(), M = Eigen::Vector3d::Zero();
   for (std::size_t e = 0; e < N; ++e) {
     const double p = (*pressure)[e];
@@ -144,7 +180,7 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
     if (p <= 0.0 && tx == 0.0 && ty == 0.0) continue;
     if (p > 0.0) ++state_.n_contact;
     const int i = static_cast<int>(e % g.nx), j = static_cast<int>(e / g.nx);
-    const Eigen::Vector3d r(g.xc(i), g.yc(j), -h), f(tx * A, ty * A, p * A);
+    const Eigen::Vector3d r(g.xc(i) - centre.x(), g.yc(j) - centre.y(), -h), f(tx * A, ty * A, p * A);
     F += f;
     M += r.cross(f);
   }
@@ -174,8 +210,9 @@ WrenchJacobian ContactWrench::jacobian() {
   // Normal stiffness dP/d(delta) with the contact set fixed: a flat punch of the contact's
   // footprint, 2 E* sqrt(A/pi) (exact for a circle); R_z up is delta down.
   double kn = 0.0;
-  if (spec_.normal_model == NormalModel::dynamic)
-    kn = 2.0 * case_.materials.E_star() * std::sqrt(state_.contact_area / M_PI);
+  double E_star = case_.materials.E_star();
+  if (finite_) E_star = 1.0 / (1.0 / E_star + 1.0 / finite_->plane_modulus());  // the pair's
+  if (spec_.normal_model == NormalModel::dynamic) kn = 2.0 * E_star * std::sqrt(state_.contact_area / M_PI);
   if (kn > 0.0 && F.z() > 0.0) {
     // The pressure's centroid, and the slipping traction (proportional to p) follow the load.
     // M = sum r x f, r = (x, y, -h): M_x = ybar F_z + h F_y, M_y = -xbar F_z - h F_x.
@@ -195,11 +232,11 @@ WrenchJacobian ContactWrench::jacobian() {
     J.position.col(2).head<3>() = dF;
     J.position.col(2).tail<3>() = Eigen::Vector3d(h * dF.y() + ybar * dF.z(), -h * dF.x() - xbar * dF.z(), 0.0);
   }
-  if (F.z() > 0.0) {
+  if (F.z() > 0.0 && gap_) {  // (an fe_body's first-order tilt: left out)
     // The body turning moves its lowest point (2.6): the contact moves with it, carrying the
     // moment of the normal force, and the approach centre_height - z changes as a lift of the
     // centre (the position column's response to -dz).
-    const GapSensitivity d = gap_.sensitivity(last_.orientation);
+    const GapSensitivity d = gap_->sensitivity(last_.orientation);
     for (int l = 0; l < 3; ++l) {
       J.orientation.col(l) = -d.centre_height(l) * J.position.col(2);
       J.orientation(3, l) += F.z() * d.lowest(1, l);
@@ -262,6 +299,12 @@ void ContactWrench::accept(const StepKinematics& k, double vertical_load) {
                     k.omega == last_.omega;
   if (!same) evaluate(k, vertical_load);
   if (tangential_) committed_ = tangential_->memory();
+  if (finite_) {  // the body's deformation at the accepted step (output, max displacement)
+    static const std::vector<double> none;
+    const bool touching = state_.in_contact;
+    finite_->accept(touching && tangential_ ? solution_.tx : none, touching && tangential_ ? solution_.ty : none,
+                    touching ? *state_.pressure : none);
+  }
   if (state_.in_contact) {
     ++steps_in_contact_;
     if (steady_ && off_axis_) ++transient_steps_;

@@ -14,6 +14,7 @@
 #include "body_gap.hpp"
 #include "case_model.hpp"
 #include "contact_sensitivity.hpp"
+#include "finite_body.hpp"
 #include "friction_law.hpp"
 #include "normal_problem.hpp"
 #include "tangential_problem.hpp"
@@ -42,8 +43,10 @@ struct ContactState {
 
 class ContactWrench {
  public:
-  /// The case's grid, materials, profile, friction (optional: frictionless), body and models.
-  explicit ContactWrench(const Case& c);
+  /// The case's grid, materials, profile, friction (optional: frictionless), body and models;
+  /// with an fe_body, `finite` its body (finite_body.hpp; InputError("fe_body") when null).
+  explicit ContactWrench(const Case& c, std::unique_ptr<FiniteBody> finite = nullptr);
+  ~ContactWrench();
 
   /// Starts a step of length dt at time t (the memory of the accepted state is kept).
   void begin_step(double dt);
@@ -67,19 +70,26 @@ class ContactWrench {
   /// (the travel within 5.7 degrees of x); other steps are transient.
   static bool travel_along_x(const Eigen::Vector3d& velocity);
   int solves() const { return solves_; }
+  /// The finite-element body (null without an fe_body).
+  const FiniteBody* finite_body() const { return finite_.get(); }
 
  private:
   NormalSpec normal_load(const StepKinematics& k, double vertical_load) const;
   void no_contact();
   /// The undeformed gap at the body's orientation (the problems' heights when it changes).
   void orient(const StepKinematics& k);
+  /// Height of the centre of mass over the body's lowest point (the approach's reference).
+  double centre_height() const;
 
   const Case& case_;
   const DynamicSpec& spec_;
   SolverSpec solver_;
-  BodyGap gap_;
-  std::unique_ptr<NormalProblem> normal_;          // frictionless
-  std::unique_ptr<TangentialProblem> tangential_;  // with friction
+  std::optional<BodyGap> gap_;                     // the profile's gap (rigid-body profile)
+  std::unique_ptr<FiniteBody> finite_;             // or the fe_body's (finite contact in each step)
+  std::unique_ptr<NormalProblem> own_normal_;
+  std::unique_ptr<TangentialProblem> own_tangential_;
+  NormalProblem* normal_ = nullptr;                // frictionless
+  TangentialProblem* tangential_ = nullptr;        // with friction
   std::optional<FrictionLaw> law_;                 // with friction
   TangentialMemory committed_;
   TangentialSensitivity sensitivity_;

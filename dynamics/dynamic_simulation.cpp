@@ -19,8 +19,15 @@ StepperOptions stepper_options(const Case& c) {
   return o;
 }
 
-RigidBody make_body(const DynamicSpec& s) {
+RigidBody make_body(const DynamicSpec& s, const FiniteBody* finite) {
+  if (finite) return finite->rigid_body();  // the mesh's full inertia tensor
   return RigidBody::principal(s.mass, s.inertia[0], s.inertia[1], s.inertia[2], "body");
+}
+
+void check_agrees(const std::string& key, double given, double mesh) {
+  if (std::abs(given - mesh) > 0.01 * std::abs(mesh))
+    throw InputError(key, "is " + std::to_string(given) + " but the fe_body's mesh and density give " +
+                              std::to_string(mesh) + " (leave it out to take the mesh's)");
 }
 
 Eigen::Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
@@ -35,8 +42,27 @@ RigidBodyState initial_state(const DynamicSpec& s) {
   return st;
 }
 
-DynamicSimulation::DynamicSimulation(const Case& c)
-    : case_(c), spec_(*c.dynamic), stepper_(make_body(*c.dynamic), stepper_options(c)), contact_(c) {}
+DynamicSpec resolve_finite_body(const DynamicSpec& spec, const FiniteBody* finite) {
+  DynamicSpec s = spec;
+  if (!finite) return s;
+  const RigidBody body = finite->rigid_body();
+  const Eigen::Matrix3d& I = body.inertia_body();
+  if (s.has_mass) check_agrees("body.mass", s.mass, body.mass());
+  if (s.has_inertia)
+    for (int k = 0; k < 3; ++k) check_agrees("body.inertia[" + std::to_string(k) + "]", s.inertia[k], I(k, k));
+  if (s.has_radius) check_agrees("body.radius", s.radius, finite->centre_height());
+  s.mass = body.mass();
+  s.inertia = {I(0, 0), I(1, 1), I(2, 2)};
+  s.radius = finite->centre_height();
+  if (!s.has_position) s.position = {0.0, 0.0, s.radius};  // touching
+  return s;
+}
+
+DynamicSimulation::DynamicSimulation(const Case& c, std::unique_ptr<FiniteBody> finite)
+    : case_(c),
+      spec_(resolve_finite_body(*c.dynamic, finite.get())),
+      stepper_(make_body(spec_, finite.get()), stepper_options(c)),
+      contact_(c, std::move(finite)) {}
 
 Wrench DynamicSimulation::external(double t) const {
   Wrench w;
@@ -158,6 +184,7 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
     sample.external_work = external_work;
     sample.contact_work = contact_work;
     sample.step = step;
+    sample.finite_body = contact_.finite_body();
     if (on_step) on_step(sample);
   }
   result.contact_model = contact_.model_used();

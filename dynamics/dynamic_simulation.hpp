@@ -5,6 +5,7 @@
 // bookkeeping of the run (momentum and energy balances, worst certificate).
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 
 #include "case_model.hpp"
@@ -26,6 +27,7 @@ struct DynamicSample {
   int newton_iterations = 0;   ///< of this step
   int contact_solves = 0;      ///< of this step (retries included)
   int step = 0;                ///< 1-based
+  const FiniteBody* finite_body = nullptr;  ///< an fe_body (its displacement() at this step); null without
 };
 
 struct DynamicResult {
@@ -47,7 +49,9 @@ struct DynamicResult {
 
 class DynamicSimulation {
  public:
-  explicit DynamicSimulation(const Case& c);
+  /// `finite`: the body of a case with an fe_body (finite/finite_body_contact.hpp's
+  /// make_finite_body); its mass, inertia and centre height are the mesh's.
+  explicit DynamicSimulation(const Case& c, std::unique_ptr<FiniteBody> finite = nullptr);
   /// Runs to t_end; `on_step` after every accepted step (output, progress). Never throws for
   /// non-convergence, an interrupt or input a step cannot take: the result says where and why
   /// it stopped, with the steps before it.
@@ -56,13 +60,20 @@ class DynamicSimulation {
   const RigidBody& body() const { return stepper_.body(); }
   /// The applied force and moment at time t (loads: value + rate t).
   Wrench external(double t) const;
+  /// The finite-element body (null without an fe_body).
+  const FiniteBody* finite_body() const { return contact_.finite_body(); }
 
  private:
   const Case& case_;
-  const DynamicSpec& spec_;
+  DynamicSpec spec_;  ///< the case's, with an fe_body's mass, inertia and radius from its mesh
   RigidBodyStepper stepper_;
   ContactWrench contact_;
 };
+
+/// The case's dynamic blocks with an fe_body's mass, inertia and radius (height of the centre of
+/// mass over the lowest point) from its mesh; given ones must agree within 1 % (InputError
+/// naming body.mass, body.inertia or body.radius).
+DynamicSpec resolve_finite_body(const DynamicSpec& spec, const FiniteBody* finite);
 
 /// The body's initial state from the case (position, velocity, omega; orientation identity).
 RigidBodyState initial_state(const DynamicSpec& spec);
