@@ -61,8 +61,11 @@ int run_validate(const ValidateArgs& args) {
   if (!c.description.empty()) std::printf("  %s\n", c.description.c_str());
   const bool static_problem = c.problem == ProblemKind::normal || c.problem == ProblemKind::tangential;
   if (static_problem || c.has_block("materials")) {
-    std::printf("  body:     %s\n  base:     %s\n  E*:       %.4g Pa\n", material_text(c.materials.body).c_str(),
-                material_text(c.materials.base).c_str(), c.materials.E_star());
+    // A finite-element body's compliance is its mesh's (fe_body), not the rigid stand-in of the pair.
+    const std::string body = c.fe_body ? "finite elements (fe_body)" : material_text(c.materials.body);
+    std::printf("  body:     %s\n  base:     %s\n  E*:       %.4g Pa%s\n", body.c_str(),
+                material_text(c.materials.base).c_str(), c.materials.E_star(),
+                c.fe_body ? " (the half-space's share)" : "");
   }
   if (static_problem || c.has_block("profile"))
     std::printf("  profile:  %s\n", profile_text(c.profile, c.dimension).c_str());

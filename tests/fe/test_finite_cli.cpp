@@ -55,6 +55,14 @@ TEST_F(FiniteCli, HemisphereExampleSolvesWithBodyOutputs) {
   EXPECT_NEAR(s["max_pressure"].get<double>(), h.p0, 0.05 * h.p0);
 }
 
+TEST_F(FiniteCli, ValidateDescribesTheFiniteElementBody) {
+  const dc::test::CliResult r =
+      run("validate " + dc::test::shell_quote(dc::test::example_path("finite-hemisphere")));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("body:     finite elements (fe_body)"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("rigid"), std::string::npos) << r.out;
+}
+
 TEST_F(FiniteCli, BadBodyInputNamesTheKey) {
   expect_rejected([](json& d) { d["fe_body"]["shape"] = "mesh"; d["fe_body"]["mesh"] = "missing.msh"; }, "fe_body.mesh");
   expect_rejected([](json& d) { d["fe_body"]["material"]["nu"] = 0.6; }, "fe_body.material.nu");
