@@ -33,7 +33,7 @@ struct FeBodySpec {
   std::vector<FeRegionSpec> regions;
   /// The program of the normal and tangential problems: "condensed" (the compliances C_hs +
   /// B'K+B / A, every backend) or "sparse" (the saddle form over the tractions and u with the
-  /// equilibrium as sparse rows: Ipopt, NLopt on small bodies).
+  /// equilibrium as sparse rows, Ipopt).
   std::string program = "condensed";
   /// The body's tilt: given rotations about x and y (rad, about the grid origin), or free with
   /// the moment rows of the rigid motion when `load_line` gives where the normal force's line of

@@ -33,8 +33,7 @@ struct QuadraticProgram {
   std::vector<LinearEquality> equalities;
   std::vector<DiskConstraint> disks;
   std::vector<double> x0;  ///< starting point (or empty: zeros projected on the bounds)
-  /// Further unknowns kept as sparse rows (sparse_block.hpp): Ipopt takes them sparse, NLopt
-  /// densely (small blocks only), the native solvers not at all.
+  /// Further unknowns kept as sparse rows (sparse_block.hpp): Ipopt only.
   const SparseBlock* block = nullptr;
 
   int n() const { return static_cast<int>(c.size()); }

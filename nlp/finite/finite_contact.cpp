@@ -57,11 +57,11 @@ NormalSolution FiniteContact::solve_sparse(const NormalSpec& control, const Solv
 NormalSolution FiniteContact::solve_sparse(const std::vector<double>& h, const NormalSpec& control,
                                            const SolverSpec& solver, const ProgressCallback& progress,
                                            Eigen::VectorXd& body_displacement) {
-  // Ipopt, then NLopt as its fallback on small bodies (saddle_backend_order): the first result
-  // the condensed program's certificate accepts, else the best.
+  // The backends of saddle_backend_order in turn: the first result the condensed program's
+  // certificate accepts, else the best.
   NormalSolution best;
   std::string attempts;
-  const std::vector<std::string> order = saddle_backend_order(solver.backend, solver.fallback, body_->dofs());
+  const std::vector<std::string> order = saddle_backend_order(solver.backend);
   for (std::size_t k = 0; k < order.size(); ++k) {
     Eigen::VectorXd u;
     NormalSolution sol = solve_sparse_by(order[k], h, control, solver, progress, u);
@@ -85,7 +85,6 @@ NormalSolution FiniteContact::solve_sparse(const std::vector<double>& h, const N
 NormalSolution FiniteContact::solve_sparse_by(const std::string& backend, const std::vector<double>& h,
                                               const NormalSpec& control, const SolverSpec& solver,
                                               const ProgressCallback& progress, Eigen::VectorXd& body_displacement) {
-  if (backend == "nlopt") check_dense_size();
   const auto start = std::chrono::steady_clock::now();
   const SaddleNormalOutcome o = solve_saddle_normal(*body_, *face_, *halfspace_normal_, grid_, h, control,
                                                     solve_options(solver, progress), backend);
@@ -161,19 +160,9 @@ void FiniteContact::use_sparse_tangential() {
     Eigen::VectorXd u;
     return solve_sparse(h, load, solver, {}, u);
   };
-  form.backends = [this](const std::string& requested, bool fallback) {
-    if (requested == "nlopt") check_dense_size();
-    return saddle_backend_order(requested, fallback, body_->dofs());
-  };
+  form.backends = [](const std::string& requested, bool) { return saddle_backend_order(requested); };
   form.exact_hessian_limit = static_cast<int>(2 * kSaddleExactLimit);  // (tau_x, tau_y): two per element
   tangential_->use_sparse_form(std::move(form));
-}
-
-void FiniteContact::check_dense_size() const {
-  if (body_->dofs() > kSaddleDenseLimit)
-    throw InputError("solver.backend", "NLopt takes the sparse form's body rows densely: bodies of at most " +
-                                           std::to_string(kSaddleDenseLimit) + " dofs (this one has " +
-                                           std::to_string(body_->dofs()) + "); use 'ipopt' or 'auto'");
 }
 
 Eigen::VectorXd FiniteContact::body_displacement(const std::vector<double>& tx, const std::vector<double>& ty,

@@ -85,8 +85,6 @@ class FiniteContact {
                               const ProgressCallback& progress, Eigen::VectorXd& body_displacement);
   /// The tangential problem by the sparse form (TangentialProblem::use_sparse_form).
   void use_sparse_tangential();
-  /// InputError("solver.backend") when the body is too large for NLopt's dense rows.
-  void check_dense_size() const;
   NormalSolution solve_sparse_by(const std::string& backend, const std::vector<double>& heights,
                                  const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress,
                                  Eigen::VectorXd& body_displacement);

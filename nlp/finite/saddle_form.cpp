@@ -88,14 +88,10 @@ Eigen::VectorXd saddle_body_displacement(const fe::ElasticBody& body, const std:
   return v - body.rigid_modes() * r;
 }
 
-std::vector<std::string> saddle_backend_order(const std::string& requested, bool fallback, std::size_t body_dofs) {
-  if (requested == "ipopt" || requested == "nlopt") return {requested};
-  if (requested != "auto")
-    throw InputError("solver.backend", "the sparse form (fe_body.program 'sparse') is solved by Ipopt (NLopt on "
-                                       "small bodies): use 'ipopt', 'nlopt' or 'auto', or the condensed program for '" +
-                                           requested + "'");
-  if (fallback && body_dofs <= kSaddleDenseLimit) return {"ipopt", "nlopt"};
-  return {"ipopt"};
+std::vector<std::string> saddle_backend_order(const std::string& requested) {
+  if (requested == "auto" || requested == "ipopt") return {"ipopt"};
+  throw InputError("solver.backend", "the sparse form (fe_body.program 'sparse') is solved by Ipopt: use 'ipopt' or "
+                                     "'auto', or the condensed program for '" + requested + "'");
 }
 
 SaddleNormalOutcome solve_saddle_normal(const fe::ElasticBody& body, const fe::ContactFace& face,

@@ -7,7 +7,7 @@
 // (per unit area, as the compliances are). On these rows v'Ks v = t'B'K+B t, so a program over
 // (t, v, a) has the condensed program's minimiser (body_compliance.hpp): its result is
 // certified with the condensed operators. The rows are a SparseBlock of the QuadraticProgram
-// over t (sparse_block.hpp): Ipopt takes them sparse, NLopt densely (small bodies only).
+// over t (sparse_block.hpp), which Ipopt takes sparse.
 //
 // The normal problem:
 //   minimise   1/2 p'(A C_hs)p + 1/2 v'Ks v + A (h - delta)'p
@@ -44,14 +44,11 @@ SaddleBody saddle_body_block(const fe::ElasticBody& body, const fe::ContactFace&
 Eigen::VectorXd saddle_body_displacement(const fe::ElasticBody& body, const std::vector<double>& block_x,
                                          double v_unit);
 
-/// The backends of the sparse form, in order: `auto` is Ipopt, then NLopt as its fallback on
-/// bodies of at most kSaddleDenseLimit dofs (when `fallback`); a named one alone. Throws
-/// InputError("solver.backend") for the native solvers (they take no sparse rows).
-std::vector<std::string> saddle_backend_order(const std::string& requested, bool fallback, std::size_t body_dofs);
-
-/// NLopt's equality-constrained algorithms take the body's rows densely (a (N + n) x (n + 6)
-/// matrix and its least-squares multipliers): bodies of at most this many dofs.
-inline constexpr std::size_t kSaddleDenseLimit = 1500;
+/// The backends of the sparse form, in order: Ipopt for `auto` and `ipopt`. Throws
+/// InputError("solver.backend") for the others: the native solvers take no sparse rows, and
+/// NLopt's equality algorithms (AUGLAG) held the rows densely and did not converge (residual
+/// 0.99 after 1000 evaluations on a 6 x 6 grid and the coarsest hemisphere).
+std::vector<std::string> saddle_backend_order(const std::string& requested);
 
 struct SaddleNormalOutcome {
   std::vector<double> pressure;        ///< Pa, one per grid element (>= 0)
@@ -63,7 +60,7 @@ struct SaddleNormalOutcome {
   int iterations = 0;
 };
 
-/// The normal problem by one backend (ipopt or nlopt). Grid elements whose `heights` are
+/// The normal problem by one backend (ipopt). Grid elements whose `heights` are
 /// infinite cannot touch (p held at 0). `options.hessian`: exact, limited-memory or auto (exact
 /// while the dense half-space block has at most kSaddleExactLimit rows).
 SaddleNormalOutcome solve_saddle_normal(const fe::ElasticBody& body, const fe::ContactFace& face,

@@ -3,7 +3,9 @@
 // saddle point over (p, v, a) satisfies the condensed program's KKT conditions (its certificate,
 // measured with the kept factor), gives the same pressure, approach and energy, and its body
 // displacement satisfies the free body's equilibrium K u = Pi B p (the resultant balanced by
-// the rigid-body inertia, no support reactions).
+// the rigid-body inertia, no support reactions). The tangential problem (shift by force,
+// torsion by angle, partial slip) by the sparse form over (tau, v, a) gives the condensed
+// program's tractions, rigid shift or rotation and resultants, and its certificate.
 #include <algorithm>
 #include <cmath>
 
@@ -11,6 +13,7 @@
 
 #include "finite_contact.hpp"
 #include "hertz.hpp"
+#include "sparse_tangential_pair.hpp"
 
 namespace dc {
 namespace {
@@ -109,6 +112,19 @@ TEST(FiniteSaddle, SaddlePointSatisfiesTheFreeBodysEquilibrium) {
   // No mean rigid motion: (M R)'u = 0.
   const Eigen::Matrix<double, 6, 1> rigid = body.mass_rigid_modes().transpose() * s.body_displacement;
   EXPECT_LT(rigid.norm(), 1e-9 * body.mass() * s.body_displacement.cwiseAbs().maxCoeff());
+}
+
+TEST(FiniteSaddle, TangentialShiftByForceAgreesWithTheCondensedProgram) {
+  const fe::testing::Pair r = fe::testing::solve_both(fe::testing::shift_by_force(0.6), 12, {3, 3, 2}, "ipopt");
+  fe::testing::expect_same_point(r);
+  EXPECT_LT(r.sparse.amplitudes[0], 0.0) << "a force +F_x on the body meets a shift -s_x";
+}
+
+TEST(FiniteSaddle, TangentialTorsionByAngleAgreesWithTheCondensedProgram) {
+  // An angle that slips the rim of the contact (a ~ 0.5 mm, mu p0 a / G ~ 4e-3 rad).
+  const fe::testing::Pair r = fe::testing::solve_both(fe::testing::twist_by_angle(2e-3), 12, {3, 3, 2}, "ipopt");
+  fe::testing::expect_same_point(r);
+  EXPECT_LT(r.sparse.resultants[2], 0.0) << "a twist +beta of the body meets a moment of the opposite sense";
 }
 
 }  // namespace

@@ -17,12 +17,12 @@ namespace dc::fe::testing {
 constexpr double kR = 0.01, kE = 2.1e11, kNu = 0.3, kP = 3000.0, kMu = 0.3;
 constexpr double kCertificateTol = 1e-6;  // SolverSpec's default
 
-inline FeBodySpec hemisphere(const std::string& program, std::array<int, 3> elements) {
+inline FeBodySpec hemisphere(const std::string& program, std::array<int, 3> elements, double contact_size = 5e-4) {
   FeBodySpec s;
   s.shape = FeShape::hemisphere;
   s.radius = kR;
   s.elements = elements;
-  s.contact_size = 5e-4;
+  s.contact_size = contact_size;
   s.material = {isotropic_stiffness(kE, kNu, "test"), 7800.0};
   s.program = program;
   return s;
@@ -34,12 +34,13 @@ struct Pair {
 };
 
 /// The same load on the condensed program (native) and on the sparse form (`backend`).
-inline Pair solve_both(const TangentialLoad& load, int cells, std::array<int, 3> elements, const std::string& backend) {
+inline Pair solve_both(const TangentialLoad& load, int cells, std::array<int, 3> elements, const std::string& backend,
+                       double contact_size = 5e-4) {
   const double L = 1.2e-3;
   const Grid g = Grid::make(3, cells, cells, -L, L, -L, L);
   const Elastic base = Elastic::from_E_nu(kE, kNu);
-  FiniteContact b(hemisphere("condensed", elements), g, base);
-  FiniteContact a(hemisphere("sparse", elements), g, base);
+  FiniteContact b(hemisphere("condensed", elements, contact_size), g, base);
+  FiniteContact a(hemisphere("sparse", elements, contact_size), g, base);
   SolverSpec native, sparse;
   native.backend = "native";
   sparse.backend = backend;

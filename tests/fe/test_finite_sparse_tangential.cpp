@@ -2,10 +2,7 @@
 // tiny body (seconds): Ipopt's saddle point over (tau, v, a), with the friction disks
 // |tau| <= f(p) for the sparse form's own pressure, gives the condensed program's tractions and
 // rigid shift, certified with the condensed operators (friction law (2.4)-(2.5), gap function
-// (4.24)); partial slip, so the disks are active. NLopt takes the body's rows densely on such a
-// body, and is the fallback of `auto` when Ipopt fails. Larger bodies: slow_finite_saddle.
-#include <cstdlib>
-
+// (4.24)); partial slip, so the disks are active. Larger bodies and torsion: slow_finite_saddle.
 #include <gtest/gtest.h>
 
 #include "errors.hpp"
@@ -19,13 +16,28 @@ using fe::testing::expect_same_point;
 using fe::testing::shift_by_force;
 using fe::testing::solve_both;
 
-constexpr std::array<int, 3> kTiny{2, 2, 1};
+constexpr std::array<int, 3> kSmall{2, 2, 1};  // about 4k dofs
 
 TEST(FiniteSparseTangential, ShiftByForceAgreesWithTheCondensedProgram) {
-  const fe::testing::Pair r = solve_both(shift_by_force(0.6), 8, kTiny, "ipopt");
+  const fe::testing::Pair r = solve_both(shift_by_force(0.6), 8, kSmall, "ipopt");
   expect_same_point(r);
   EXPECT_EQ(r.sparse.report.backend, "ipopt");
   EXPECT_LT(r.sparse.amplitudes[0], 0.0) << "a force +F_x on the body meets a shift -s_x";
+}
+
+TEST(FiniteSparseTangential, OnlyIpoptTakesTheSparseForm) {
+  const Grid g = Grid::make(3, 4, 4, -1.2e-3, 1.2e-3, -1.2e-3, 1.2e-3);
+  FiniteContact a(fe::testing::hemisphere("sparse", kSmall), g, Elastic::from_E_nu(fe::testing::kE, fe::testing::kNu));
+  for (const char* backend : {"nlopt", "native"}) {
+    SolverSpec solver;
+    solver.backend = backend;
+    try {
+      a.tangential_problem(FrictionLaw::coulomb(fe::testing::kMu)).step(shift_by_force(0.6), solver);
+      FAIL() << backend << " accepted the sparse form";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.key(), "solver.backend");
+    }
+  }
 }
 
 }  // namespace
