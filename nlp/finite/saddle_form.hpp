@@ -1,16 +1,23 @@
 #pragma once
 // The sparse saddle form (a) of finite normal contact, handed to Ipopt. The body's equilibrium
-// stays as sparse equality rows instead of being condensed (DESIGN.md "Finite contact"):
-//   minimise   1/2 p'(A C_hs)p + 1/2 v'Ks v + A (h - delta)'p
-//   subject to Ks v = B p - M R a     (the body's equilibrium, six supported dofs held, (3.12))
+// stays as sparse equality rows instead of being condensed (DESIGN.md "Finite contact"), written
+// in the body's stresses (core/fe/stress_equilibrium.hpp: one weighted stress s_q per quadrature
+// point, K = Gt H^-1 Gt'):
+//   minimise   1/2 p'(A C_hs)p + 1/2 s'H s + A (h - delta)'p
+//   subject to Gt s = B p - M R a     (the body's equilibrium (3.12), at all dofs but six held
+//                                      ones, whose rows follow from the next six)
 //              R'M R a = R'B p        (the rigid modes: inertia relief of the resultant)
 //              sum A p = P            (force control; delta is then its multiplier)
 //              p >= 0                 ((2.2)-(2.3))
-// over (p, v, a). On the equality set v'Ks v = A p'(B'G B / A)p, so the program is the
-// condensed one of body_compliance.hpp with the same minimiser: the saddle point gives the
-// condensed program's pressure, and its certificate is measured with the condensed operator.
-// The half-space block A C_hs is dense: the exact Hessian (dense block + sparse Ks) while it
-// fits, Ipopt's limited-memory Hessian beyond.
+// over (p, s, a). The inner minimum over s is the body's complementary energy 1/2 F'K+F of
+// the nodal forces F = B p - M R a, so the program is the condensed one of body_compliance.hpp
+// with the same minimiser: the saddle point gives the condensed program's pressure, and its
+// certificate is measured with the condensed operator. The multipliers of the equilibrium rows
+// are the body's displacement. H is block-diagonal (6 x 6 per point), so the KKT matrix is
+// quasi-definite and MUMPS factorises it with 1 x 1 pivots; the stiffness form (v with Ks v =
+// B p - M R a and 1/2 v'Ks v) had the block [[Ks, Ks], [Ks, 0]] that needs 2 x 2 pivots and
+// was several times slower. The half-space block A C_hs is dense: the exact Hessian (dense block
+// + H) while it fits, Ipopt's limited-memory Hessian beyond.
 #include <string>
 #include <vector>
 
@@ -26,8 +33,8 @@ namespace dc {
 
 struct SaddleNormalOutcome {
   std::vector<double> pressure;        ///< Pa, one per grid element (>= 0)
-  std::vector<double> displacement;    ///< w = C_hs p + B'u / A at the grid (m), the body's u from v
-  Eigen::VectorXd body_displacement;   ///< u = v less its mean rigid motion (R'M u = 0)
+  std::vector<double> displacement;    ///< w = C_hs p + B'u / A at the grid (m)
+  Eigen::VectorXd body_displacement;   ///< u from the equilibrium rows' multipliers, less its mean rigid motion (R'M u = 0)
   bool success = false;                ///< Ipopt's verdict (the certificate decides)
   bool exact_hessian = false;
   std::string message;
