@@ -6,6 +6,7 @@
 #include "backend_choice.hpp"
 #include "errors.hpp"
 #include "scaled_operator.hpp"
+#include "stress_equilibrium.hpp"
 
 namespace dc {
 
@@ -13,10 +14,15 @@ SaddleBody saddle_body_block(const fe::ElasticBody& body, const fe::ContactFace&
                              const std::vector<int>& components, double traction_unit, double energy_unit,
                              double force_scale) {
   const Eigen::Index N = static_cast<Eigen::Index>(grid.size()), n = static_cast<Eigen::Index>(body.dofs());
-  const Eigen::Index n_x = static_cast<Eigen::Index>(components.size()) * N, col_v = n_x, col_a = n_x + n;
+  const fe::StressEquilibrium stresses = fe::stress_equilibrium(body);
+  const Eigen::Index ns = static_cast<Eigen::Index>(stresses.stresses());
+  const Eigen::Index n_x = static_cast<Eigen::Index>(components.size()) * N, col_s = n_x, col_a = n_x + ns;
   const double area = grid.area(), force_unit = traction_unit * area;
   SaddleBody out;
-  out.v_unit = energy_unit / force_unit;  // the displacement the traction unit causes
+  // The weighted stresses in units that give the energy's blocks a diagonal of order one.
+  double mean_compliance = 0.0;
+  for (const auto& H : stresses.compliance) mean_compliance += H(0, 0) / static_cast<double>(stresses.compliance.size());
+  out.s_unit = std::sqrt(energy_unit / mean_compliance);
   // Scales of the rigid modes: rows R'(M R a - B t) in units of the resultant (times the radius
   // of gyration for the rotations), a in units of the acceleration it gives.
   const Eigen::Matrix<double, 6, 6>& RMR = body.rigid_mass();
@@ -26,22 +32,23 @@ SaddleBody saddle_body_block(const fe::ElasticBody& body, const fe::ContactFace&
     rigid_row(j) = 1.0 / (force_scale * lever);
     a_unit(j) = force_scale * lever / RMR(j, j);
   }
-  const Eigen::SparseMatrix<double>& Ks = body.supported_stiffness();
   const Eigen::MatrixXd& MR = body.mass_rigid_modes();
   const Eigen::MatrixXd& R = body.rigid_modes();
   const Eigen::SparseMatrix<double, Eigen::RowMajor>& Bt = face.transfer();
-  std::vector<char> held(static_cast<std::size_t>(n), 0);
-  for (int s : body.supports()) held[static_cast<std::size_t>(s)] = 1;
+  // One equilibrium row per dof but the six held ones (their rows follow from the rigid modes').
+  std::vector<Eigen::Index> row_of_dof(static_cast<std::size_t>(n), 0);
+  for (int held : body.supports()) row_of_dof[static_cast<std::size_t>(held)] = -1;
+  Eigen::Index equilibrium_rows = 0;
+  for (auto& r : row_of_dof)
+    if (r >= 0) r = equilibrium_rows++;
   std::vector<Eigen::Triplet<double>> t;
-  t.reserve(static_cast<std::size_t>(2 * Ks.nonZeros() + 7 * n + 7 * n_x));
-  // The equilibrium rows in units of force_unit: Ks v - B t + M R a = 0 (held dofs: v = 0).
-  const double kv = out.v_unit / force_unit;
-  for (Eigen::Index c = 0; c < Ks.outerSize(); ++c)  // both halves from the lower one
-    for (Eigen::SparseMatrix<double>::InnerIterator it(Ks, c); it; ++it) {
-      if (it.value() == 0.0) continue;
-      t.emplace_back(it.row(), col_v + it.col(), kv * it.value());
-      if (it.row() != it.col()) t.emplace_back(it.col(), col_v + it.row(), kv * it.value());
-    }
+  t.reserve(static_cast<std::size_t>(stresses.forces.nonZeros() + 7 * n + 7 * n_x));
+  // The equilibrium rows in units of force_unit: Gt s - B t + M R a = 0.
+  const double ks = out.s_unit / force_unit;
+  for (Eigen::Index c = 0; c < stresses.forces.outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(stresses.forces, c); it; ++it)
+      if (const Eigen::Index row = row_of_dof[static_cast<std::size_t>(it.row())]; row >= 0)
+        t.emplace_back(row, col_s + it.col(), ks * it.value());
   Eigen::Matrix<double, 6, Eigen::Dynamic> RtB = Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, n_x);
   for (std::size_t c = 0; c < components.size(); ++c)
     for (Eigen::Index k = 0; k < Bt.outerSize(); ++k) {
@@ -49,43 +56,45 @@ SaddleBody saddle_body_block(const fe::ElasticBody& body, const fe::ContactFace&
       for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Bt, k); it; ++it) {
         const Eigen::Index dof = 3 * it.col() + components[c];  // t acts on the body along +component
         RtB.col(col) += it.value() * R.row(dof).transpose();
-        if (!held[static_cast<std::size_t>(dof)]) t.emplace_back(dof, col, -traction_unit / force_unit * it.value());
+        if (const Eigen::Index row = row_of_dof[static_cast<std::size_t>(dof)]; row >= 0)
+          t.emplace_back(row, col, -traction_unit / force_unit * it.value());
       }
     }
-  for (Eigen::Index r = 0; r < n; ++r)  // + M R a: the inertia relief
-    if (!held[static_cast<std::size_t>(r)])
+  for (Eigen::Index dof = 0; dof < n; ++dof)  // + M R a: the inertia relief
+    if (const Eigen::Index row = row_of_dof[static_cast<std::size_t>(dof)]; row >= 0)
       for (int j = 0; j < 6; ++j)
-        if (MR(r, j) != 0.0) t.emplace_back(r, col_a + j, a_unit(j) / force_unit * MR(r, j));
+        if (MR(dof, j) != 0.0) t.emplace_back(row, col_a + j, a_unit(j) / force_unit * MR(dof, j));
   for (int j = 0; j < 6; ++j) {  // R'M R a - R'B t = 0
     for (int l = 0; l < 6; ++l)
-      if (RMR(j, l) != 0.0) t.emplace_back(n + j, col_a + l, rigid_row(j) * a_unit(l) * RMR(j, l));
+      if (RMR(j, l) != 0.0) t.emplace_back(equilibrium_rows + j, col_a + l, rigid_row(j) * a_unit(l) * RMR(j, l));
     for (Eigen::Index k = 0; k < n_x; ++k)
-      if (RtB(j, k) != 0.0) t.emplace_back(n + j, k, -rigid_row(j) * traction_unit * RtB(j, k));
+      if (RtB(j, k) != 0.0) t.emplace_back(equilibrium_rows + j, k, -rigid_row(j) * traction_unit * RtB(j, k));
   }
   SparseBlock& b = out.block;
-  b.n = static_cast<int>(n + 6);
-  b.rows.resize(n + 6, n_x + n + 6);
+  b.n = static_cast<int>(ns + 6);
+  b.rows.resize(equilibrium_rows + 6, n_x + ns + 6);
   b.rows.setFromTriplets(t.begin(), t.end());
-  // The body's energy 1/2 v'Ks v in units of energy_unit.
-  b.hessian.resize(n + 6, n + 6);
+  // The body's complementary energy 1/2 s'H s in units of energy_unit: 6 x 6 blocks, lower triangles.
+  b.hessian.resize(ns + 6, ns + 6);
   std::vector<Eigen::Triplet<double>> h;
-  h.reserve(static_cast<std::size_t>(Ks.nonZeros()));
-  const double kh = out.v_unit * out.v_unit / energy_unit;
-  for (Eigen::Index c = 0; c < Ks.outerSize(); ++c)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(Ks, c); it; ++it)
-      if (it.row() >= it.col()) h.emplace_back(it.row(), it.col(), kh * it.value());
+  h.reserve(stresses.compliance.size() * 21);
+  const double kh = out.s_unit * out.s_unit / energy_unit;
+  for (std::size_t q = 0; q < stresses.compliance.size(); ++q) {
+    const Eigen::Index base = 6 * static_cast<Eigen::Index>(q);
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j <= i; ++j) h.emplace_back(base + i, base + j, kh * stresses.compliance[q](i, j));
+  }
   b.hessian.setFromTriplets(h.begin(), h.end());
   return out;
 }
 
-Eigen::VectorXd saddle_body_displacement(const fe::ElasticBody& body, const std::vector<double>& block_x,
-                                         double v_unit) {
-  const Eigen::Index n = static_cast<Eigen::Index>(body.dofs());
-  if (static_cast<Eigen::Index>(block_x.size()) < n) return Eigen::VectorXd::Zero(n);
-  // u = v - R (R'M R)^-1 (M R)'v: the displacement relative to the body's mean rigid motion.
-  const Eigen::VectorXd v = v_unit * Eigen::Map<const Eigen::VectorXd>(block_x.data(), n);
-  const Eigen::Matrix<double, 6, 1> r = body.rigid_mass().ldlt().solve(body.mass_rigid_modes().transpose() * v);
-  return v - body.rigid_modes() * r;
+Eigen::VectorXd saddle_body_displacement(const fe::ElasticBody& body, const fe::ContactFace& face, int component,
+                                         const std::vector<double>& tractions) {
+  // The nodal forces B t of the tractions, deformed with the kept factor: u = P' Ks^-1 P F.
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(body.dofs())), u;
+  face.add_forces(tractions.data(), component, 1.0, F);
+  body.deform(F, u);
+  return u;
 }
 
 std::vector<std::string> saddle_backend_order(const std::string& requested) {
@@ -152,7 +161,9 @@ SaddleNormalOutcome solve_saddle_normal(const fe::ElasticBody& body, const fe::C
   }
   out.pressure.resize(N);
   for (std::size_t i = 0; i < N; ++i) out.pressure[i] = std::max(o.x[i], 0.0) * p_ref;
-  out.body_displacement = saddle_body_displacement(body, o.block_x, rows.v_unit);
+  out.body_displacement = saddle_body_displacement(body, face, 2, out.pressure);
+  out.weighted_stresses.resize(static_cast<std::size_t>(rows.block.n - 6));
+  for (std::size_t q = 0; q < out.weighted_stresses.size(); ++q) out.weighted_stresses[q] = rows.s_unit * o.block_x[q];
   std::vector<double> w_hs, w_body(N);
   halfspace.apply(out.pressure, w_hs);
   face.mean_displacement(out.body_displacement, 2, w_body.data());
