@@ -9,6 +9,7 @@
 
 #include "anderson_mixing.hpp"
 #include "contact_closed_forms.hpp"
+#include "proportional_predictor.hpp"
 #include "tangential_support.hpp"
 
 namespace dc {
@@ -54,6 +55,81 @@ TEST(OuterLoop, WarmStartedHistoryEqualsColdStartedSteps) {
   }
   std::printf("[ outer loop ] alternations over 5 steps: warm %d, cold %d\n", warm_alternations, cold_alternations);
   EXPECT_LE(warm_alternations, cold_alternations);
+}
+
+TEST(OuterLoop, ProportionalHistoryStartsFromTheExtrapolatedState) {
+  // Spence-like indentation (kappa != 0) in 6 equal load steps: from step 3 on the load continues
+  // in proportion, and the alternation starts from the state extrapolated from the last two
+  // steps. It reaches the same states as starting from the last step's state and as cold starts,
+  // from a smaller first coupling residual, in fewer alternations.
+  const MaterialPair m{Elastic::make_rigid(), Elastic::from_E_nu(7e10, 0.0)};
+  ASSERT_NE(m.kappa(), 0.0);
+  const double R = 0.01, P_max = 100.0, mu = 0.3;
+  const auto su = test::sphere_setup(24, 1.2, m, R, P_max);
+  TangentialProblem predicted(su.grid, m, su.heights, FrictionLaw::coulomb(mu));
+  TangentialProblem previous(su.grid, m, su.heights, FrictionLaw::coulomb(mu));
+  TangentialProblem cold(su.grid, m, su.heights, FrictionLaw::coulomb(mu));
+  previous.set_extrapolation(false);
+  TangentialLoad load;
+  load.modes = {test::resultant(0.0), test::resultant(0.0), amplitude(0.0)};
+  const SolverSpec solver = test::native_tangential_solver();
+  int predicted_alternations = 0, previous_alternations = 0;
+  for (int k = 1; k <= 6; ++k) {
+    load.normal = {Control::force, P_max * k / 6.0};
+    const TangentialSolution a = predicted.step(load, solver);
+    const TangentialSolution b = previous.step(load, solver);
+    cold.forget_starting_points();
+    const TangentialSolution c = cold.step(load, solver);
+    for (const TangentialSolution* s : {&a, &b, &c}) {
+      expect_certified(*s);
+      EXPECT_TRUE(s->outer.converged);
+      EXPECT_LE(s->outer.coupling_residual, 0.01 * solver.certificate_tol) << "step " << k;
+    }
+    double p_max = 0.0, f_max = 0.0;
+    for (std::size_t e = 0; e < su.grid.size(); ++e) {
+      p_max = std::max(p_max, c.normal.pressure[e]);
+      f_max = std::max(f_max, c.bound[e]);
+    }
+    for (const TangentialSolution* s : {&a, &b}) {
+      for (std::size_t e = 0; e < su.grid.size(); ++e) {
+        EXPECT_NEAR(s->normal.pressure[e], c.normal.pressure[e], 1e-6 * p_max) << "step " << k;
+        EXPECT_NEAR(s->tx[e], c.tx[e], 1e-5 * f_max) << "step " << k;
+        EXPECT_NEAR(s->ty[e], c.ty[e], 1e-5 * f_max) << "step " << k;
+      }
+      EXPECT_EQ(s->n_stick, c.n_stick) << "step " << k;
+    }
+    if (k >= 3) {
+      EXPECT_LT(a.outer.first_residual, 0.5 * b.outer.first_residual) << "step " << k;
+      predicted_alternations += a.outer.iterations;
+      previous_alternations += b.outer.iterations;
+    }
+  }
+  std::printf("[ outer loop ] alternations over steps 3-6: extrapolated %d, from the last state %d\n",
+              predicted_alternations, previous_alternations);
+  EXPECT_LT(predicted_alternations, previous_alternations);
+}
+
+TEST(OuterLoop, ProportionalLoadsAreRecognised) {
+  using Load = ProportionalPredictor::Load;
+  const Load a{{10.0, 0.0, 1e-6}, {1, 0, 0}}, b{{20.0, 0.0, 2e-6}, {1, 0, 0}};
+  EXPECT_DOUBLE_EQ(ProportionalPredictor::ratio(a, b, {{30.0, 0.0, 3e-6}, {1, 0, 0}}), 1.0);
+  EXPECT_DOUBLE_EQ(ProportionalPredictor::ratio(a, b, {{25.0, 0.0, 2.5e-6}, {1, 0, 0}}), 0.5);
+  EXPECT_EQ(ProportionalPredictor::ratio(a, b, {{30.0, 0.0, 2e-6}, {1, 0, 0}}), 0.0);   // not in proportion
+  EXPECT_EQ(ProportionalPredictor::ratio(a, b, {{10.0, 0.0, 1e-6}, {1, 0, 0}}), 0.0);   // reversed
+  EXPECT_EQ(ProportionalPredictor::ratio(a, b, {{60.0, 0.0, 6e-6}, {1, 0, 0}}), 0.0);   // r = 4: too far
+  EXPECT_EQ(ProportionalPredictor::ratio(a, b, {{30.0, 0.0, 3e-6}, {0, 0, 0}}), 0.0);   // other controls
+  EXPECT_EQ(ProportionalPredictor::ratio(b, b, {{30.0, 0.0, 3e-6}, {1, 0, 0}}), 0.0);   // held: no direction
+  // Extrapolation: tau linear, the pressure kept >= 0.
+  ProportionalPredictor predictor;
+  std::vector<double> tau, p;
+  EXPECT_FALSE(predictor.predict(b, tau, p));
+  predictor.record(a, {1.0, -1.0}, {3.0, 1.0});
+  predictor.record(b, {2.0, -3.0}, {4.0, 0.5});
+  ASSERT_TRUE(predictor.predict({{30.0, 0.0, 3e-6}, {1, 0, 0}}, tau, p));
+  EXPECT_EQ(tau, (std::vector<double>{3.0, -5.0}));
+  EXPECT_EQ(p, (std::vector<double>{5.0, 0.0}));
+  predictor.clear();
+  EXPECT_FALSE(predictor.predict({{30.0, 0.0, 3e-6}, {1, 0, 0}}, tau, p));
 }
 
 TEST(OuterLoop, IpoptAndNativeReachTheSameState) {
