@@ -6,6 +6,7 @@
 # `cmake --install build --prefix P` installs
 #   P/lib/libdyncontact_{core,nlp,dynamics}.a   (shared with -DBUILD_SHARED_LIBS=ON)
 #   P/lib/libdyncontact_{fe,finite}.a           (with DYNCONTACT_WITH_FE: finite-element bodies)
+#   P/lib/dyncontact/libdyncontact_gmsh.so      (the Gmsh plugin, loaded when a body is meshed)
 #   P/include/dyncontact/*.hpp                  (flat: #include "normal_problem.hpp")
 #   P/bin/dyncontact                            (install rule in apps/CMakeLists.txt)
 #   P/lib/cmake/dyncontact/                     (config, version, targets, find modules)
@@ -28,9 +29,9 @@ mark_as_advanced(DYNCONTACT_INSTALL_CMAKEDIR)
 
 set(_dyncontact_libraries dyncontact_core dyncontact_nlp dyncontact_dynamics)
 set(_dyncontact_find_modules ${CMAKE_CURRENT_LIST_DIR}/FindFFTW3.cmake ${CMAKE_CURRENT_LIST_DIR}/FindIpopt.cmake)
-if(DYNCONTACT_WITH_FE)  # finite-element bodies: dyncontact_fe (Gmsh, CHOLMOD) and dyncontact_finite
+if(DYNCONTACT_WITH_FE)  # finite-element bodies: dyncontact_fe (CHOLMOD; Gmsh as a plugin) and dyncontact_finite
   list(APPEND _dyncontact_libraries dyncontact_fe dyncontact_finite)
-  list(APPEND _dyncontact_find_modules ${CMAKE_CURRENT_LIST_DIR}/FindGmsh.cmake ${CMAKE_CURRENT_LIST_DIR}/FindCHOLMOD.cmake)
+  list(APPEND _dyncontact_find_modules ${CMAKE_CURRENT_LIST_DIR}/FindCHOLMOD.cmake)
 endif()
 
 install(TARGETS ${_dyncontact_libraries}

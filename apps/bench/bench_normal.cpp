@@ -33,6 +33,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "blas_threads.hpp"
 #include "case_model.hpp"
 #include "grid.hpp"
 #include "hertz.hpp"
@@ -363,6 +364,7 @@ void write_csv(const std::string& path, const std::vector<Row>& rows) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  dc::use_one_blas_thread();  // as the program does: no idle BLAS threads spinning beside the solve
   Options options;
   CLI::App app{"dyncontact_bench: normal-contact backends on a Hertz sphere (steel on steel, "
                "R = 0.01 m, P = 100 N, grid +-1.3 a)"};

@@ -17,6 +17,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "blas_threads.hpp"
 #include "case_model.hpp"
 #include "contact_closed_forms.hpp"
 #include "hertz.hpp"
@@ -85,6 +86,7 @@ Measure run_once(const dc::Case& c) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  dc::use_one_blas_thread();  // as the program does: no idle BLAS threads spinning beside the solve
   std::vector<std::string> files;
   int repeat = 1;
   CLI::App app{"dyncontact_peer_bench: whole cases timed as a user runs them (median of --repeat)"};

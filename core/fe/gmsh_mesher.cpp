@@ -1,124 +1,60 @@
 #include "gmsh_mesher.hpp"
 
+#include <dlfcn.h>
+
 #include <algorithm>
-#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <limits>
-#include <mutex>
+#include <stdexcept>
 #include <string>
 
-#include <gmsh.h>
-
 #include "errors.hpp"
+#include "gmsh_tetrahedra.hpp"
 
 namespace dc::fe {
 
 namespace {
 
-std::mutex& gmsh_mutex() {  // Gmsh keeps one global model
-  static std::mutex m;
-  return m;
+/// Where the Gmsh plugin may be, in order: $DYNCONTACT_GMSH_PLUGIN; beside the program or
+/// library that holds this code, as installed (bin/../lib/dyncontact); the build tree; the
+/// configured install prefix.
+std::vector<std::filesystem::path> gmsh_plugin_candidates() {
+  std::vector<std::filesystem::path> paths;
+  if (const char* env = std::getenv("DYNCONTACT_GMSH_PLUGIN"); env && *env) paths.emplace_back(env);
+  Dl_info self{};
+  if (dladdr(reinterpret_cast<void*>(&mesh_body), &self) && self.dli_fname)
+    paths.push_back(std::filesystem::path(self.dli_fname).parent_path() / DYNCONTACT_GMSH_PLUGIN_FROM_BINDIR /
+                    DYNCONTACT_GMSH_PLUGIN_NAME);
+  paths.emplace_back(DYNCONTACT_GMSH_PLUGIN_BUILD);
+  paths.emplace_back(DYNCONTACT_GMSH_PLUGIN_INSTALL);
+  return paths;
 }
 
-/// Initialises Gmsh quietly for one mesh and finalises it on every path.
-struct GmshSession {
-  GmshSession() {
-    gmsh::initialize();
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::option::setNumber("General.Verbosity", 1);
-  }
-  ~GmshSession() { gmsh::finalize(); }
-  GmshSession(const GmshSession&) = delete;
-  GmshSession& operator=(const GmshSession&) = delete;
-};
-
-double coarse_size(const FeBodySpec& s, const std::array<double, 3>& extent) {
-  double h = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 3; ++i) h = std::min(h, extent[i] / std::max(1, s.elements[i]));
-  return h;
-}
-
-void build_geometry(const FeBodySpec& s) {
-  switch (s.shape) {
-    case FeShape::block:
-      gmsh::model::occ::addBox(-0.5 * s.size[0], -0.5 * s.size[1], 0.0, s.size[0], s.size[1], s.size[2]);
-      break;
-    case FeShape::cylinder:
-      gmsh::model::occ::addCylinder(0.0, 0.0, 0.0, 0.0, 0.0, s.height, s.radius);
-      break;
-    case FeShape::hemisphere:  // the lower half of the sphere centred at (0, 0, R)
-      gmsh::model::occ::addSphere(0.0, 0.0, s.radius, s.radius, -1, -M_PI / 2.0, 0.0, 2.0 * M_PI);
-      break;
-    case FeShape::mesh:
-      break;
-  }
-  gmsh::model::occ::synchronize();
-}
-
-std::array<double, 3> extent_of(const FeBodySpec& s) {
-  switch (s.shape) {
-    case FeShape::block: return s.size;
-    case FeShape::cylinder: return {2.0 * s.radius, 2.0 * s.radius, s.height};
-    case FeShape::hemisphere: return {2.0 * s.radius, 2.0 * s.radius, s.radius};
-    case FeShape::mesh: break;
-  }
-  return {0.0, 0.0, 0.0};
-}
-
-/// Element size growing from `contact_size` at the lowest point to the coarse size.
-void set_size_field(const FeBodySpec& s) {
-  const double h = coarse_size(s, extent_of(s));
-  const double h0 = s.contact_size > 0.0 ? std::min(s.contact_size, h) : 0.25 * h;
-  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", h);
-  gmsh::option::setNumber("Mesh.MeshSizeMin", h0);
-  const int field = gmsh::model::mesh::field::add("MathEval");
-  const std::string expr = "Min(" + std::to_string(h) + ", " + std::to_string(h0) + " + 0.3 * Sqrt(x*x + y*y + z*z))";
-  gmsh::model::mesh::field::setString(field, "F", expr);
-  gmsh::model::mesh::field::setAsBackgroundMesh(field);
-}
-
-/// Vertices and linear tetrahedra of the current model (first-order and second-order
-/// tetrahedra both accepted: only their corners are used).
-void read_tetrahedra(std::vector<Eigen::Vector3d>& vertices, std::vector<std::array<int, 4>>& tets,
-                     std::vector<std::array<Eigen::Vector3d, 6>>& curved) {
-  std::vector<std::size_t> tags;
-  std::vector<double> coord, param;
-  gmsh::model::mesh::getNodes(tags, coord, param);
-  std::size_t max_tag = 0;
-  for (std::size_t t : tags) max_tag = std::max(max_tag, t);
-  std::vector<int> index(max_tag + 1, -1);
-  vertices.resize(tags.size());
-  for (std::size_t i = 0; i < tags.size(); ++i) {
-    index[tags[i]] = static_cast<int>(i);
-    vertices[i] = Eigen::Vector3d(coord[3 * i], coord[3 * i + 1], coord[3 * i + 2]);
-  }
-  for (int type : {4, 11}) {  // 4-node and 10-node tetrahedra
-    std::vector<std::size_t> elem_tags, node_tags;
-    gmsh::model::mesh::getElementsByType(type, elem_tags, node_tags);
-    const std::size_t per = type == 4 ? 4 : 10;
-    for (std::size_t e = 0; e < elem_tags.size(); ++e) {
-      std::array<int, 4> t{};
-      for (int k = 0; k < 4; ++k) {
-        const std::size_t tag = node_tags[e * per + k];
-        t[k] = tag <= max_tag ? index[tag] : -1;
+/// The plugin's entry point, loaded once (Gmsh's start-up is paid by runs that mesh a body only).
+GmshTetrahedraFunction gmsh_tetrahedra_function() {
+  static const GmshTetrahedraFunction function = [] {
+    std::string tried;
+    for (const auto& path : gmsh_plugin_candidates()) {
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(path, ec)) {
+        tried += "\n  " + path.string() + " (not found)";
+        continue;
       }
-      tets.push_back(t);
-      if (type == 11) {
-        std::array<Eigen::Vector3d, 6> mids;
-        for (int k = 0; k < 6; ++k) {
-          const std::size_t tag = node_tags[e * per + 4 + k];
-          const int i = tag <= max_tag ? index[tag] : -1;
-          mids[k] = i >= 0 ? vertices[i] : Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-        }
-        curved.push_back(mids);
+      void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+      if (!handle) {
+        tried += "\n  " + path.string() + " (" + dlerror() + ")";
+        continue;
       }
+      if (void* symbol = dlsym(handle, gmsh_tetrahedra_symbol))
+        return reinterpret_cast<GmshTetrahedraFunction>(symbol);
+      tried += "\n  " + path.string() + " (no entry point " + gmsh_tetrahedra_symbol + ")";
+      dlclose(handle);
     }
-  }
-  // Curved mid-edge points only when every tetrahedron has them.
-  if (curved.size() != tets.size()) curved.clear();
+    throw std::runtime_error("the Gmsh plugin " + std::string(DYNCONTACT_GMSH_PLUGIN_NAME) +
+                             " could not be loaded (set DYNCONTACT_GMSH_PLUGIN to its path); tried:" + tried);
+  }();
+  return function;
 }
 
 void assign_regions(const FeBodySpec& spec, BodyMesh& mesh) {
@@ -142,33 +78,13 @@ BodyMesh mesh_body(const FeBodySpec& spec) {
   const std::string key = spec.shape == FeShape::mesh ? "fe_body.mesh" : "fe_body";
   if (spec.shape == FeShape::mesh && !std::filesystem::is_regular_file(spec.mesh_file))
     throw InputError("fe_body.mesh", "file '" + spec.mesh_file + "' not found");
-  std::vector<Eigen::Vector3d> vertices;
-  std::vector<std::array<int, 4>> tets;
-  std::vector<std::array<Eigen::Vector3d, 6>> curved;
-  {
-    const std::lock_guard<std::mutex> lock(gmsh_mutex());
-    GmshSession session;
-    try {
-      if (spec.shape == FeShape::mesh) {
-        gmsh::open(spec.mesh_file);
-      } else {
-        gmsh::model::add("body");
-        build_geometry(spec);
-        set_size_field(spec);
-        gmsh::model::mesh::generate(3);
-        gmsh::model::mesh::setOrder(2);  // mid-edge nodes on the true geometry (the contact face)
-      }
-      read_tetrahedra(vertices, tets, curved);
-    } catch (const InputError&) {
-      throw;
-    } catch (const std::exception& e) {
-      throw InputError(key, std::string("Gmsh could not mesh the body: ") + e.what());
-    } catch (...) {
-      throw InputError(key, "Gmsh could not read or mesh the body");
-    }
-  }
+  GmshTetrahedra gmsh;
+  std::string error;
+  if (!gmsh_tetrahedra_function()(spec, gmsh, error))
+    throw InputError(key, "Gmsh could not read or mesh the body: " + error);
+  const auto& tets = gmsh.tets;
   if (tets.empty()) throw InputError(key, "the mesh has no tetrahedra (a volume mesh is needed)");
-  BodyMesh mesh = quadratic_mesh_from_linear(vertices, tets, key, curved.empty() ? nullptr : &curved);
+  BodyMesh mesh = quadratic_mesh_from_linear(gmsh.vertices, tets, key, gmsh.curved.empty() ? nullptr : &gmsh.curved);
   assign_regions(spec, mesh);
   return mesh;
 }
