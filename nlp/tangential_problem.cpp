@@ -480,8 +480,9 @@ struct TangentialProblem::Impl {
   /// with the gap shifted by kappa B32 tau of the previous iterate, the bound f(p), then
   /// `inner(p, f, tau)` updates tau (false: it gave up, the loop stops and returns false).
   /// kappa = 0: p does not depend on tau, so f(p) is final after one pass.
-  /// kappa != 0: the alternation is a fixed point tau = G(tau), accelerated by Anderson mixing
-  /// of the tau fed to (4.26); both problems start from the previous step's solution (warm).
+  /// kappa != 0: the alternation is a fixed point s = G(s) of the gap shift s = kappa B32 tau fed
+  /// to (4.26), accelerated by Anderson mixing of s (N values, in the units of the stopping
+  /// test; one B32 apply per pass); both problems start from the previous step's solution (warm).
   /// It stops on the certificate: the pressure was solved with kappa B32 tau_in, and the new
   /// tau moves that gap by kappa B32 (tau - tau_in); once this is below a hundredth of
   /// certificate_tol (in the certificate's units, gap / C_00 / max p), p and tau certify together.
@@ -492,7 +493,8 @@ struct TangentialProblem::Impl {
   template <class Inner>
   bool outer_loop(TangentialSolution& sol, const NormalSpec& normal_load, const SolverSpec& solver,
                   std::vector<double>& tau, std::vector<double>& f, bool inexact, Inner&& inner) {
-    std::vector<double> p_old, tau_old, wz, dtau, tau_in = tau;
+    // The gap shift kappa B32 tau_in fed to (4.26) and the one of the new tau.
+    std::vector<double> p_old, tau_old, shift_in, shift_out;
     f.assign(N, 0.0);
     const bool stall = injected_fault("outer") != Fault::none;  // test-only: a loop that never settles
     const int max_outer = coupled ? (stall ? 3 : 100) : 1;
@@ -503,12 +505,11 @@ struct TangentialProblem::Impl {
     SolverSpec pass = solver;
     if (coupled && inexact) pass = loose_pass(solver, 1e-3);
     double last_gap = 0.0;
+    if (coupled) B32->apply(tau, shift_in);
     for (int m = 1; m <= max_outer; ++m) {
       std::vector<double> h = heights;  // (4.26)
-      if (coupled) {
-        B32->apply(tau_in, wz);
-        for (std::size_t i = 0; i < N; ++i) h[i] += wz[i];
-      }
+      if (coupled)
+        for (std::size_t i = 0; i < N; ++i) h[i] += shift_in[i];
       const bool exact_pass = pass.tol == solver.tol;
       sol.normal = solve_normal(std::move(h), normal_load, pass);
       if (sol.normal.report.status == SolveStatus::failed)
@@ -527,12 +528,10 @@ struct TangentialProblem::Impl {
       tau_old = tau;
       if (max_outer == 1) break;
       // The gap error the last tau leaves in the pressure's problem (certificate units).
-      dtau.resize(tau.size());
-      for (std::size_t i = 0; i < tau.size(); ++i) dtau[i] = tau[i] - tau_in[i];
-      B32->apply(dtau, wz);
+      B32->apply(tau, shift_out);
       double gap_error = 0.0;
       for (std::size_t i = 0; i < N; ++i)
-        if (std::isfinite(heights[i])) gap_error = std::max(gap_error, std::abs(wz[i]));
+        if (std::isfinite(heights[i])) gap_error = std::max(gap_error, std::abs(shift_out[i] - shift_in[i]));
       const double p_max = max_abs(p);
       gap_error /= c0 * (p_max > 0.0 ? p_max : 1.0);
       sol.outer.coupling_residual = gap_error;
@@ -543,7 +542,7 @@ struct TangentialProblem::Impl {
         sol.outer.last_change = change;
         break;
       }
-      tau_in = mixer.next(tau_in, tau);
+      shift_in = mixer.next(shift_in, shift_out);
       // The next pass is exact once it is expected to end the loop (the residual contracts by
       // the last pass's factor), and so is the last pass allowed: an unsettled loop reports
       // exact solves' last iterate.

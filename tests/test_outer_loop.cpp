@@ -76,7 +76,7 @@ TEST(OuterLoop, WarmStartedHistoryEqualsColdStartedSteps) {
 }
 
 TEST(OuterLoop, ProportionalHistoryStartsFromTheExtrapolatedState) {
-  // Spence-like indentation (kappa != 0) in 6 equal load steps: from step 3 on the load continues
+  // Spence-like indentation (kappa != 0) in 10 equal load steps: from step 3 on the load continues
   // in proportion, and the alternation starts from the state extrapolated from the last two
   // steps. It reaches the same states as starting from the last step's state and as cold starts,
   // from a smaller first coupling residual, in fewer alternations.
@@ -90,9 +90,10 @@ TEST(OuterLoop, ProportionalHistoryStartsFromTheExtrapolatedState) {
   TangentialLoad load;
   load.modes = {test::resultant(0.0), test::resultant(0.0), amplitude(0.0)};
   const SolverSpec solver = test::native_tangential_solver();
+  const int steps = 10;
   int predicted_alternations = 0, previous_alternations = 0;
-  for (int k = 1; k <= 6; ++k) {
-    load.normal = {Control::force, P_max * k / 6.0};
+  for (int k = 1; k <= steps; ++k) {
+    load.normal = {Control::force, P_max * k / static_cast<double>(steps)};
     const TangentialSolution a = predicted.step(load, solver);
     const TangentialSolution b = previous.step(load, solver);
     cold.forget_starting_points();
@@ -110,7 +111,7 @@ TEST(OuterLoop, ProportionalHistoryStartsFromTheExtrapolatedState) {
       previous_alternations += b.outer.iterations;
     }
   }
-  std::printf("[ outer loop ] alternations over steps 3-6: extrapolated %d, from the last state %d\n",
+  std::printf("[ outer loop ] alternations over steps 3-%d: extrapolated %d, from the last state %d\n", steps,
               predicted_alternations, previous_alternations);
   EXPECT_LT(predicted_alternations, previous_alternations);
 }
