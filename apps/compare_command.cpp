@@ -23,8 +23,9 @@
 namespace dc::cli {
 namespace {
 
-/// The "backend" of a finite case that solves the sparse saddle form (a) with Ipopt.
-constexpr const char* kSparseForm = "ipopt-sparse";
+/// The "backends" of a finite case that solve the sparse saddle form (a): Ipopt, or NLopt on
+/// small bodies (the body's rows taken densely).
+bool sparse_form(const std::string& backend) { return backend == "ipopt-sparse" || backend == "nlopt-sparse"; }
 
 struct CompareArgs {
   std::string case_path, out;
@@ -78,9 +79,9 @@ int run_compare(const CompareArgs& args) {
   const Case base = load_case(args.case_path, args.sets);
   const bool finite = base.problem == ProblemKind::finite;
   for (const auto& b : args.backends)
-    if (b != "auto" && b != "ipopt" && b != "nlopt" && b != "native" && !(finite && b == kSparseForm))
+    if (b != "auto" && b != "ipopt" && b != "nlopt" && b != "native" && !(finite && sparse_form(b)))
       throw InputError("--backends", "unknown backend '" + b + "' (expected auto, ipopt, nlopt or native" +
-                                         (finite ? ", or ipopt-sparse for the sparse form)" : ")"));
+                                         (finite ? ", or ipopt-sparse, nlopt-sparse for the sparse form)" : ")"));
   if (base.problem == ProblemKind::paper_cylinder)
     throw InputError("problem",
                      "a paper_cylinder case has no contact backend to compare: its traction is the Carter-Poritsky "
@@ -89,16 +90,14 @@ int run_compare(const CompareArgs& args) {
   if (base.problem != ProblemKind::normal && base.problem != ProblemKind::tangential && !finite)
     not_implemented(base.problem);
   const bool tangential = base.problem == ProblemKind::tangential || (finite && base.tangential);
-  if (tangential && std::find(args.backends.begin(), args.backends.end(), kSparseForm) != args.backends.end())
-    throw InputError("--backends", "the sparse form (ipopt-sparse) solves the normal problem only");
   const std::string dir = prepare_output_dir(base, args.out);
 
   std::vector<Entry> entries;
   for (const auto& b : args.backends) {
     Case c = base;
-    c.solver.backend = b == kSparseForm ? "ipopt" : b;
-    if (finite) {  // a finite body: the condensed program, or the sparse saddle form by Ipopt
-      c.fe_body->program = b == kSparseForm ? "sparse" : "condensed";
+    c.solver.backend = sparse_form(b) ? b.substr(0, b.find('-')) : b;
+    if (finite) {  // a finite body: the condensed program, or the sparse saddle form by Ipopt or NLopt
+      c.fe_body->program = sparse_form(b) ? "sparse" : "condensed";
       c.source["fe_body"]["program"] = c.fe_body->program;
     }
     c.solver.fallback = false;  // compare the backend itself, not its fallbacks
@@ -207,7 +206,7 @@ void add_compare_command(CLI::App& app, int& exit_code) {
       "first backend (tangential cases add the traction field and the tangential force: d_traction, d_t_force). "
       "Use it to check that the backends agree on a new kind of case or to pick the fastest. A finite case "
       "(problem finite) solves the condensed program with each backend; 'ipopt-sparse' adds Ipopt on the sparse "
-      "saddle form (docs/finite.md), certified on the condensed program. "
+      "saddle form (docs/finite.md), 'nlopt-sparse' NLopt on it (small bodies), certified on the condensed program. "
       "Exit code 0 when every backend converged, 3 otherwise, 2 for bad input.");
   sub->add_option("case", args->case_path, "case file (JSON)")->required();
   sub->add_option("--backends", args->backends, "comma-separated backends (default ipopt,nlopt,native)")

@@ -18,6 +18,15 @@ nlohmann::json material_json(const Elastic& m) {
   return {{"E", m.E}, {"nu", m.nu}, {"G", m.G}};
 }
 
+/// A finite-element body (fe_body) is its mesh, not the rigid stand-in the pair holds for it.
+nlohmann::json fe_body_json(const FeBodySpec& b) {
+  const char* shape = b.shape == FeShape::block      ? "block"
+                      : b.shape == FeShape::cylinder ? "cylinder"
+                      : b.shape == FeShape::mesh     ? "mesh"
+                                                     : "hemisphere";
+  return {{"fe_body", shape}, {"density", b.material.density}, {"regions", b.regions.size()}};
+}
+
 double relative(double value, double reference) {
   return reference != 0.0 ? (value - reference) / std::abs(reference) : 0.0;
 }
@@ -38,10 +47,10 @@ nlohmann::json summary_header(const Case& c) {
     grid["dy"] = g.dy;
   }
   s["grid"] = grid;
-  s["materials"] = {{"body", material_json(c.materials.body)},
+  s["materials"] = {{"body", c.fe_body ? fe_body_json(*c.fe_body) : material_json(c.materials.body)},
                     {"base", material_json(c.materials.base)},
-                    {"E_star", c.materials.E_star()}};
-  s["profile"] = to_string(c.profile.type);
+                    {"E_star", c.materials.E_star()}};  // with an fe_body: the half-space's share
+  s["profile"] = c.fe_body ? "fe_body" : to_string(c.profile.type);
   return s;
 }
 

@@ -135,9 +135,6 @@ void read_finite_blocks(const json& document, Case& c, const std::string& base_d
   if (c.fe_body->load_line && (c.tangential || c.fe_body->program == "sparse" || c.normal.control != Control::force))
     throw InputError("fe_body.load_line", "the moment rows of a load line go with a normal force on the condensed "
                                           "program (no tangential block, no approach, program 'condensed')");
-  if (c.tangential && c.fe_body->program == "sparse")
-    throw InputError("fe_body.program", "the sparse form solves the normal problem only: use 'condensed' with a "
-                                        "tangential block");
 }
 
 }  // namespace dc

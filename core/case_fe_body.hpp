@@ -31,8 +31,9 @@ struct FeBodySpec {
   double contact_size = 0.0;                  ///< element size at the contact (0: coarse / 4)
   fe::BodyMaterial material;
   std::vector<FeRegionSpec> regions;
-  /// The program of the normal problem: "condensed" (the compliance C_hs + B'K+B / A, every
-  /// backend) or "sparse" (the saddle form over (p, u) with the equilibrium as sparse rows, Ipopt).
+  /// The program of the normal and tangential problems: "condensed" (the compliances C_hs +
+  /// B'K+B / A, every backend) or "sparse" (the saddle form over the tractions and u with the
+  /// equilibrium as sparse rows: Ipopt, NLopt on small bodies).
   std::string program = "condensed";
   /// The body's tilt: given rotations about x and y (rad, about the grid origin), or free with
   /// the moment rows of the rigid motion when `load_line` gives where the normal force's line of

@@ -83,6 +83,7 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
   double impulse_size = 0.0, external_work = 0.0, contact_work = 0.0;
   const int n_steps = std::max(1, static_cast<int>(std::ceil(spec_.t_end / spec_.dt - 1e-9)));
   constexpr int kMaxHalvings = 6;
+  Wrench contact_at_step_start;  // the last accepted step's contact wrench (none before the first)
 
   for (int step = 1; step <= n_steps; ++step) {
     const double t_target = std::min(spec_.t_end, step * spec_.dt);
@@ -101,6 +102,7 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
         ok = true;
         Eigen::Vector3d imp = Eigen::Vector3d::Zero();
         double imp_size = 0.0, w_ext = 0.0, w_contact = 0.0;
+        Wrench contact_before = contact_at_step_start;
         for (int part = 0; part < parts && ok; ++part) {
           contact_.begin_step(h);
           const int solves_before = contact_.solves();
@@ -134,11 +136,16 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
           const Eigen::Vector3d F = ext.force + con.force;
           imp += h * F;
           imp_size += h * F.norm();
-          // Work: the end-of-step wrench over the step's displacement and rotation (the scheme's own).
+          // Work over the step's displacement and rotation by the trapezoidal rule (exact for a
+          // wrench linear in the motion over the step): the end-of-step wrench alone misses a
+          // share of every step's force change, which over an elastic impact's loading and
+          // unloading adds up to ~10 % of the kinetic energy where the rebound loses 0.1 %.
           const Eigen::Vector3d dR = state.position - before.position;
           const Eigen::Vector3d dTheta = h * state.omega;
-          w_ext += ext.force.dot(dR) + ext.moment.dot(dTheta);
-          w_contact += con.force.dot(dR) + con.moment.dot(dTheta);
+          const Wrench ext_before = external(before.time);
+          w_ext += 0.5 * ((ext_before.force + ext.force).dot(dR) + (ext_before.moment + ext.moment).dot(dTheta));
+          w_contact += 0.5 * ((contact_before.force + con.force).dot(dR) + (contact_before.moment + con.moment).dot(dTheta));
+          contact_before = con;
         }
         if (!ok) {
           state = start;
@@ -147,6 +154,7 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
         }
         impulse += imp;
         impulse_size += imp_size;
+        contact_at_step_start = contact_before;
         external_work += w_ext;
         contact_work += w_contact;
       }

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "errors.hpp"
 #include "fault_injection.hpp"
@@ -49,6 +50,7 @@ TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp,
       out.equality_multipliers.assign(qp.equalities.size(), 0.0);
       out.message = backend + ": stall injected (DYNCONTACT_FAULT)";
     } else if (backend == "native") {
+      if (qp.block) throw std::invalid_argument("the native solvers take no sparse rows");
       out = native(qp, options);
     } else if (backend == "ipopt") {
       out = solve_with_ipopt(qp, options);

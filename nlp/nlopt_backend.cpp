@@ -1,6 +1,7 @@
 // NLopt backend: bounds only -> LD_LBFGS; equalities only -> AUGLAG_EQ over LD_CCSAQ;
 // disks (with or without equalities) -> AUGLAG over LD_TNEWTON_PRECOND_RESTART, each disk as
 // x_ix^2 + x_iy^2 - r^2 <= 0. The subsidiary optimizer keeps the bounds.
+// A sparse block (sparse_block.hpp) becomes dense rows (FlatProgram).
 // NLopt returns no multipliers: the equality multipliers are estimated afterwards by least
 // squares of  Qx + c = sum_k lambda_k a_k  over the free components (see estimate_multipliers).
 // NLopt then stops near, not at, the solution: its point is finished by the active-set polish
@@ -19,6 +20,7 @@
 #include "active_set_polish.hpp"
 #include "quadratic_program.hpp"
 #include "interrupt.hpp"
+#include "sparse_block.hpp"
 
 namespace dc {
 namespace {
@@ -156,6 +158,10 @@ SolveOutcome solve_with_nlopt(const QuadraticProgram& qp, const SolveOptions& op
   if (const std::string why = qp.invalid_reason(); !why.empty()) {
     out.message = "NLopt: invalid program: " + why;
     return out;
+  }
+  if (qp.block) {  // the block's rows taken densely (small blocks only: the caller's limit)
+    const FlatProgram flat(qp);
+    return flat.split(solve_with_nlopt(flat.program, options));
   }
   const int n = qp.n();
   Problem p{qp, options, qp.lower, qp.upper, std::vector<double>(static_cast<std::size_t>(n)), 0};

@@ -1,4 +1,5 @@
 #include "quadratic_program.hpp"
+#include "sparse_block.hpp"
 
 #include <vector>
 
@@ -21,6 +22,12 @@ std::string QuadraticProgram::invalid_reason() const {
     if (d.ix < 0 || d.iy < 0 || static_cast<std::size_t>(d.ix) >= size || static_cast<std::size_t>(d.iy) >= size ||
         d.ix == d.iy)
       return "a disk has bad indices";
+  if (block) {
+    if (block->n < 0 || block->hessian.rows() != block->n || block->hessian.cols() != block->n)
+      return "the sparse block's Hessian does not match its unknowns";
+    if (block->rows.cols() != static_cast<Eigen::Index>(size) + block->n)
+      return "the sparse block's rows do not match the unknowns";
+  }
   return {};
 }
 

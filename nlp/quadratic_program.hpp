@@ -24,6 +24,8 @@ struct DiskConstraint {
   double radius = 0.0;
 };
 
+struct SparseBlock;  // sparse_block.hpp
+
 struct QuadraticProgram {
   const LinearOperator* Q = nullptr;  ///< symmetric positive semi-definite, n x n
   std::vector<double> c;              ///< size n
@@ -31,6 +33,9 @@ struct QuadraticProgram {
   std::vector<LinearEquality> equalities;
   std::vector<DiskConstraint> disks;
   std::vector<double> x0;  ///< starting point (or empty: zeros projected on the bounds)
+  /// Further unknowns kept as sparse rows (sparse_block.hpp): Ipopt takes them sparse, NLopt
+  /// densely (small blocks only), the native solvers not at all.
+  const SparseBlock* block = nullptr;
 
   int n() const { return static_cast<int>(c.size()); }
   /// Why the program is malformed (sizes, indices, missing operator), or empty when it is fine.
@@ -81,6 +86,7 @@ struct SolveOutcome {
   int iterations = 0;
   double objective = 0.0;
   bool polished = false;      ///< finished by the active-set polish (active_set_polish.hpp)
+  std::vector<double> block_x;  ///< the program's sparse block's unknowns y (when it has one)
 };
 
 SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& options);

@@ -15,6 +15,7 @@
 #include "fault_injection.hpp"
 #include "proportional_predictor.hpp"
 #include "scaled_operator.hpp"
+#include "sparse_block.hpp"
 #include "steady_rolling_solver.hpp"
 
 namespace dc {
@@ -73,6 +74,7 @@ struct TangentialProblem::Impl {
   bool extrapolate = true;                   // set_extrapolation()
   bool native_first = false;                 // auto while marching: native first at any size
   bool native_first_always = false;          // auto: native first for every solve (set_native_first)
+  std::optional<SparseTangentialForm> sparse;  // a finite body's sparse saddle form (use_sparse_form)
 
   Impl(const Grid& g, const MaterialPair& m, std::vector<double> h, FrictionLaw f, OperatorKind k)
       : grid(g), materials(m), friction(std::move(f)), kind(k), half_space(std::in_place, g, m),
@@ -180,7 +182,7 @@ struct TangentialProblem::Impl {
       return *normal_cache;
     normal->set_heights(h);
     normal->set_native_first(native_first || native_first_always);
-    NormalSolution s = normal->solve(load, solver);
+    NormalSolution s = sparse ? sparse->normal(h, load, solver) : normal->solve(load, solver);
     normal_cache = s;
     normal_cache_heights = std::move(h);
     normal_cache_load = load;
@@ -248,7 +250,8 @@ struct TangentialProblem::Impl {
     const double ct0 = Ct->diagonal(0);
     const double f_ref = std::max(max_abs(f), 1e-300);
     const std::size_t n = comps * N;
-    ScaledOperator Q(*Ct, 1.0 / ct0);
+    // The sparse form: Q the half-space's share, the body's in the block's rows.
+    ScaledOperator Q(sparse ? *sparse->halfspace : *Ct, 1.0 / ct0);
     QuadraticProgram qp;
     qp.Q = &Q;
     qp.c.resize(n);
@@ -291,15 +294,22 @@ struct TangentialProblem::Impl {
       qp.x0.resize(n);
       for (std::size_t i = 0; i < n; ++i) qp.x0[i] = tau_warm[i] / f_ref;
     }
-    const SolveOptions options = solve_options(solver, progress);
+    SolveOptions options = solve_options(solver, progress);
+    SparseBlock body_rows;
+    if (sparse) {
+      const double n_active = static_cast<double>(std::count_if(f.begin(), f.end(), [](double b) { return b > 0.0; }));
+      body_rows = sparse->body_rows(f_ref, A * ct0 * f_ref * f_ref, f_ref * A * std::max(1.0, 0.25 * n_active));
+      qp.block = &body_rows;
+      options.exact_hessian_limit = sparse->exact_hessian_limit;
+    }
     if (std::all_of(f.begin(), f.end(), [](double b) { return b <= 0.0; })) return frictionless(given_increment, modes, solver);
 
     InnerResult best;
     best.report.requested = solver.backend;
-    best.report.operator_kind = Ct->kind();
+    best.report.operator_kind = sparse ? "sparse+" + sparse->halfspace->kind() : Ct->kind();
     bool have_result = false;
     std::string attempts;
-    const auto order = backend_order(solver.backend, native_first || native_first_always ? std::numeric_limits<std::size_t>::max() : n,
+    const auto order = sparse ? sparse->backends(solver.backend, solver.fallback) : backend_order(solver.backend, native_first || native_first_always ? std::numeric_limits<std::size_t>::max() : n,
                       solver.fallback);
     for (std::size_t k = 0; k < order.size(); ++k) {
       const TimedOutcome run = run_backend(order[k], qp, options, solve_tangential_native);
@@ -768,6 +778,12 @@ void TangentialProblem::reset() { impl_->reset(); }
 void TangentialProblem::set_extrapolation(bool on) { impl_->extrapolate = on; }
 
 void TangentialProblem::set_native_first(bool on) { impl_->native_first_always = on; }
+
+void TangentialProblem::use_sparse_form(SparseTangentialForm form) {
+  if (!impl_->given_operators) throw std::logic_error("tangential problem: the sparse form needs given compliances");
+  impl_->sparse = std::move(form);
+  impl_->normal_cache.reset();
+}
 
 TangentialSolution TangentialProblem::step(const TangentialLoad& load, const SolverSpec& solver,
                                            const ProgressCallback& progress) {

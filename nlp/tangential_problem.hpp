@@ -17,6 +17,7 @@
 // The paper's gap function (4.8)/(4.24) is written for the substrate's traction tau- = -tau+:
 // g = sum [f(p)|ds| + tau+ . ds] A >= 0, = 0 exactly at the solution (4.25).
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -71,6 +72,24 @@ struct TangentialMemory {
   std::array<double, 3> amplitudes{};
 };
 
+struct SparseBlock;  // sparse_block.hpp
+
+/// The sparse saddle form of a finite body (nlp/finite/saddle_form.hpp): the body's share of
+/// the compliances kept as its sparse equilibrium rows, solved by the backends that take them.
+struct SparseTangentialForm {
+  /// The half-space's share of the tangential compliance: the program's Q.
+  std::shared_ptr<const LinearOperator> halfspace;
+  /// The body's rows for tractions in units of traction_unit (Pa), an objective in units of
+  /// energy_unit (A tau'C tau) and resultants of the order of force_scale (N).
+  std::function<SparseBlock(double traction_unit, double energy_unit, double force_scale)> body_rows;
+  /// The normal problem by the sparse form on the given heights.
+  std::function<NormalSolution(const std::vector<double>& heights, const NormalSpec& load, const SolverSpec& solver)>
+      normal;
+  /// The backends to try, in order, for a requested one.
+  std::function<std::vector<std::string>(const std::string& requested, bool fallback)> backends;
+  int exact_hessian_limit = 0;  ///< Ipopt: the exact Hessian up to this many tractions
+};
+
 /// Set up once (operators, plans), then step: the state (previous relative displacement)
 /// is kept between steps, so a sequence of loads is a loading history with memory.
 class TangentialProblem {
@@ -108,6 +127,9 @@ class TangentialProblem {
   /// `auto` tries the native solvers first for every solve, whatever the size (time stepping:
   /// every solve is warm-started, where they are the fastest); the others remain fallbacks.
   void set_native_first(bool on);
+  /// Solve the normal problem and the tangential program by the sparse form (given compliances
+  /// only): the certificates stay those of the condensed compliances.
+  void use_sparse_form(SparseTangentialForm form);
   /// Keep the loading history but forget the starting points the next step would reuse (the
   /// last traction and pressure): the next step starts cold. For comparisons and tests.
   void forget_starting_points();

@@ -14,13 +14,11 @@ struct ElasticBody::Factor {
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
 };
 
-namespace {
-TetNodes element_nodes(const BodyMesh& m, std::size_t e) {
+TetNodes ElasticBody::element_nodes(std::size_t e) const {
   TetNodes x;
-  for (int i = 0; i < 10; ++i) x.col(i) = m.nodes[m.elements[e][i]];
+  for (int i = 0; i < 10; ++i) x.col(i) = mesh_.nodes[mesh_.elements[e][i]];
   return x;
 }
-}  // namespace
 
 ElasticBody::ElasticBody(BodyMesh mesh, std::vector<BodyMaterial> materials)
     : mesh_(std::move(mesh)), materials_(std::move(materials)) {
@@ -41,7 +39,7 @@ void ElasticBody::assemble() {
   // Mass and centre of mass first (the rigid rotations are taken about it).
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();
   for (std::size_t e = 0; e < ne; ++e) {
-    const TetNodes x = element_nodes(mesh_, e);
+    const TetNodes x = element_nodes(e);
     const double m = materials_[mesh_.region[e]].density * tet_volume(x);
     mass_ += m;
     moment += m * 0.25 * (x.col(0) + x.col(1) + x.col(2) + x.col(3));
@@ -53,7 +51,7 @@ void ElasticBody::assemble() {
   triplets.reserve(ne * 30 * 30);
   MR_ = Eigen::MatrixXd::Zero(n, 6);
   for (std::size_t e = 0; e < ne; ++e) {
-    const TetNodes x = element_nodes(mesh_, e);
+    const TetNodes x = element_nodes(e);
     const BodyMaterial& mat = materials_[mesh_.region[e]];
     const Tet10Matrix Ke = tet10_stiffness(x, mat.C);
     const Eigen::Matrix<double, 30, 6> Le = tet10_rigid_mode_loads(x, mat.density, centre_);
@@ -142,7 +140,7 @@ void ElasticBody::deform(const Eigen::VectorXd& F, Eigen::VectorXd& u) const {
 std::vector<Eigen::Matrix<double, 6, 1>> ElasticBody::element_stress(const Eigen::VectorXd& u) const {
   std::vector<Eigen::Matrix<double, 6, 1>> out(mesh_.elements.size());
   for (std::size_t e = 0; e < mesh_.elements.size(); ++e) {
-    const TetNodes x = element_nodes(mesh_, e);
+    const TetNodes x = element_nodes(e);
     Tet10Vector ue;
     for (int a = 0; a < 10; ++a) ue.segment<3>(3 * a) = u.segment<3>(3 * mesh_.elements[e][a]);
     out[e] = materials_[mesh_.region[e]].C * tet10_strain(x, Eigen::Vector4d::Constant(0.25)) * ue;

@@ -13,6 +13,7 @@
 
 #include "body_mesh.hpp"
 #include "elastic_stiffness.hpp"
+#include "tet10.hpp"
 
 namespace dc::fe {
 
@@ -43,6 +44,9 @@ class ElasticBody {
   const std::vector<int>& supports() const { return supports_; }
   const Eigen::MatrixXd& mass_rigid_modes() const { return MR_; }
   const Eigen::Matrix<double, 6, 6>& rigid_mass() const { return RMR_; }
+  /// Element e's node coordinates and stiffness (its region's material).
+  TetNodes element_nodes(std::size_t e) const;
+  const Stiffness& element_stiffness(std::size_t e) const { return materials_[mesh_.region[e]].C; }
   /// Stress (Voigt, Pa) at each element's centroid for a displacement field.
   std::vector<Eigen::Matrix<double, 6, 1>> element_stress(const Eigen::VectorXd& u) const;
 

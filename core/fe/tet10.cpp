@@ -55,17 +55,23 @@ Eigen::Matrix<double, 6, 30> tet10_strain(const TetNodes& x, const Eigen::Vector
   return B;
 }
 
-Tet10Matrix tet10_stiffness(const TetNodes& x, const Stiffness& C) {
+std::array<Tet10StrainPoint, 4> tet10_strain_points(const TetNodes& x) {
   // Degree-2 rule: 4 points at (a, b, b, b) and permutations, weights V/4.
   const double a = 0.5854101966249685, b = 0.1381966011250105;
   const double V = tet_volume(x);
-  Tet10Matrix K = Tet10Matrix::Zero();
+  std::array<Tet10StrainPoint, 4> points;
   for (int q = 0; q < 4; ++q) {
     Eigen::Vector4d L = Eigen::Vector4d::Constant(b);
     L(q) = a;
-    const Eigen::Matrix<double, 6, 30> B = tet10_strain(x, L);
-    K.noalias() += (0.25 * V) * B.transpose() * C * B;
+    points[q].B = tet10_strain(x, L);
+    points[q].weight = 0.25 * V;
   }
+  return points;
+}
+
+Tet10Matrix tet10_stiffness(const TetNodes& x, const Stiffness& C) {
+  Tet10Matrix K = Tet10Matrix::Zero();
+  for (const auto& point : tet10_strain_points(x)) K.noalias() += point.weight * point.B.transpose() * C * point.B;
   return K;
 }
 

@@ -22,7 +22,14 @@ double tet_volume(const TetNodes& x);
 Eigen::Matrix<double, 10, 1> tet10_shape(const Eigen::Vector4d& L);
 /// Strain-displacement matrix (Voigt, engineering shears) at L; u ordered node by node (x, y, z).
 Eigen::Matrix<double, 6, 30> tet10_strain(const TetNodes& x, const Eigen::Vector4d& L);
-/// Element stiffness int B'CB dV (4-point rule, exact for the affine element).
+/// The 4-point rule (degree 2) of the stiffness: strain-displacement matrix and weight (V/4) at
+/// each point. The strains of the affine element are linear, so the rule is exact for B'CB.
+struct Tet10StrainPoint {
+  Eigen::Matrix<double, 6, 30> B;
+  double weight = 0.0;
+};
+std::array<Tet10StrainPoint, 4> tet10_strain_points(const TetNodes& x);
+/// Element stiffness int B'CB dV (the 4-point rule, exact for the affine element).
 Tet10Matrix tet10_stiffness(const TetNodes& x, const Stiffness& C);
 /// int rho N_i r_m dV for the six rigid modes r_m about `centre` (translations x, y, z, then
 /// rotations about x, y, z): the mass matrix times the rigid modes (degree-3 rule, exact).

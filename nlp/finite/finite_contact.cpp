@@ -51,15 +51,47 @@ FiniteNormalSolution FiniteContact::solve_normal(const NormalSpec& control, cons
 
 NormalSolution FiniteContact::solve_sparse(const NormalSpec& control, const SolverSpec& solver,
                                            const ProgressCallback& progress, Eigen::VectorXd& body_displacement) {
-  if (solver.backend != "auto" && solver.backend != "ipopt")
-    throw InputError("solver.backend", "the sparse form (fe_body.program 'sparse') is solved by Ipopt: use 'ipopt' or "
-                                       "'auto', or the condensed program for '" + solver.backend + "'");
+  return solve_sparse(profile_heights(), control, solver, progress, body_displacement);
+}
+
+NormalSolution FiniteContact::solve_sparse(const std::vector<double>& h, const NormalSpec& control,
+                                           const SolverSpec& solver, const ProgressCallback& progress,
+                                           Eigen::VectorXd& body_displacement) {
+  // Ipopt, then NLopt as its fallback on small bodies (saddle_backend_order): the first result
+  // the condensed program's certificate accepts, else the best.
+  NormalSolution best;
+  std::string attempts;
+  const std::vector<std::string> order = saddle_backend_order(solver.backend, solver.fallback, body_->dofs());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    Eigen::VectorXd u;
+    NormalSolution sol = solve_sparse_by(order[k], h, control, solver, progress, u);
+    sol.report.fallback_used = k > 0;
+    attempts += (attempts.empty() ? "" : "; ") + order[k] + ": " + to_string(sol.report.status);
+    const bool better = k == 0 || sol.report.status == SolveStatus::converged ||
+                        (best.report.status == SolveStatus::failed && sol.report.status != SolveStatus::failed) ||
+                        (sol.report.status == SolveStatus::not_converged &&
+                         sol.report.certificate.worst() < best.report.certificate.worst());
+    if (better) {
+      best = std::move(sol);
+      body_displacement = std::move(u);
+    }
+    if (best.report.status == SolveStatus::converged) break;
+  }
+  if (best.report.fallback_used || best.report.status != SolveStatus::converged)
+    best.report.message += " [tried " + attempts + "]";
+  return best;
+}
+
+NormalSolution FiniteContact::solve_sparse_by(const std::string& backend, const std::vector<double>& h,
+                                              const NormalSpec& control, const SolverSpec& solver,
+                                              const ProgressCallback& progress, Eigen::VectorXd& body_displacement) {
+  if (backend == "nlopt") check_dense_size();
   const auto start = std::chrono::steady_clock::now();
-  const SaddleNormalOutcome o = solve_saddle_normal(*body_, *face_, *halfspace_normal_, grid_, profile_heights(), control,
-                                                    solve_options(solver, progress));
+  const SaddleNormalOutcome o = solve_saddle_normal(*body_, *face_, *halfspace_normal_, grid_, h, control,
+                                                    solve_options(solver, progress), backend);
   NormalSolution sol;
   sol.report.requested = solver.backend;
-  sol.report.backend = "ipopt";
+  sol.report.backend = backend;
   sol.report.operator_kind = "sparse+" + halfspace_normal_->kind();
   sol.report.message = o.message;
   sol.report.iterations = o.iterations;
@@ -70,7 +102,6 @@ NormalSolution FiniteContact::solve_sparse(const NormalSpec& control, const Solv
   }
   sol.pressure = o.pressure;
   body_displacement = o.body_displacement;
-  const std::vector<double> h = profile_heights();
   const double A = grid_.area();
   // The approach: given, or where the saddle point's own displacement closes the gap (the
   // pressure-weighted mean of w + h over the contact, as for the condensed program).
@@ -96,6 +127,7 @@ NormalSolution FiniteContact::solve_sparse(const NormalSpec& control, const Solv
   sol.report.objective = energy;
   // Certified on the condensed program (its operator applies the kept factor): the same
   // residuals as for the condensed solvers, so (a) and (b) are judged alike.
+  normal_->set_heights(h);
   sol.report.certificate = normal_->certify(sol.pressure, sol.approach, control);
   const bool certified = sol.report.certificate.worst() <= solver.certificate_tol;
   sol.report.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
@@ -114,8 +146,34 @@ TangentialProblem& FiniteContact::tangential_problem(const FrictionLaw& friction
     auto body_t = std::make_shared<BodyCompliance>(*body_, *face_, grid_, std::vector<int>{0, 1});
     auto Ct = std::make_shared<SumOperator>(halfspace_tangential_, body_t);
     tangential_ = std::make_unique<TangentialProblem>(grid_, normal_compliance_, Ct, profile_heights(), friction);
+    if (program_ == "sparse") use_sparse_tangential();
   }
   return *tangential_;
+}
+
+void FiniteContact::use_sparse_tangential() {
+  SparseTangentialForm form;
+  form.halfspace = halfspace_tangential_;
+  form.body_rows = [this](double traction_unit, double energy_unit, double force_scale) {
+    return saddle_body_block(*body_, *face_, grid_, {0, 1}, traction_unit, energy_unit, force_scale).block;
+  };
+  form.normal = [this](const std::vector<double>& h, const NormalSpec& load, const SolverSpec& solver) {
+    Eigen::VectorXd u;
+    return solve_sparse(h, load, solver, {}, u);
+  };
+  form.backends = [this](const std::string& requested, bool fallback) {
+    if (requested == "nlopt") check_dense_size();
+    return saddle_backend_order(requested, fallback, body_->dofs());
+  };
+  form.exact_hessian_limit = static_cast<int>(2 * kSaddleExactLimit);  // (tau_x, tau_y): two per element
+  tangential_->use_sparse_form(std::move(form));
+}
+
+void FiniteContact::check_dense_size() const {
+  if (body_->dofs() > kSaddleDenseLimit)
+    throw InputError("solver.backend", "NLopt takes the sparse form's body rows densely: bodies of at most " +
+                                           std::to_string(kSaddleDenseLimit) + " dofs (this one has " +
+                                           std::to_string(body_->dofs()) + "); use 'ipopt' or 'auto'");
 }
 
 Eigen::VectorXd FiniteContact::body_displacement(const std::vector<double>& tx, const std::vector<double>& ty,

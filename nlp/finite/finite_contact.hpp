@@ -77,8 +77,19 @@ class FiniteContact {
   /// The moment rows of a load line (finite_tilt.cpp).
   NormalSolution solve_tilted(const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress);
 
+  /// The sparse saddle form (saddle_form.hpp) on the profile's heights or on given ones: the
+  /// backends of saddle_backend_order in turn, each certified on the condensed program.
   NormalSolution solve_sparse(const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress,
                               Eigen::VectorXd& body_displacement);
+  NormalSolution solve_sparse(const std::vector<double>& heights, const NormalSpec& control, const SolverSpec& solver,
+                              const ProgressCallback& progress, Eigen::VectorXd& body_displacement);
+  /// The tangential problem by the sparse form (TangentialProblem::use_sparse_form).
+  void use_sparse_tangential();
+  /// InputError("solver.backend") when the body is too large for NLopt's dense rows.
+  void check_dense_size() const;
+  NormalSolution solve_sparse_by(const std::string& backend, const std::vector<double>& heights,
+                                 const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress,
+                                 Eigen::VectorXd& body_displacement);
 };
 
 }  // namespace dc

@@ -2,330 +2,177 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 
-#include <Eigen/Sparse>
-
-#include <IpIpoptApplication.hpp>
-#include <IpTNLP.hpp>
-
-#include "interrupt.hpp"
-#include "ipopt_shared.hpp"
+#include "backend_choice.hpp"
+#include "errors.hpp"
+#include "scaled_operator.hpp"
+#include "stress_equilibrium.hpp"
 
 namespace dc {
-namespace {
 
-using Ipopt::Index;
-using Ipopt::Number;
-using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-
-/// The program in scaled unknowns x = (p / p_ref, v / v_ref, a_j / a_ref_j): the pressure block
-/// has a unit Hessian diagonal, every equality row is of order one.
-struct SaddleScaling {
-  double p_ref = 1.0, v_ref = 1.0, f_ref = 1.0, force_ref = 1.0, n_ref = 1.0;
-  Eigen::Matrix<double, 6, 1> a_ref, rigid_row;
-};
-
-class SaddleTnlp final : public Ipopt::TNLP {
- public:
-  SaddleTnlp(const fe::ElasticBody& body, const fe::ContactFace& face, const LinearOperator& halfspace,
-             const Grid& grid, const std::vector<double>& heights, const NormalSpec& control,
-             const SolveOptions& options, bool exact)
-      : body_(body), halfspace_(halfspace), heights_(heights), control_(control), options_(options),
-        N_(static_cast<Index>(grid.size())), n_(static_cast<Index>(body.dofs())), area_(grid.area()) {
-    set_scales();
-    build_jacobian(face);
-    const Eigen::SparseMatrix<double>& Ks = body_.supported_stiffness();
-    Ks_full_ = Ks.selfadjointView<Eigen::Lower>();
-    c_.assign(static_cast<std::size_t>(N_), 0.0);
-    const double delta = control_.control == Control::approach ? control_.value : 0.0;
-    for (Index i = 0; i < N_; ++i)
-      if (std::isfinite(heights_[i])) c_[i] = s_.p_ref * area_ * (heights_[i] - delta) / s_.f_ref;
-    if (exact) build_hessian(Ks);
+SaddleBody saddle_body_block(const fe::ElasticBody& body, const fe::ContactFace& face, const Grid& grid,
+                             const std::vector<int>& components, double traction_unit, double energy_unit,
+                             double force_scale) {
+  const Eigen::Index N = static_cast<Eigen::Index>(grid.size()), n = static_cast<Eigen::Index>(body.dofs());
+  const fe::StressEquilibrium stresses = fe::stress_equilibrium(body);
+  const Eigen::Index ns = static_cast<Eigen::Index>(stresses.stresses());
+  const Eigen::Index n_x = static_cast<Eigen::Index>(components.size()) * N, col_s = n_x, col_a = n_x + ns;
+  const double area = grid.area(), force_unit = traction_unit * area;
+  SaddleBody out;
+  // The weighted stresses in units that give the energy's blocks a diagonal of order one.
+  double mean_compliance = 0.0;
+  for (const auto& H : stresses.compliance) mean_compliance += H(0, 0) / static_cast<double>(stresses.compliance.size());
+  out.s_unit = std::sqrt(energy_unit / mean_compliance);
+  // Scales of the rigid modes: rows R'(M R a - B t) in units of the resultant (times the radius
+  // of gyration for the rotations), a in units of the acceleration it gives.
+  const Eigen::Matrix<double, 6, 6>& RMR = body.rigid_mass();
+  Eigen::Matrix<double, 6, 1> rigid_row, a_unit;
+  for (int j = 0; j < 6; ++j) {
+    const double lever = j < 3 ? 1.0 : std::sqrt(RMR(j, j) / body.mass());
+    rigid_row(j) = 1.0 / (force_scale * lever);
+    a_unit(j) = force_scale * lever / RMR(j, j);
   }
-
-  bool get_nlp_info(Index& n, Index& m, Index& nnz_jac_g, Index& nnz_h_lag, IndexStyleEnum& style) override {
-    n = N_ + n_ + 6;
-    m = static_cast<Index>(J_.rows());
-    nnz_jac_g = static_cast<Index>(J_.nonZeros());
-    nnz_h_lag = static_cast<Index>(h_rows_.size());
-    style = C_STYLE;
-    return true;
-  }
-
-  bool get_bounds_info(Index n, Number* x_l, Number* x_u, Index m, Number* g_l, Number* g_u) override {
-    for (Index i = 0; i < n; ++i) {
-      x_l[i] = -1e19;
-      x_u[i] = 1e19;
-    }
-    for (Index i = 0; i < N_; ++i) {
-      x_l[i] = 0.0;
-      if (!std::isfinite(heights_[i])) x_u[i] = 0.0;  // cannot touch
-    }
-    for (Index k = 0; k < m; ++k) g_l[k] = g_u[k] = 0.0;
-    if (control_.control == Control::force) g_l[m - 1] = g_u[m - 1] = 1.0;  // sum p A / (A p_ref n_ref)
-    return true;
-  }
-
-  bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number*, Number*, Index, bool init_lambda,
-                          Number*) override {
-    if (init_z || init_lambda) return false;
-    if (!init_x) return true;
-    std::fill(x, x + n, 0.0);
-    Index n_free = 0;
-    for (Index i = 0; i < N_; ++i) n_free += std::isfinite(heights_[i]) ? 1 : 0;
-    for (Index i = 0; i < N_; ++i)
-      if (std::isfinite(heights_[i])) x[i] = s_.n_ref / static_cast<double>(n_free);  // the force row holds
-    return true;
-  }
-
-  bool eval_f(Index n, const Number* x, bool, Number& f) override {
-    evaluate(n, x);
-    f = f_;
-    return true;
-  }
-
-  bool eval_grad_f(Index n, const Number* x, bool, Number* g) override {
-    evaluate(n, x);
-    std::copy(grad_.begin(), grad_.end(), g);
-    return true;
-  }
-
-  bool eval_g(Index n, const Number* x, bool, Index m, Number* g) override {
-    Eigen::Map<Eigen::VectorXd>(g, m) = J_ * Eigen::Map<const Eigen::VectorXd>(x, n);
-    return true;
-  }
-
-  bool eval_jac_g(Index, const Number*, bool, Index, Index, Index* rows, Index* cols, Number* values) override {
-    Index e = 0;
-    for (Eigen::Index r = 0; r < J_.outerSize(); ++r)
-      for (RowMatrix::InnerIterator it(J_, r); it; ++it, ++e) {
-        if (values) {
-          values[e] = it.value();
-        } else {
-          rows[e] = static_cast<Index>(it.row());
-          cols[e] = static_cast<Index>(it.col());
-        }
+  const Eigen::MatrixXd& MR = body.mass_rigid_modes();
+  const Eigen::MatrixXd& R = body.rigid_modes();
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& Bt = face.transfer();
+  // One equilibrium row per dof but the six held ones (their rows follow from the rigid modes').
+  std::vector<Eigen::Index> row_of_dof(static_cast<std::size_t>(n), 0);
+  for (int held : body.supports()) row_of_dof[static_cast<std::size_t>(held)] = -1;
+  Eigen::Index equilibrium_rows = 0;
+  for (auto& r : row_of_dof)
+    if (r >= 0) r = equilibrium_rows++;
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(static_cast<std::size_t>(stresses.forces.nonZeros() + 7 * n + 7 * n_x));
+  // The equilibrium rows in units of force_unit: Gt s - B t + M R a = 0.
+  const double ks = out.s_unit / force_unit;
+  for (Eigen::Index c = 0; c < stresses.forces.outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(stresses.forces, c); it; ++it)
+      if (const Eigen::Index row = row_of_dof[static_cast<std::size_t>(it.row())]; row >= 0)
+        t.emplace_back(row, col_s + it.col(), ks * it.value());
+  Eigen::Matrix<double, 6, Eigen::Dynamic> RtB = Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, n_x);
+  for (std::size_t c = 0; c < components.size(); ++c)
+    for (Eigen::Index k = 0; k < Bt.outerSize(); ++k) {
+      const Eigen::Index col = static_cast<Eigen::Index>(c) * N + k;
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Bt, k); it; ++it) {
+        const Eigen::Index dof = 3 * it.col() + components[c];  // t acts on the body along +component
+        RtB.col(col) += it.value() * R.row(dof).transpose();
+        if (const Eigen::Index row = row_of_dof[static_cast<std::size_t>(dof)]; row >= 0)
+          t.emplace_back(row, col, -traction_unit / force_unit * it.value());
       }
-    return true;
-  }
-
-  bool eval_h(Index, const Number*, bool, Number obj_factor, Index, const Number*, bool, Index, Index* rows,
-              Index* cols, Number* values) override {
-    if (h_rows_.empty()) return false;  // limited memory never asks
-    if (!values) {
-      std::copy(h_rows_.begin(), h_rows_.end(), rows);
-      std::copy(h_cols_.begin(), h_cols_.end(), cols);
-      return true;
     }
-    for (std::size_t e = 0; e < h_values_.size(); ++e) values[e] = obj_factor * h_values_[e];
-    return true;  // the constraints are linear
+  for (Eigen::Index dof = 0; dof < n; ++dof)  // + M R a: the inertia relief
+    if (const Eigen::Index row = row_of_dof[static_cast<std::size_t>(dof)]; row >= 0)
+      for (int j = 0; j < 6; ++j)
+        if (MR(dof, j) != 0.0) t.emplace_back(row, col_a + j, a_unit(j) / force_unit * MR(dof, j));
+  for (int j = 0; j < 6; ++j) {  // R'M R a - R'B t = 0
+    for (int l = 0; l < 6; ++l)
+      if (RMR(j, l) != 0.0) t.emplace_back(equilibrium_rows + j, col_a + l, rigid_row(j) * a_unit(l) * RMR(j, l));
+    for (Eigen::Index k = 0; k < n_x; ++k)
+      if (RtB(j, k) != 0.0) t.emplace_back(equilibrium_rows + j, k, -rigid_row(j) * traction_unit * RtB(j, k));
   }
-
-  void finalize_solution(Ipopt::SolverReturn, Index n, const Number* x, const Number*, const Number*, Index,
-                         const Number*, const Number*, Number, const Ipopt::IpoptData*,
-                         Ipopt::IpoptCalculatedQuantities*) override {
-    x_.assign(x, x + n);
+  SparseBlock& b = out.block;
+  b.n = static_cast<int>(ns + 6);
+  b.rows.resize(equilibrium_rows + 6, n_x + ns + 6);
+  b.rows.setFromTriplets(t.begin(), t.end());
+  // The body's complementary energy 1/2 s'H s in units of energy_unit: 6 x 6 blocks, lower triangles.
+  b.hessian.resize(ns + 6, ns + 6);
+  std::vector<Eigen::Triplet<double>> h;
+  h.reserve(stresses.compliance.size() * 21);
+  const double kh = out.s_unit * out.s_unit / energy_unit;
+  for (std::size_t q = 0; q < stresses.compliance.size(); ++q) {
+    const Eigen::Index base = 6 * static_cast<Eigen::Index>(q);
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j <= i; ++j) h.emplace_back(base + i, base + j, kh * stresses.compliance[q](i, j));
   }
+  b.hessian.setFromTriplets(h.begin(), h.end());
+  return out;
+}
 
-  bool intermediate_callback(Ipopt::AlgorithmMode, Index iter, Number obj, Number inf_pr, Number, Number, Number,
-                             Number, Number, Number, Index, const Ipopt::IpoptData*,
-                             Ipopt::IpoptCalculatedQuantities*) override {
-    iterations_ = std::max(iterations_, static_cast<int>(iter));
-    if (options_.progress) options_.progress(ProgressInfo{static_cast<int>(iter), obj, inf_pr});
-    return !interrupt_requested();
-  }
+Eigen::VectorXd saddle_body_displacement(const fe::ElasticBody& body, const fe::ContactFace& face, int component,
+                                         const std::vector<double>& tractions) {
+  // The nodal forces B t of the tractions, deformed with the kept factor: u = P' Ks^-1 P F.
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(body.dofs())), u;
+  face.add_forces(tractions.data(), component, 1.0, F);
+  body.deform(F, u);
+  return u;
+}
 
-  /// The result in physical units (empty pressure when Ipopt never finished).
-  void unscale(SaddleNormalOutcome& out) const {
-    if (x_.empty()) return;
-    out.pressure.resize(static_cast<std::size_t>(N_));
-    for (Index i = 0; i < N_; ++i) out.pressure[i] = std::max(x_[i], 0.0) * s_.p_ref;
-    // u = v - R (R'M R)^-1 (M R)'v: the displacement relative to the body's mean rigid motion.
-    const Eigen::VectorXd v = s_.v_ref * Eigen::Map<const Eigen::VectorXd>(x_.data() + N_, n_);
-    const Eigen::Matrix<double, 6, 1> r = body_.rigid_mass().ldlt().solve(body_.mass_rigid_modes().transpose() * v);
-    out.body_displacement = v - body_.rigid_modes() * r;
-    std::vector<double> w_hs;
-    halfspace_.apply(out.pressure, w_hs);
-    out.displacement.assign(static_cast<std::size_t>(N_), 0.0);
-    for (Eigen::Index k = 0; k < Bt_.outerSize(); ++k) {
-      double s = 0.0;
-      for (RowMatrix::InnerIterator it(Bt_, k); it; ++it) s += it.value() * out.body_displacement(3 * it.col() + 2);
-      out.displacement[static_cast<std::size_t>(k)] = w_hs[static_cast<std::size_t>(k)] + s / area_;
-    }
-    out.iterations = iterations_;
-  }
-
- private:
-  void set_scales() {
-    Index n_free = 0;
-    for (Index i = 0; i < N_; ++i) n_free += std::isfinite(heights_[i]) ? 1 : 0;
-    const double c0 = halfspace_.diagonal(0);
-    // As NormalProblem scales (4.7): p_ref is the pressure of the force on a quarter of the grid.
-    s_.n_ref = std::max(1.0, 0.25 * static_cast<double>(n_free));
-    s_.p_ref = control_.control == Control::force ? control_.value / (area_ * s_.n_ref)
-                                                   : control_.value / (c0 * std::sqrt(s_.n_ref));
-    s_.v_ref = c0 * s_.p_ref;               // the displacement that pressure causes
-    s_.f_ref = area_ * c0 * s_.p_ref * s_.p_ref;
-    s_.force_ref = s_.p_ref * area_;        // the force on one grid element
-    const double total = s_.force_ref * s_.n_ref;
-    const Eigen::Matrix<double, 6, 6>& RMR = body_.rigid_mass();
-    for (int j = 0; j < 6; ++j) {
-      const double lever = j < 3 ? 1.0 : std::sqrt(RMR(j, j) / body_.mass());  // radius of gyration
-      s_.rigid_row(j) = 1.0 / (total * lever);
-      s_.a_ref(j) = total * lever / RMR(j, j);
-    }
-  }
-
-  /// The equality rows, scaled: body equilibrium (n), rigid modes (6), force (force control).
-  void build_jacobian(const fe::ContactFace& face) {
-    Bt_ = face.transfer();
-    const Eigen::SparseMatrix<double>& Ks = body_.supported_stiffness();
-    const Eigen::MatrixXd& MR = body_.mass_rigid_modes();
-    const Eigen::MatrixXd& R = body_.rigid_modes();
-    std::vector<char> held(static_cast<std::size_t>(n_), 0);
-    for (int s : body_.supports()) held[static_cast<std::size_t>(s)] = 1;
-    const Index col_v = N_, col_a = N_ + n_;
-    std::vector<Eigen::Triplet<double>> t;
-    t.reserve(static_cast<std::size_t>(2 * Ks.nonZeros() + 7 * n_ + 7 * N_));
-    const double kv = s_.v_ref / s_.force_ref;
-    for (Eigen::Index c = 0; c < Ks.outerSize(); ++c)  // Ks v (both halves from the lower one)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(Ks, c); it; ++it) {
-        if (it.value() == 0.0) continue;
-        t.emplace_back(it.row(), col_v + it.col(), kv * it.value());
-        if (it.row() != it.col()) t.emplace_back(it.col(), col_v + it.row(), kv * it.value());
-      }
-    Eigen::Matrix<double, 6, Eigen::Dynamic> RtB = Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, N_);
-    const double kp = s_.p_ref / s_.force_ref;
-    for (Eigen::Index k = 0; k < Bt_.outerSize(); ++k)
-      for (RowMatrix::InnerIterator it(Bt_, k); it; ++it) {
-        const Eigen::Index dof = 3 * it.col() + 2;  // the pressure pushes the body up (+z)
-        RtB.col(k) += it.value() * R.row(dof).transpose();
-        if (!held[static_cast<std::size_t>(dof)]) t.emplace_back(dof, k, -kp * it.value());
-      }
-    for (Index r = 0; r < n_; ++r)  // + M R a: the inertia relief
-      if (!held[static_cast<std::size_t>(r)])
-        for (int j = 0; j < 6; ++j)
-          if (MR(r, j) != 0.0) t.emplace_back(r, col_a + j, s_.a_ref(j) / s_.force_ref * MR(r, j));
-    const Eigen::Matrix<double, 6, 6>& RMR = body_.rigid_mass();
-    for (int j = 0; j < 6; ++j) {
-      for (int l = 0; l < 6; ++l)
-        if (RMR(j, l) != 0.0) t.emplace_back(n_ + j, col_a + l, s_.rigid_row(j) * s_.a_ref(l) * RMR(j, l));
-      for (Index k = 0; k < N_; ++k)
-        if (RtB(j, k) != 0.0) t.emplace_back(n_ + j, k, -s_.rigid_row(j) * s_.p_ref * RtB(j, k));
-    }
-    Index rows = n_ + 6;
-    if (control_.control == Control::force) {
-      for (Index k = 0; k < N_; ++k)
-        if (std::isfinite(heights_[k])) t.emplace_back(rows, k, 1.0 / s_.n_ref);
-      ++rows;
-    }
-    J_.resize(rows, N_ + n_ + 6);
-    J_.setFromTriplets(t.begin(), t.end());
-  }
-
-  /// Lower triangle of the objective's Hessian: the dense half-space block and Ks.
-  void build_hessian(const Eigen::SparseMatrix<double>& Ks) {
-    const Eigen::MatrixXd C = halfspace_.to_dense(static_cast<std::size_t>(N_) * static_cast<std::size_t>(N_));
-    const double kp = s_.p_ref * s_.p_ref * area_ / s_.f_ref, kv = s_.v_ref * s_.v_ref / s_.f_ref;
-    for (Index i = 0; i < N_; ++i)
-      for (Index j = 0; j <= i; ++j) {
-        h_rows_.push_back(i);
-        h_cols_.push_back(j);
-        h_values_.push_back(kp * 0.5 * (C(i, j) + C(j, i)));
-      }
-    for (Eigen::Index c = 0; c < Ks.outerSize(); ++c)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(Ks, c); it; ++it) {
-        h_rows_.push_back(N_ + static_cast<Index>(it.row()));
-        h_cols_.push_back(N_ + static_cast<Index>(it.col()));
-        h_values_.push_back(kv * it.value());
-      }
-  }
-
-  /// f and its gradient at x (one half-space apply and one sparse product), cached.
-  void evaluate(Index n, const Number* x) {
-    if (have_cache_ && std::equal(x, x + n, cached_x_.begin())) return;
-    cached_x_.assign(x, x + n);
-    grad_.assign(static_cast<std::size_t>(n), 0.0);
-    std::vector<double> xp(x, x + N_), w;
-    halfspace_.apply(xp, w);
-    const double kp = s_.p_ref * s_.p_ref * area_ / s_.f_ref, kv = s_.v_ref * s_.v_ref / s_.f_ref;
-    f_ = 0.0;
-    for (Index i = 0; i < N_; ++i) {
-      grad_[i] = kp * w[i] + c_[i];
-      f_ += x[i] * (0.5 * kp * w[i] + c_[i]);
-    }
-    const Eigen::Map<const Eigen::VectorXd> xv(x + N_, n_);
-    Eigen::Map<Eigen::VectorXd> gv(grad_.data() + N_, n_);
-    gv.noalias() = kv * (Ks_full_ * xv);
-    f_ += 0.5 * xv.dot(gv);
-    have_cache_ = true;
-  }
-
-  const fe::ElasticBody& body_;
-  const LinearOperator& halfspace_;
-  const std::vector<double>& heights_;
-  const NormalSpec& control_;
-  const SolveOptions& options_;
-  Index N_, n_;
-  double area_;
-  SaddleScaling s_;
-  RowMatrix J_, Bt_;
-  Eigen::SparseMatrix<double> Ks_full_;
-  std::vector<double> c_;
-  std::vector<Index> h_rows_, h_cols_;
-  std::vector<double> h_values_;
-  std::vector<double> cached_x_, grad_, x_;
-  double f_ = 0.0;
-  bool have_cache_ = false;
-  int iterations_ = 0;
-};
-
-}  // namespace
+std::vector<std::string> saddle_backend_order(const std::string& requested, bool fallback, std::size_t body_dofs) {
+  if (requested == "ipopt" || requested == "nlopt") return {requested};
+  if (requested != "auto")
+    throw InputError("solver.backend", "the sparse form (fe_body.program 'sparse') is solved by Ipopt (NLopt on "
+                                       "small bodies): use 'ipopt', 'nlopt' or 'auto', or the condensed program for '" +
+                                           requested + "'");
+  if (fallback && body_dofs <= kSaddleDenseLimit) return {"ipopt", "nlopt"};
+  return {"ipopt"};
+}
 
 SaddleNormalOutcome solve_saddle_normal(const fe::ElasticBody& body, const fe::ContactFace& face,
                                         const LinearOperator& halfspace, const Grid& grid,
                                         const std::vector<double>& heights, const NormalSpec& control,
-                                        const SolveOptions& options) {
-  SaddleNormalOutcome out;
-  const bool exact = options.hessian == "exact" || (options.hessian != "limited-memory" && grid.size() <= kSaddleExactLimit);
-  out.exact_hessian = exact;
-  try {
-    const std::lock_guard<std::mutex> lock(ipopt_mutex());
-    Ipopt::SmartPtr<SaddleTnlp> tnlp = new SaddleTnlp(body, face, halfspace, grid, heights, control, options, exact);
-    Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
-    auto opts = app->Options();
-    bool ok = true;
-    ok &= opts->SetNumericValue("tol", options.tol);
-    ok &= opts->SetIntegerValue("max_iter", options.max_iter);
-    ok &= opts->SetIntegerValue("print_level", options.verbose ? 5 : 0);
-    // MUMPS's automatic ordering fills the rows of the inertia relief's dense columns (M R a)
-    // in: minutes per factorisation for 2k dofs. QAMD (6) keeps dense rows for last: seconds.
-    ok &= opts->SetIntegerValue("mumps_pivot_order", 6);
-    ok &= opts->SetStringValue("sb", "yes");
-    ok &= opts->SetStringValue("mu_strategy", "adaptive");
-    ok &= opts->SetStringValue("jac_c_constant", "yes");
-    ok &= opts->SetStringValue("jac_d_constant", "yes");
-    ok &= opts->SetStringValue("hessian_approximation", exact ? "exact" : "limited-memory");
-    ok &= opts->SetStringValue("hessian_constant", exact ? "yes" : "no");
-    if (!ok) {
-      out.message = "Ipopt (sparse form): an option was rejected";
-      return out;
+                                        SolveOptions options, const std::string& backend) {
+  const std::size_t N = grid.size();
+  const double area = grid.area(), c0 = halfspace.diagonal(0);
+  std::size_t n_free = 0;
+  for (double h : heights) n_free += std::isfinite(h) ? 1 : 0;
+  // Scaled as NormalProblem scales (4.7): p_ref is the pressure of the force on a quarter of the
+  // grid, the objective in units of the energy A c0 p_ref^2 (the pressure block's diagonal is 1).
+  const double n_ref = std::max(1.0, 0.25 * static_cast<double>(n_free));
+  const double p_ref = control.control == Control::force ? control.value / (area * n_ref)
+                                                         : control.value / (c0 * std::sqrt(n_ref));
+  const double energy = area * c0 * p_ref * p_ref;
+  const double delta = control.control == Control::approach ? control.value : 0.0;
+  const ScaledOperator Q(halfspace, 1.0 / c0);
+  const SaddleBody rows = saddle_body_block(body, face, grid, {2}, p_ref, energy, p_ref * area * n_ref);
+  QuadraticProgram qp;
+  qp.Q = &Q;
+  qp.block = &rows.block;
+  qp.c.assign(N, 0.0);
+  qp.lower.assign(N, 0.0);
+  qp.upper.assign(N, kInf);
+  qp.x0.assign(N, 0.0);
+  LinearEquality force;  // sum A p = P in units of A p_ref n_ref
+  force.a.assign(N, 0.0);
+  force.b = 1.0;
+  for (std::size_t i = 0; i < N; ++i) {
+    if (!std::isfinite(heights[i])) {
+      qp.upper[i] = 0.0;  // cannot touch
+      continue;
     }
-    Ipopt::ApplicationReturnStatus status = app->Initialize("");
-    if (status == Ipopt::Solve_Succeeded) status = app->OptimizeTNLP(Ipopt::GetRawPtr(tnlp));
-    out.success = status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;
-    out.message = "Ipopt (sparse form, " + std::string(exact ? "exact" : "limited-memory") +
-                  " Hessian): " + ipopt_status_name(status);
-    tnlp->unscale(out);
-    if (out.pressure.empty()) out.success = false;
-  } catch (const Ipopt::IpoptException& e) {
-    out.success = false;
-    out.message = "Ipopt exception: " + e.Message();
-  } catch (const std::exception& e) {
-    out.success = false;
-    out.message = std::string("Ipopt (sparse form) error: ") + e.what();
+    qp.c[i] = p_ref * area * (heights[i] - delta) / energy;
+    force.a[i] = 1.0 / n_ref;
+    qp.x0[i] = n_ref / static_cast<double>(n_free);  // the force row holds
   }
+  if (control.control == Control::force) qp.equalities.push_back(std::move(force));
+
+  SaddleNormalOutcome out;
+  options.exact_hessian_limit = static_cast<int>(kSaddleExactLimit);
+  out.exact_hessian = options.hessian == "exact" || (options.hessian != "limited-memory" && N <= kSaddleExactLimit);
+  const TimedOutcome run = run_backend(backend, qp, options, [](const QuadraticProgram&, const SolveOptions&) {
+    SolveOutcome none;
+    none.message = "native: the native solvers take no sparse rows";
+    return none;
+  });
+  const SolveOutcome& o = run.outcome;
+  out.success = o.success;
+  out.iterations = o.iterations;
+  out.message = "sparse form" +
+                std::string(backend != "ipopt" ? "" : out.exact_hessian ? ", exact Hessian" : ", limited-memory Hessian") +
+                ": " + o.message;
+  if (o.x.size() != N || static_cast<int>(o.block_x.size()) != rows.block.n) {
+    out.success = false;
+    return out;
+  }
+  out.pressure.resize(N);
+  for (std::size_t i = 0; i < N; ++i) out.pressure[i] = std::max(o.x[i], 0.0) * p_ref;
+  out.body_displacement = saddle_body_displacement(body, face, 2, out.pressure);
+  out.weighted_stresses.resize(static_cast<std::size_t>(rows.block.n - 6));
+  for (std::size_t q = 0; q < out.weighted_stresses.size(); ++q) out.weighted_stresses[q] = rows.s_unit * o.block_x[q];
+  std::vector<double> w_hs, w_body(N);
+  halfspace.apply(out.pressure, w_hs);
+  face.mean_displacement(out.body_displacement, 2, w_body.data());
+  out.displacement.resize(N);
+  for (std::size_t i = 0; i < N; ++i) out.displacement[i] = w_hs[i] + w_body[i];
   return out;
 }
 

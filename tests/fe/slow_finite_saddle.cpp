@@ -11,6 +11,9 @@
 
 #include "finite_contact.hpp"
 #include "hertz.hpp"
+#include "linear_operator.hpp"
+#include "saddle_form.hpp"
+#include "stress_equilibrium.hpp"
 
 namespace dc {
 namespace {
@@ -109,6 +112,35 @@ TEST(FiniteSaddle, SaddlePointSatisfiesTheFreeBodysEquilibrium) {
   // No mean rigid motion: (M R)'u = 0.
   const Eigen::Matrix<double, 6, 1> rigid = body.mass_rigid_modes().transpose() * s.body_displacement;
   EXPECT_LT(rigid.norm(), 1e-9 * body.mass() * s.body_displacement.cwiseAbs().maxCoeff());
+}
+
+
+TEST(FiniteSaddle, SaddlePointStressesAreTheBodysStresses) {
+  // The inner minimum over the stresses (stress_equilibrium.hpp) is attained at the stresses of
+  // a displacement field: H s = Gt'u, i.e. sigma_q = C B_q u at every quadrature point, with the
+  // displacement u of the saddle point's pressure. Stresses in equilibrium that are not
+  // compatible would leave the program above the condensed one's minimum.
+  const double L = 1.2e-3;
+  const Grid g = Grid::make(3, 10, 10, -L, L, -L, L);
+  FiniteContact a(hemisphere("sparse"), g, Elastic::from_E_nu(kE, kNu));
+  const HalfSpace half_space(g, MaterialPair{Elastic::make_rigid(), Elastic::from_E_nu(kE, kNu)});
+  const std::unique_ptr<LinearOperator> hs(half_space.normal(OperatorKind::automatic));
+  SolveOptions options;
+  options.tol = 1e-10;
+  const SaddleNormalOutcome o =
+      solve_saddle_normal(a.body(), a.face(), *hs, g, a.face().heights(), {Control::force, 3000.0}, options, "ipopt");
+  ASSERT_TRUE(o.success) << o.message;
+  const fe::StressEquilibrium eq = fe::stress_equilibrium(a.body());
+  ASSERT_EQ(o.weighted_stresses.size(), eq.stresses());
+  const Eigen::VectorXd compatible = eq.forces.transpose() * o.body_displacement;  // Gt'u
+  double worst = 0.0, scale = 0.0;
+  for (std::size_t q = 0; q < eq.compliance.size(); ++q) {
+    const Eigen::Matrix<double, 6, 1> Hs =
+        eq.compliance[q] * Eigen::Map<const Eigen::Matrix<double, 6, 1>>(o.weighted_stresses.data() + 6 * q);
+    worst = std::max(worst, (Hs - compatible.segment<6>(6 * static_cast<Eigen::Index>(q))).cwiseAbs().maxCoeff());
+    scale = std::max(scale, Hs.cwiseAbs().maxCoeff());
+  }
+  EXPECT_LT(worst, std::sqrt(kCertificateTol) * scale) << "largest incompatibility " << worst << " of " << scale;
 }
 
 }  // namespace

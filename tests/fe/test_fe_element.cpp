@@ -5,6 +5,7 @@
 #include "elastic_body.hpp"
 #include "errors.hpp"
 #include "fe_test_meshes.hpp"
+#include "stress_equilibrium.hpp"
 #include "tet10.hpp"
 
 namespace dc::fe {
@@ -84,6 +85,30 @@ TEST(FeElement, RigidModesCarryNoForceAndStiffnessIsSymmetricPositive) {
   EXPECT_EQ(zeros, 6);
   EXPECT_NEAR(body.mass(), 1000.0, 1e-9);
   EXPECT_NEAR(body.centre_of_mass().x(), 0.5, 1e-12);
+}
+
+TEST(FeElement, StressFormReproducesTheStiffnessAndTheElementStresses) {
+  // K = Gt H^-1 Gt' (stress_equilibrium.hpp), and for any u the stresses C B_q u minimise the
+  // complementary energy among stresses in equilibrium with K u: H s = Gt' u, s_q = sqrt(w_q) sigma_q.
+  const BodyMesh m = testing::box_mesh(2, 1.0, 1.0, 1.0);
+  const ElasticBody body(m, {BodyMaterial{triclinic(), 1000.0}});
+  const StressEquilibrium eq = stress_equilibrium(body);
+  ASSERT_EQ(eq.stresses(), 24 * m.elements.size());
+  const Eigen::MatrixXd G = Eigen::MatrixXd(eq.forces);
+  Eigen::MatrixXd HinvGt = Eigen::MatrixXd::Zero(G.cols(), G.rows());
+  for (std::size_t q = 0; q < eq.compliance.size(); ++q)
+    HinvGt.middleRows(6 * static_cast<Eigen::Index>(q), 6) =
+        eq.compliance[q].inverse() * G.middleCols(6 * static_cast<Eigen::Index>(q), 6).transpose();
+  const Eigen::MatrixXd K = Eigen::MatrixXd(Eigen::SparseMatrix<double>(body.stiffness().selfadjointView<Eigen::Lower>()));
+  EXPECT_LT((G * HinvGt - K).cwiseAbs().maxCoeff(), 1e-12 * K.cwiseAbs().maxCoeff());
+  // A linear field: every point's stress is C times the uniform strain.
+  Eigen::Matrix3d grad;
+  grad << 1e-3, 2e-4, -3e-4, 5e-4, -2e-3, 1e-4, 0.0, 4e-4, 7e-4;
+  const Eigen::VectorXd weighted = HinvGt * linear_field(m, grad);
+  const Eigen::Matrix<double, 6, 1> expected = triclinic() * voigt_strain(grad);
+  for (std::size_t q = 0; q < eq.compliance.size(); ++q)
+    EXPECT_LT((weighted.segment<6>(6 * static_cast<Eigen::Index>(q)) / eq.root_weight[q] - expected).norm(),
+              1e-9 * expected.norm());
 }
 
 TEST(FeElement, AnisotropicBlockUnderUniformStressMatchesClosedForm) {

@@ -35,6 +35,8 @@ TEST_F(FiniteCli, HemisphereExampleSolvesWithBodyOutputs) {
   ASSERT_EQ(r.code, 0) << r.err;
   const json s = json::parse(dc::test::slurp(dir_ / "out" / "summary.json"));
   EXPECT_EQ(s["problem"], "finite");
+  EXPECT_EQ(s["profile"], "fe_body");  // the body is its mesh, not a profile or a rigid stand-in
+  EXPECT_EQ(s["materials"]["body"]["fe_body"], "hemisphere");
   EXPECT_GT(s["body_dofs"].get<int>(), 1000);
   EXPECT_GT(s["max_body_displacement"].get<double>(), 0.0);
   EXPECT_GE(s["factorisation_time_s"].get<double>(), 0.0);
