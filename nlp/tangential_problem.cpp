@@ -13,6 +13,7 @@
 #include "backend_choice.hpp"
 #include "errors.hpp"
 #include "fault_injection.hpp"
+#include "proportional_predictor.hpp"
 #include "scaled_operator.hpp"
 #include "sparse_block.hpp"
 #include "steady_rolling_solver.hpp"
@@ -69,6 +70,8 @@ struct TangentialProblem::Impl {
   std::vector<double> tau_prev, p_prev;      // comps*N, N
   std::array<double, 3> amplitude_prev{};
   std::vector<double> tau_warm;              // warm start of the tangential program
+  ProportionalPredictor predictor;           // step() histories with kappa != 0: extrapolated starts
+  bool extrapolate = true;                   // set_extrapolation()
   bool native_first = false;                 // auto while marching: native first at any size
   bool native_first_always = false;          // auto: native first for every solve (set_native_first)
   std::optional<SparseTangentialForm> sparse;  // a finite body's sparse saddle form (use_sparse_form)
@@ -106,6 +109,7 @@ struct TangentialProblem::Impl {
     p_prev.assign(N, 0.0);
     amplitude_prev = {0.0, 0.0, 0.0};
     tau_warm.clear();
+    predictor.clear();
   }
 
   /// Rigid-slip mode k at element e, component c: x, y translation, rotation about z.
@@ -169,9 +173,11 @@ struct TangentialProblem::Impl {
   std::optional<NormalSolution> normal_cache;
   std::vector<double> normal_cache_heights;
   NormalSpec normal_cache_load;
+  double normal_cache_tol = 0.0;  // a loose alternation's pressure is no answer for an exact one
 
   NormalSolution solve_normal(std::vector<double> h, const NormalSpec& load, const SolverSpec& solver) {
     if (normal_cache && normal_cache_load.control == load.control && normal_cache_load.value == load.value &&
+        normal_cache_tol == solver.tol &&
         normal_cache_heights == h)
       return *normal_cache;
     normal->set_heights(h);
@@ -180,6 +186,7 @@ struct TangentialProblem::Impl {
     normal_cache = s;
     normal_cache_heights = std::move(h);
     normal_cache_load = load;
+    normal_cache_tol = solver.tol;
     return s;
   }
 
@@ -483,28 +490,38 @@ struct TangentialProblem::Impl {
   /// with the gap shifted by kappa B32 tau of the previous iterate, the bound f(p), then
   /// `inner(p, f, tau)` updates tau (false: it gave up, the loop stops and returns false).
   /// kappa = 0: p does not depend on tau, so f(p) is final after one pass.
-  /// kappa != 0: the alternation is a fixed point tau = G(tau), accelerated by Anderson mixing
-  /// of the tau fed to (4.26); both problems start from the previous step's solution (warm).
+  /// kappa != 0: the alternation is a fixed point s = G(s) of the gap shift s = kappa B32 tau fed
+  /// to (4.26), accelerated by Anderson mixing of s (N values, in the units of the stopping
+  /// test; one B32 apply per pass); both problems start from the previous step's solution (warm).
   /// It stops on the certificate: the pressure was solved with kappa B32 tau_in, and the new
   /// tau moves that gap by kappa B32 (tau - tau_in); once this is below a hundredth of
   /// certificate_tol (in the certificate's units, gap / C_00 / max p), p and tau certify together.
+  /// `inexact` (the inner solve honours the pass's SolverSpec): while the coupling residual is
+  /// large, both problems are solved only to a tenth of it (at most 1e-3, at least solver.tol):
+  /// the next pass changes their data by about that residual anyway. The loop stops only after
+  /// a pass at solver.tol, so the answer and its certificate are those of exact solves.
   template <class Inner>
   bool outer_loop(TangentialSolution& sol, const NormalSpec& normal_load, const SolverSpec& solver,
-                  std::vector<double>& tau, std::vector<double>& f, Inner&& inner) {
-    std::vector<double> p_old, tau_old, wz, tau_in = tau;
+                  std::vector<double>& tau, std::vector<double>& f, bool inexact, Inner&& inner) {
+    // The gap shift kappa B32 tau_in fed to (4.26) and the one of the new tau.
+    std::vector<double> p_old, tau_old, shift_in, shift_out;
     f.assign(N, 0.0);
     const bool stall = injected_fault("outer") != Fault::none;  // test-only: a loop that never settles
     const int max_outer = coupled ? (stall ? 3 : 100) : 1;
     const double outer_tol = std::max(1e-9, 10.0 * solver.tol);
     const double c0 = C->diagonal(0);
+    const double coupling_tol = 0.01 * solver.certificate_tol;
     AndersonMixing mixer;
+    SolverSpec pass = solver;
+    if (coupled && inexact) pass = loose_pass(solver, 1e-3);
+    double last_gap = 0.0;
+    if (coupled) B32->apply(tau, shift_in);
     for (int m = 1; m <= max_outer; ++m) {
       std::vector<double> h = heights;  // (4.26)
-      if (coupled) {
-        B32->apply(tau_in, wz);
-        for (std::size_t i = 0; i < N; ++i) h[i] += wz[i];
-      }
-      sol.normal = solve_normal(std::move(h), normal_load, solver);
+      if (coupled)
+        for (std::size_t i = 0; i < N; ++i) h[i] += shift_in[i];
+      const bool exact_pass = pass.tol == solver.tol;
+      sol.normal = solve_normal(std::move(h), normal_load, pass);
       if (sol.normal.report.status == SolveStatus::failed)
         throw SolverFailure("the normal problem failed, so the tangential one cannot be set up: " +
                             sol.normal.report.message);
@@ -512,7 +529,7 @@ struct TangentialProblem::Impl {
       // (3.32): the friction bound from this pressure; noise-level pressures carry none.
       const double p_cut = 1e-9 * max_abs(p);
       for (std::size_t e = 0; e < N; ++e) f[e] = p[e] > p_cut ? friction.bound(p[e]) : 0.0;
-      if (!inner(p, f, tau)) return false;
+      if (!inner(p, f, tau, pass)) return false;
       tau_warm = tau;
       const double change = std::max(relative_change(p, p_old), relative_change(tau, tau_old));
       sol.outer.iterations = m;
@@ -521,24 +538,40 @@ struct TangentialProblem::Impl {
       tau_old = tau;
       if (max_outer == 1) break;
       // The gap error the last tau leaves in the pressure's problem (certificate units).
-      std::vector<double> dtau(tau.size());
-      for (std::size_t i = 0; i < tau.size(); ++i) dtau[i] = tau[i] - tau_in[i];
-      B32->apply(dtau, wz);
+      B32->apply(tau, shift_out);
       double gap_error = 0.0;
       for (std::size_t i = 0; i < N; ++i)
-        if (std::isfinite(heights[i])) gap_error = std::max(gap_error, std::abs(wz[i]));
+        if (std::isfinite(heights[i])) gap_error = std::max(gap_error, std::abs(shift_out[i] - shift_in[i]));
       const double p_max = max_abs(p);
       gap_error /= c0 * (p_max > 0.0 ? p_max : 1.0);
       sol.outer.coupling_residual = gap_error;
-      if (!stall && (gap_error <= 0.01 * solver.certificate_tol || (m > 1 && change < outer_tol))) break;
+      if (m == 1) sol.outer.first_residual = gap_error;
+      if (!stall && exact_pass && (gap_error <= coupling_tol || (m > 1 && change < outer_tol))) break;
       if (m == max_outer) {
         sol.outer.converged = false;
         sol.outer.last_change = change;
         break;
       }
-      tau_in = mixer.next(tau_in, tau);
+      shift_in = mixer.next(shift_in, shift_out);
+      // The next pass is exact once it is expected to end the loop (the residual contracts by
+      // the last pass's factor), and so is the last pass allowed: an unsettled loop reports
+      // exact solves' last iterate.
+      const double contraction = std::clamp(m > 1 ? gap_error / last_gap : 0.5, 0.01, 1.0);
+      last_gap = gap_error;
+      if (!exact_pass)
+        pass = gap_error * contraction <= coupling_tol || m + 1 == max_outer ? solver
+                                                                             : loose_pass(solver, 0.1 * gap_error);
     }
     return true;
+  }
+
+  /// The solver of an inexact alternation: tolerance `tol` (between solver.tol and 1e-3), and a
+  /// certificate tolerance that such a solve can meet (the backends fall back on it).
+  static SolverSpec loose_pass(const SolverSpec& solver, double tol) {
+    SolverSpec pass = solver;
+    pass.tol = std::clamp(tol, solver.tol, std::max(solver.tol, 1e-3));
+    pass.certificate_tol = std::max(solver.certificate_tol, 100.0 * pass.tol);
+    return pass;
   }
 
   /// One step with the outer loop (4.26)-(4.27) / (3.31)-(3.32); rigid slips are increments.
@@ -560,15 +593,16 @@ struct TangentialProblem::Impl {
     std::vector<double> tau = tau_warm.size() == n ? tau_warm : std::vector<double>(n, 0.0);
     std::vector<double> f, W(n), w21;
     InnerResult inner;
-    outer_loop(sol, normal_load, solver, tau, f,
-               [&](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t) {
+    outer_loop(sol, normal_load, solver, tau, f, true,
+               [&](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t,
+                   const SolverSpec& pass) {
                  // (4.27): W = kappa B21 p - u_prev.
                  for (std::size_t i = 0; i < n; ++i) W[i] = -u_prev[i];
                  if (coupled) {
                    B21->apply(p, w21);
                    for (std::size_t i = 0; i < n; ++i) W[i] += w21[i];
                  }
-                 inner = solve_tangential(W, bound, modes, given_increment, solver, progress);
+                 inner = solve_tangential(W, bound, modes, given_increment, pass, progress);
                  t = inner.tau;
                  return true;
                });
@@ -617,8 +651,8 @@ struct TangentialProblem::Impl {
     int newton = 0, applies = 0;
     const auto start = std::chrono::steady_clock::now();
     const bool ok = outer_loop(
-        sol, load.normal, solver, tau, f,
-        [&](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t) {
+        sol, load.normal, solver, tau, f, false,
+        [&](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t, const SolverSpec&) {
           program.b.assign(n, 0.0);
           for (std::size_t e = 0; e < N; ++e)
             for (int c = 0; c < comps; ++c)
@@ -727,6 +761,7 @@ TangentialProblem::TangentialProblem(const Grid& grid, const MaterialPair& mater
 
 void TangentialProblem::forget_starting_points() {
   impl_->tau_warm.clear();
+  impl_->predictor.clear();
   impl_->normal->clear_warm_start();
   impl_->normal_cache.reset();
 }
@@ -739,6 +774,8 @@ TangentialProblem::TangentialProblem(const Grid& grid, std::shared_ptr<const Lin
       grid_(grid) {}
 
 void TangentialProblem::reset() { impl_->reset(); }
+
+void TangentialProblem::set_extrapolation(bool on) { impl_->extrapolate = on; }
 
 void TangentialProblem::set_native_first(bool on) { impl_->native_first_always = on; }
 
@@ -758,9 +795,26 @@ TangentialSolution TangentialProblem::step(const TangentialLoad& load, const Sol
   std::array<double, 3> increment{};
   for (int k = 0; k < 3; ++k)
     if (load.modes[k].kind == ModeControl::Kind::amplitude) increment[k] = load.modes[k].value - s.amplitude_prev[k];
+  // kappa != 0: a history loaded in proportion starts its alternation from the extrapolated state.
+  ProportionalPredictor::Load key;
+  key.values.push_back(load.normal.value);
+  key.kinds.push_back(static_cast<int>(load.normal.control));
+  for (int k = 0; k < 3; ++k) {
+    key.values.push_back(load.modes[k].value);
+    key.kinds.push_back(static_cast<int>(load.modes[k].kind));
+  }
+  std::vector<double> tau_start, p_start;
+  if (s.coupled && s.extrapolate && s.predictor.predict(key, tau_start, p_start)) {
+    s.tau_warm = std::move(tau_start);
+    s.normal->set_warm_start(std::move(p_start));
+  }
   TangentialSolution sol = s.solve_step(load.normal, load.modes, increment, {0.0, 0.0}, solver, progress);
   for (int k = 0; k < 3; ++k) sol.amplitudes[k] += s.amplitude_prev[k];
   s.amplitude_prev = sol.amplitudes;
+  if (s.coupled && sol.report.status == SolveStatus::converged)
+    s.predictor.record(key, s.tau_prev, s.p_prev);
+  else
+    s.predictor.clear();
   return sol;
 }
 
@@ -848,6 +902,7 @@ TangentialSolution TangentialProblem::roll(const RollingLoad& load, double dista
   if (s.given_operators) throw InputError("tangential.regime", "rolling is not available for a finite body");
   if (!std::isfinite(distance) || distance < 0.0)
     throw InputError("tangential.distance", "the rolling distance must be a finite length >= 0 (m)");
+  s.predictor.clear();  // rolling continues no quasi-static history
   if (distance == 0.0) {
     // No travel, no convective term: the quasi-static step (2.16) of the same controls; a
     // creepage applies no rigid slip over zero distance, a prescribed force is carried by a shift.
@@ -891,6 +946,7 @@ TangentialSolution TangentialProblem::convected_step(const NormalSpec& normal, c
     throw InputError("travel", "a finite body's contact is not convected (no shifted compliances)");
   std::array<ModeControl, 3> modes{};
   for (int k = 0; k < 3; ++k) modes[k].value = increment[k];
+  s.predictor.clear();  // a convected step continues no quasi-static history
   // auto: as for marching, native first at any size (the others remain its fallbacks).
   s.native_first = true;
   struct Restore {
@@ -918,10 +974,12 @@ void TangentialProblem::restore(const TangentialMemory& m) {
   s.p_prev = m.pressure;
   s.tau_warm = m.warm_start;
   s.amplitude_prev = m.amplitudes;
+  s.predictor.clear();
 }
 
 void TangentialProblem::set_heights(const std::vector<double>& heights) {
   impl_->heights.assign(heights.begin(), heights.end());  // reuses the buffer: no allocation per step
+  impl_->predictor.clear();                                // another profile: no load history to continue
 }
 
 const LinearOperator& TangentialProblem::tangential_compliance() const { return *impl_->Ct; }

@@ -40,6 +40,8 @@ struct OuterLoopReport {
   /// kappa != 0: max |kappa B32 (tau - tau_in)| / (C_00 max p), the gap error the last
   /// tangential update leaves in the normal problem (the loop stops below certificate_tol / 100)
   double coupling_residual = 0;
+  /// kappa != 0: the coupling residual of the first pass (how far the starting point was)
+  double first_residual = 0;
   bool converged = true;
 };
 
@@ -131,6 +133,10 @@ class TangentialProblem {
   /// Keep the loading history but forget the starting points the next step would reuse (the
   /// last traction and pressure): the next step starts cold. For comparisons and tests.
   void forget_starting_points();
+  /// kappa != 0, step(): a history whose load continues the last change in proportion starts
+  /// from the state extrapolated from its last two steps (nlp/proportional_predictor.hpp); on by
+  /// default, off: from the last step's state. For comparisons and tests.
+  void set_extrapolation(bool on);
 
   /// One step of a moving contact ((3.8), dynamic problems): the rigid-slip increments of the
   /// step given (x, y (m), rotation about z (rad)), the previous relative displacement taken

@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "anderson_mixing.hpp"
 #include "contact_closed_forms.hpp"
+#include "proportional_predictor.hpp"
 #include "tangential_support.hpp"
 
 namespace dc {
@@ -17,14 +19,41 @@ namespace {
 using test::amplitude;
 using test::expect_certified;
 
+/// a reaches b's state: the same pressure (1e-6 of its peak), traction (1e-5 of the largest
+/// friction bound) and stick set.
+void expect_same_state(const TangentialSolution& a, const TangentialSolution& b, const std::string& where) {
+  double p_max = 0.0, f_max = 0.0;
+  for (std::size_t e = 0; e < b.normal.pressure.size(); ++e) {
+    p_max = std::max(p_max, b.normal.pressure[e]);
+    f_max = std::max(f_max, b.bound[e]);
+  }
+  for (std::size_t e = 0; e < b.normal.pressure.size(); ++e) {
+    EXPECT_NEAR(a.normal.pressure[e], b.normal.pressure[e], 1e-6 * p_max) << where << ", element " << e;
+    EXPECT_NEAR(a.tx[e], b.tx[e], 1e-5 * f_max) << where << ", element " << e;
+    EXPECT_NEAR(a.ty[e], b.ty[e], 1e-5 * f_max) << where << ", element " << e;
+  }
+  EXPECT_EQ(a.n_stick, b.n_stick) << where;
+}
+
+/// Spence-like indentation: a rigid sphere (R = 10 mm) pressed into an elastic body
+/// (E = 70 GPa, Poisson's ratio nu: kappa != 0) up to P_max = 100 N, Coulomb friction mu, 24^2.
+struct Indentation {
+  static constexpr double P_max = 100.0;
+  MaterialPair m;
+  double mu;
+  test::SphereSetup su;
+  Indentation(double nu, double mu_)
+      : m{Elastic::make_rigid(), Elastic::from_E_nu(7e10, nu)}, mu(mu_), su(test::sphere_setup(24, 1.2, m, 0.01, P_max)) {}
+  TangentialProblem problem() const { return TangentialProblem(su.grid, m, su.heights, FrictionLaw::coulomb(mu)); }
+};
+
 TEST(OuterLoop, WarmStartedHistoryEqualsColdStartedSteps) {
   // Spence-like indentation of aluminium by a rigid sphere (beta = -0.09 kappa != 0), 5 steps.
-  const MaterialPair m{Elastic::make_rigid(), Elastic::from_E_nu(7e10, 0.45)};
-  ASSERT_NE(m.kappa(), 0.0);
-  const double R = 0.01, P_max = 100.0, mu = 0.06;
-  const auto su = test::sphere_setup(24, 1.2, m, R, P_max);
-  TangentialProblem warm(su.grid, m, su.heights, FrictionLaw::coulomb(mu));
-  TangentialProblem cold(su.grid, m, su.heights, FrictionLaw::coulomb(mu));
+  const Indentation in(0.45, 0.06);
+  ASSERT_NE(in.m.kappa(), 0.0);
+  const double P_max = Indentation::P_max;
+  TangentialProblem warm = in.problem();
+  TangentialProblem cold = in.problem();
   TangentialLoad load;
   load.modes = {amplitude(0.0), amplitude(0.0), amplitude(0.0)};
   const SolverSpec solver = test::native_tangential_solver();
@@ -40,20 +69,74 @@ TEST(OuterLoop, WarmStartedHistoryEqualsColdStartedSteps) {
     EXPECT_LE(a.outer.coupling_residual, 0.01 * solver.certificate_tol) << "step " << k;
     warm_alternations += a.outer.iterations;
     cold_alternations += b.outer.iterations;
-    double p_max = 0.0, f_max = 0.0;
-    for (std::size_t e = 0; e < su.grid.size(); ++e) {
-      p_max = std::max(p_max, b.normal.pressure[e]);
-      f_max = std::max(f_max, b.bound[e]);
-    }
-    for (std::size_t e = 0; e < su.grid.size(); ++e) {
-      EXPECT_NEAR(a.normal.pressure[e], b.normal.pressure[e], 1e-6 * p_max) << "step " << k;
-      EXPECT_NEAR(a.tx[e], b.tx[e], 1e-5 * f_max) << "step " << k;
-      EXPECT_NEAR(a.ty[e], b.ty[e], 1e-5 * f_max) << "step " << k;
-    }
-    EXPECT_EQ(a.n_stick, b.n_stick) << "step " << k;
+    expect_same_state(a, b, "step " + std::to_string(k));
   }
   std::printf("[ outer loop ] alternations over 5 steps: warm %d, cold %d\n", warm_alternations, cold_alternations);
   EXPECT_LE(warm_alternations, cold_alternations);
+}
+
+TEST(OuterLoop, ProportionalHistoryStartsFromTheExtrapolatedState) {
+  // Spence-like indentation (kappa != 0) in 10 equal load steps: from step 3 on the load continues
+  // in proportion, and the alternation starts from the state extrapolated from the last two
+  // steps. It reaches the same states as starting from the last step's state and as cold starts,
+  // from a smaller first coupling residual, in fewer alternations.
+  const Indentation in(0.0, 0.3);
+  ASSERT_NE(in.m.kappa(), 0.0);
+  const double P_max = Indentation::P_max;
+  TangentialProblem predicted = in.problem();
+  TangentialProblem previous = in.problem();
+  TangentialProblem cold = in.problem();
+  previous.set_extrapolation(false);
+  TangentialLoad load;
+  load.modes = {test::resultant(0.0), test::resultant(0.0), amplitude(0.0)};
+  const SolverSpec solver = test::native_tangential_solver();
+  const int steps = 10;
+  int predicted_alternations = 0, previous_alternations = 0;
+  for (int k = 1; k <= steps; ++k) {
+    load.normal = {Control::force, P_max * k / static_cast<double>(steps)};
+    const TangentialSolution a = predicted.step(load, solver);
+    const TangentialSolution b = previous.step(load, solver);
+    cold.forget_starting_points();
+    const TangentialSolution c = cold.step(load, solver);
+    for (const TangentialSolution* s : {&a, &b, &c}) {
+      expect_certified(*s);
+      EXPECT_TRUE(s->outer.converged);
+      EXPECT_LE(s->outer.coupling_residual, 0.01 * solver.certificate_tol) << "step " << k;
+    }
+    expect_same_state(a, c, "extrapolated, step " + std::to_string(k));
+    expect_same_state(b, c, "from the last state, step " + std::to_string(k));
+    if (k >= 3) {
+      EXPECT_LT(a.outer.first_residual, 0.5 * b.outer.first_residual) << "step " << k;
+      predicted_alternations += a.outer.iterations;
+      previous_alternations += b.outer.iterations;
+    }
+  }
+  std::printf("[ outer loop ] alternations over steps 3-%d: extrapolated %d, from the last state %d\n", steps,
+              predicted_alternations, previous_alternations);
+  EXPECT_LT(predicted_alternations, previous_alternations);
+}
+
+TEST(OuterLoop, ProportionalLoadsAreRecognised) {
+  using Load = ProportionalPredictor::Load;
+  const Load a{{10.0, 0.0, 1e-6}, {1, 0, 0}}, b{{20.0, 0.0, 2e-6}, {1, 0, 0}};
+  EXPECT_DOUBLE_EQ(ProportionalPredictor::ratio(a, b, {{30.0, 0.0, 3e-6}, {1, 0, 0}}), 1.0);
+  EXPECT_DOUBLE_EQ(ProportionalPredictor::ratio(a, b, {{25.0, 0.0, 2.5e-6}, {1, 0, 0}}), 0.5);
+  EXPECT_EQ(ProportionalPredictor::ratio(a, b, {{30.0, 0.0, 2e-6}, {1, 0, 0}}), 0.0);   // not in proportion
+  EXPECT_EQ(ProportionalPredictor::ratio(a, b, {{10.0, 0.0, 1e-6}, {1, 0, 0}}), 0.0);   // reversed
+  EXPECT_EQ(ProportionalPredictor::ratio(a, b, {{60.0, 0.0, 6e-6}, {1, 0, 0}}), 0.0);   // r = 4: too far
+  EXPECT_EQ(ProportionalPredictor::ratio(a, b, {{30.0, 0.0, 3e-6}, {0, 0, 0}}), 0.0);   // other controls
+  EXPECT_EQ(ProportionalPredictor::ratio(b, b, {{30.0, 0.0, 3e-6}, {1, 0, 0}}), 0.0);   // held: no direction
+  // Extrapolation: tau linear, the pressure kept >= 0.
+  ProportionalPredictor predictor;
+  std::vector<double> tau, p;
+  EXPECT_FALSE(predictor.predict(b, tau, p));
+  predictor.record(a, {1.0, -1.0}, {3.0, 1.0});
+  predictor.record(b, {2.0, -3.0}, {4.0, 0.5});
+  ASSERT_TRUE(predictor.predict({{30.0, 0.0, 3e-6}, {1, 0, 0}}, tau, p));
+  EXPECT_EQ(tau, (std::vector<double>{3.0, -5.0}));
+  EXPECT_EQ(p, (std::vector<double>{5.0, 0.0}));
+  predictor.clear();
+  EXPECT_FALSE(predictor.predict({{30.0, 0.0, 3e-6}, {1, 0, 0}}, tau, p));
 }
 
 TEST(OuterLoop, IpoptAndNativeReachTheSameState) {
@@ -74,18 +157,8 @@ TEST(OuterLoop, IpoptAndNativeReachTheSameState) {
   expect_certified(a);
   expect_certified(b);
   EXPECT_EQ(b.report.backend, "ipopt");
-  double p_max = 0.0, f_max = 0.0;
-  for (std::size_t e = 0; e < su.grid.size(); ++e) {
-    p_max = std::max(p_max, a.normal.pressure[e]);
-    f_max = std::max(f_max, a.bound[e]);
-  }
-  for (std::size_t e = 0; e < su.grid.size(); ++e) {
-    EXPECT_NEAR(a.normal.pressure[e], b.normal.pressure[e], 1e-6 * p_max) << e;
-    EXPECT_NEAR(a.tx[e], b.tx[e], 1e-5 * f_max) << e;
-    EXPECT_NEAR(a.ty[e], b.ty[e], 1e-5 * f_max) << e;
-  }
+  expect_same_state(b, a, "ipopt against native");
   EXPECT_GT(a.n_stick, 0);
-  EXPECT_EQ(a.n_stick, b.n_stick);
 }
 
 TEST(OuterLoop, AndersonSolvesALinearFixedPointInFewSteps) {
