@@ -77,6 +77,25 @@ NormalSolution FiniteContact::solve_sparse(const std::vector<double>& h, const N
     }
     if (best.report.status == SolveStatus::converged) break;
   }
+  // Ipopt failed on the sparse form: NLopt on the condensed program, the same minimax with the
+  // body's rows eliminated by the kept factor (NLopt cannot take the rows themselves: with them
+  // held densely it did not converge). Small bodies only: each NLopt evaluation costs a pair of
+  // triangular solves, and NLopt takes hundreds.
+  if (best.report.status != SolveStatus::converged && solver.backend == "auto" && solver.fallback &&
+      body_->dofs() <= kSaddleFallbackDofs) {
+    normal_->set_heights(h);
+    SolverSpec nlopt = solver;
+    nlopt.backend = "nlopt";
+    nlopt.fallback = false;
+    NormalSolution sol = normal_->solve(control, nlopt, progress);
+    sol.report.fallback_used = true;
+    sol.report.backend = "nlopt (condensed program)";
+    attempts += std::string("; nlopt on the condensed program: ") + to_string(sol.report.status);
+    if (sol.report.status == SolveStatus::converged || best.report.status == SolveStatus::failed) {
+      body_normal_->displacement(sol.pressure.data(), body_displacement);
+      best = std::move(sol);
+    }
+  }
   if (best.report.fallback_used || best.report.status != SolveStatus::converged)
     best.report.message += " [tried " + attempts + "]";
   return best;

@@ -54,6 +54,9 @@ Eigen::VectorXd saddle_body_displacement(const fe::ElasticBody& body, const fe::
 /// NLopt's equality algorithms (AUGLAG) held the rows densely and did not converge (residual
 /// 0.99 after 1000 evaluations on a 6 x 6 grid and the coarsest hemisphere).
 std::vector<std::string> saddle_backend_order(const std::string& requested);
+/// With backend "auto", a normal problem Ipopt fails on in the sparse form falls back to NLopt on
+/// the condensed program (FiniteContact::solve_normal) for bodies of at most this many dofs.
+inline constexpr std::size_t kSaddleFallbackDofs = 20000;
 
 struct SaddleNormalOutcome {
   std::vector<double> pressure;        ///< Pa, one per grid element (>= 0)

@@ -5,6 +5,9 @@
 // (4.24)); partial slip, so the disks are active. Larger bodies and torsion: slow_finite_saddle.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdlib>
+
 #include "errors.hpp"
 #include "saddle_form.hpp"
 #include "sparse_tangential_pair.hpp"
@@ -17,6 +20,7 @@ using fe::testing::shift_by_force;
 using fe::testing::solve_both;
 
 constexpr std::array<int, 3> kSmall{2, 2, 1};  // about 4k dofs
+constexpr double kHalfWidthTest = fe::testing::kHalfWidth;
 
 TEST(FiniteSparseTangential, ShiftByForceAgreesWithTheCondensedProgram) {
   const fe::testing::Pair r = solve_both(shift_by_force(0.6), 8, kSmall, "ipopt");
@@ -38,6 +42,31 @@ TEST(FiniteSparseTangential, OnlyIpoptTakesTheSparseForm) {
       EXPECT_EQ(e.key(), "solver.backend");
     }
   }
+}
+
+
+TEST(FiniteSparseTangential, NormalProblemFallsBackToNloptOnTheCondensedProgram) {
+  // Ipopt made to fail on the sparse form: "auto" hands the same minimax, the body's rows
+  // eliminated, to NLopt, which reaches the condensed program's certified point.
+  const Grid g = Grid::make(3, 6, 6, -kHalfWidthTest, kHalfWidthTest, -kHalfWidthTest, kHalfWidthTest);
+  const Elastic steel = Elastic::from_E_nu(fe::testing::kE, fe::testing::kNu);
+  FiniteContact condensed(fe::testing::hemisphere("condensed", kSmall), g, steel);
+  const FiniteNormalSolution reference = condensed.solve_normal({Control::force, fe::testing::kP}, SolverSpec{});
+  ASSERT_EQ(reference.contact.report.status, SolveStatus::converged);
+  FiniteContact sparse(fe::testing::hemisphere("sparse", kSmall), g, steel);
+  setenv("DYNCONTACT_FAULT", "ipopt:fail", 1);
+  const FiniteNormalSolution s = sparse.solve_normal({Control::force, fe::testing::kP}, SolverSpec{});
+  unsetenv("DYNCONTACT_FAULT");
+  ASSERT_EQ(s.contact.report.status, SolveStatus::converged) << s.contact.report.message;
+  EXPECT_TRUE(s.contact.report.fallback_used);
+  EXPECT_EQ(s.contact.report.backend, "nlopt (condensed program)");
+  double peak = 0.0, worst = 0.0;
+  for (std::size_t i = 0; i < s.contact.pressure.size(); ++i) {
+    peak = std::max(peak, reference.contact.pressure[i]);
+    worst = std::max(worst, std::abs(s.contact.pressure[i] - reference.contact.pressure[i]));
+  }
+  EXPECT_LT(worst, std::sqrt(fe::testing::kCertificateTol) * peak);
+  EXPECT_GT(s.max_body_displacement, 0.0);
 }
 
 }  // namespace
