@@ -33,7 +33,7 @@ int fft_threads_for(std::size_t points) {
 int fft_good_size(int n) {
   for (int m = std::max(n, 1);; ++m) {
     int r = m;
-    for (int p : {2, 3, 5, 7})
+    for (int p : {2, 3, 5})
       while (r % p == 0) r /= p;
     if (r == 1) return m;
   }

@@ -76,7 +76,8 @@ TEST(FftPlanning, GoodSizesHaveOnlySmallPrimeFactors) {
   EXPECT_EQ(fft_good_size(1), 1);
   EXPECT_EQ(fft_good_size(11), 12);
   EXPECT_EQ(fft_good_size(1023), 1024);
-  EXPECT_EQ(fft_good_size(97), 98);
+  EXPECT_EQ(fft_good_size(97), 100);   // 2^2 5^2: 98 = 2 7^2 is passed over
+  EXPECT_EQ(fft_good_size(181), 192);  // not 189 = 3^3 7
   EXPECT_GE(fft_threads(), 1);
 }
 
