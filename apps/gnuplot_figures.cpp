@@ -76,7 +76,8 @@ std::vector<std::string> render_gnuplot(const std::string& dir, const std::strin
 
   const pid_t svg = start_gnuplot(dir, "svg"), png = start_gnuplot(dir, "png");
   const int svg_status = wait_gnuplot(svg), png_status = wait_gnuplot(png);
-  const int status = svg_status != 0 ? svg_status : png_status;
+  // 127 (no gnuplot) only when neither could start; one failed fork is a failure of its set.
+  const int status = svg_status == 127 && png_status == 127 ? 127 : svg_status != 0 ? svg_status : png_status;
   if (status == 127) {
     if (!g_warned_missing)
       std::cerr << "warning: gnuplot not found: no plots (the script and data are in " << dir << "/plots.gp)\n";
