@@ -66,12 +66,14 @@ class DenseConvolution final : public ConvolutionBase {
 
 /// Zero-padded (linear, not circular) convolution by FFTW: the kernel spectra and plans are
 /// made once; every apply() does n_in forward and n_out inverse transforms (padded_fft.hpp).
+/// Several inputs: each forward transform writes its own stored spectrum, and the products of
+/// one output row are summed straight into the transform's buffer (no copies of spectra).
 class FftConvolution final : public ConvolutionBase {
  public:
   FftConvolution(const Grid& grid, std::vector<KernelTable> blocks, int n_out, int n_in)
       : ConvolutionBase(grid, std::move(blocks), n_out, n_in),
         fft_(grid_.nx, grid_.ny, grid_.nx == 1 ? 1 : fft_good_size(2 * grid_.nx - 1),
-             grid_.ny == 1 ? 1 : fft_good_size(2 * grid_.ny - 1)) {
+             grid_.ny == 1 ? 1 : fft_good_size(2 * grid_.ny - 1), keep_spectra() ? n_in : 0) {
     const int mx = fft_.mx(), my = fft_.my();
     const std::size_t ncplx = fft_.spectrum_size();
     const double norm = 1.0 / (static_cast<double>(mx) * my);
@@ -87,7 +89,6 @@ class FftConvolution final : public ConvolutionBase {
       fft_.periodic_forward(box, spectrum);
       for (std::size_t k = 0; k < 2 * ncplx; ++k) kernel_spectra_[2 * b * ncplx + k] = spectrum[k] * norm;
     }
-    if (keep_spectra()) input_spectra_.resize(2 * static_cast<std::size_t>(n_in_) * ncplx);
   }
 
   void apply(const double* x, double* y) const override {
@@ -100,23 +101,23 @@ class FftConvolution final : public ConvolutionBase {
       fft_.inverse(y);
       return;
     }
-    for (int c = 0; c < n_in_; ++c) {
-      fft_.forward(x + c * N);
-      std::copy_n(spectrum, 2 * ncplx, input_spectra_.data() + 2 * c * ncplx);
-    }
+    for (int c = 0; c < n_in_; ++c) fft_.forward_into(x + c * N, c);
     for (int r = 0; r < n_out_; ++r) {
       // Spectral product, written out (std::complex's operator* guards against inf/nan and is
       // several times slower in this loop).
-      for (std::size_t k = 0; k < ncplx; ++k) {
-        double re = 0.0, im = 0.0;
-        for (int c = 0; c < n_in_; ++c) {
-          const double* kern = kernel_spectra_.data() + 2 * ((r * n_in_ + c) * ncplx + k);
-          const double* in = input_spectra_.data() + 2 * (c * ncplx + k);
-          re += kern[0] * in[0] - kern[1] * in[1];
-          im += kern[0] * in[1] + kern[1] * in[0];
+      const double* kern = kernel_spectra_.data() + 2 * static_cast<std::size_t>(r) * n_in_ * ncplx;
+      const double* in = fft_.stored(0);
+      for (std::size_t k = 0; k < 2 * ncplx; k += 2) {
+        spectrum[k] = kern[k] * in[k] - kern[k + 1] * in[k + 1];
+        spectrum[k + 1] = kern[k] * in[k + 1] + kern[k + 1] * in[k];
+      }
+      for (int c = 1; c < n_in_; ++c) {
+        kern += 2 * ncplx;
+        in = fft_.stored(c);
+        for (std::size_t k = 0; k < 2 * ncplx; k += 2) {
+          spectrum[k] += kern[k] * in[k] - kern[k + 1] * in[k + 1];
+          spectrum[k + 1] += kern[k] * in[k + 1] + kern[k + 1] * in[k];
         }
-        spectrum[2 * k] = re;
-        spectrum[2 * k + 1] = im;
       }
       fft_.inverse(y + r * N);
     }
@@ -137,8 +138,7 @@ class FftConvolution final : public ConvolutionBase {
   }
 
   mutable PaddedFft fft_;
-  std::vector<double> kernel_spectra_;               ///< interleaved re/im, one spectrum per block, 1/(mx my) included
-  mutable std::vector<double> input_spectra_;        ///< interleaved re/im, one per input
+  std::vector<double> kernel_spectra_;  ///< interleaved re/im, one spectrum per block, 1/(mx my) included
 };
 
 }  // namespace

@@ -1,5 +1,6 @@
 // The pruned zero-padded transform (core/padded_fft) gives linear convolutions equal to the
-// direct sum, in 2-D and 1-D, for box sizes with and without padding.
+// direct sum, in 2-D and 1-D, for box sizes with and without padding; the block convolution
+// operator (stored input spectra, products summed per output) equals its dense matrix.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,6 +8,8 @@
 #include <vector>
 
 #include "fft_planning.hpp"
+#include "grid.hpp"
+#include "linear_operator.hpp"
 #include "padded_fft.hpp"
 
 namespace dc {
@@ -55,6 +58,53 @@ TEST(PaddedFft, LinearConvolutionEqualsTheDirectSum) {
   check_convolution(7, 5, fft_good_size(13), fft_good_size(9));  // odd sizes, x and y differ
   check_convolution(11, 1, fft_good_size(21), 1);                 // one-dimensional (2-D problems)
   check_convolution(6, 9, 12, 18);                                 // even padded box, y longer
+  check_convolution(5, 3, 510, 7);  // 256 complex per row: the row buffer is padded off 4 KiB
+}
+
+/// Random kernel tables for an n_out x n_in block operator on `grid`.
+std::vector<KernelTable> random_blocks(const Grid& grid, int count, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<KernelTable> blocks(static_cast<std::size_t>(count));
+  for (KernelTable& t : blocks) {
+    t.nx = grid.nx;
+    t.ny = grid.ny;
+    t.values.resize(static_cast<std::size_t>(2 * grid.nx - 1) * static_cast<std::size_t>(2 * grid.ny - 1));
+    for (double& v : t.values) v = u(rng);
+  }
+  return blocks;
+}
+
+/// The FFT kind of make_convolution_operator against the dense matrix of the same tables.
+void check_block_operator(const Grid& grid, int n_out, int n_in) {
+  const std::vector<KernelTable> blocks = random_blocks(grid, n_out * n_in, 11u + 3u * grid.nx + grid.ny);
+  const auto fft = make_convolution_operator(grid, blocks, n_out, n_in, OperatorKind::fft);
+  const auto dense = make_convolution_operator(grid, blocks, n_out, n_in, OperatorKind::dense);
+  std::vector<double> x(grid.size() * n_in), y_fft, y_dense;
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::cos(0.7 * static_cast<double>(i)) + 0.1;
+  for (int pass = 0; pass < 2; ++pass) {  // twice: no state left from the first apply
+    fft->apply(x, y_fft);
+    dense->apply(x, y_dense);
+    ASSERT_EQ(y_fft.size(), y_dense.size());
+    double worst = 0.0, scale = 0.0;
+    for (std::size_t i = 0; i < y_fft.size(); ++i) {
+      worst = std::max(worst, std::abs(y_fft[i] - y_dense[i]));
+      scale = std::max(scale, std::abs(y_dense[i]));
+    }
+    EXPECT_LT(worst, 1e-12 * scale) << grid.nx << "x" << grid.ny << ", " << n_out << "x" << n_in << " blocks";
+  }
+}
+
+TEST(PaddedFft, BlockConvolutionEqualsTheDenseOperator) {
+  // 7 x 5 elements: a 15 x 9 box (odd and not square).
+  const Grid g = Grid::make(3, 7, 5, 0.0, 7e-3, 0.0, 5e-3);
+  EXPECT_EQ(fft_good_size(2 * 7 - 1), 15);
+  EXPECT_EQ(fft_good_size(2 * 5 - 1), 9);
+  check_block_operator(g, 2, 2);
+  check_block_operator(g, 2, 1);
+  check_block_operator(g, 1, 2);
+  check_block_operator(g, 1, 1);
+  check_block_operator(Grid::make(2, 12, 1, 0.0, 12e-3, 0.0, 0.0), 2, 2);  // one-dimensional
 }
 
 TEST(PaddedFft, TransformsTwiceGiveTheSameResult) {
