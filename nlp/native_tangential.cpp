@@ -81,10 +81,34 @@ struct Face {
   Vec nx, ny, curv;                 ///< per disk (slipping): outward normal, mu / r
 };
 
+}  // namespace
+
+/// Every vector of a solve, kept between solves: resized, not reallocated (vectors of n = 2N
+/// doubles are above glibc's mmap threshold from 90^2 elements: fresh ones are page faults).
+struct NativeTangentialWorkspace::Storage {
+  std::vector<Disk> disks;
+  std::vector<std::size_t> boxed, fixed;
+  std::vector<unsigned char> role;
+  Vec lower, upper, fixed_value;
+  std::vector<const double*> rows;
+  Face face;
+  std::vector<Vec> a_face, a_face_minv;
+  Vec minv, u_last, work_u, work_x;
+  // solve()'s iterates
+  Vec x, g, z, y, w, d0, hd0, dt, r, rho, p, q, xt, gt, gh, ght;
+};
+
+NativeTangentialWorkspace::NativeTangentialWorkspace() : storage_(std::make_unique<Storage>()) {}
+NativeTangentialWorkspace::~NativeTangentialWorkspace() = default;
+NativeTangentialWorkspace::NativeTangentialWorkspace(NativeTangentialWorkspace&&) noexcept = default;
+NativeTangentialWorkspace& NativeTangentialWorkspace::operator=(NativeTangentialWorkspace&&) noexcept = default;
+
+namespace {
+
 class NativeTangential {
  public:
-  NativeTangential(const QuadraticProgram& qp, const SolveOptions& options)
-      : qp_(qp), options_(options), n_(qp.c.size()), m_(qp.equalities.size()) {
+  NativeTangential(const QuadraticProgram& qp, const SolveOptions& options, NativeTangentialWorkspace::Storage& work)
+      : qp_(qp), options_(options), n_(qp.c.size()), m_(qp.equalities.size()), work_(work) {
     invalid_ = setup();
   }
 
@@ -151,23 +175,24 @@ class NativeTangential {
   std::size_t n_, m_;
   std::string invalid_;
 
-  std::vector<Disk> disks_;               // radius > 0
-  std::vector<std::size_t> boxed_;        // variables outside disks with lower < upper
-  std::vector<std::size_t> fixed_;        // variables held at a value (zero radius, lower == upper)
-  Vec lower_, upper_, fixed_value_;       // per variable
-  std::vector<const double*> rows_;       // equality rows
+  NativeTangentialWorkspace::Storage& work_;
+  std::vector<Disk>& disks_ = work_.disks;          // radius > 0
+  std::vector<std::size_t>& boxed_ = work_.boxed;   // variables outside disks with lower < upper
+  std::vector<std::size_t>& fixed_ = work_.fixed;   // variables held at a value (zero radius, lower == upper)
+  Vec &lower_ = work_.lower, &upper_ = work_.upper, &fixed_value_ = work_.fixed_value;  // per variable
+  std::vector<const double*>& rows_ = work_.rows;   // equality rows
   Eigen::VectorXd b_;
   Eigen::VectorXd eq_scale_;              // |b| + sum |a| * (size of the variable's set)
   double scale_ = 1.0;                    // max(1, largest radius / finite bound)
   double rows_norm2_ = 0.0;               // |A|_2^2 (bounds the curvature of the projection's dual)
 
-  Face face_;
-  std::vector<Vec> a_face_;               // equality rows projected on the face
-  std::vector<Vec> a_face_minv_;          // M^-1 a_face_
-  Vec minv_;                              // diagonal preconditioner: 1 / (1 + curvature)
-  Eigen::MatrixXd gram_pinv_;             // (A_F M^-1 A_F')^+
-  Vec u_last_;                            // z + A'nu of the last projection
-  Vec work_u_, work_x_;                   // projection trial buffers
+  Face& face_ = work_.face;
+  std::vector<Vec>& a_face_ = work_.a_face;            // equality rows projected on the face
+  std::vector<Vec>& a_face_minv_ = work_.a_face_minv;  // M^-1 a_face_
+  Vec& minv_ = work_.minv;                             // diagonal preconditioner: 1 / (1 + curvature)
+  Eigen::MatrixXd gram_pinv_;                          // (A_F M^-1 A_F')^+
+  Vec& u_last_ = work_.u_last;                         // z + A'nu of the last projection
+  Vec &work_u_ = work_.work_u, &work_x_ = work_.work_x;  // projection trial buffers
   int applies_ = 0;
 };
 
@@ -177,8 +202,14 @@ std::string NativeTangential::setup() {
   if ((!qp_.lower.empty() && qp_.lower.size() != n_) || (!qp_.upper.empty() && qp_.upper.size() != n_))
     return "bounds do not match c in size";
   if (!qp_.x0.empty() && qp_.x0.size() != n_) return "x0 does not match c in size";
-  lower_ = qp_.lower.empty() ? Vec(n_, -kInf) : qp_.lower;
-  upper_ = qp_.upper.empty() ? Vec(n_, kInf) : qp_.upper;
+  disks_.clear();
+  boxed_.clear();
+  fixed_.clear();
+  rows_.clear();
+  if (qp_.lower.empty()) lower_.assign(n_, -kInf);
+  else lower_ = qp_.lower;
+  if (qp_.upper.empty()) upper_.assign(n_, kInf);
+  else upper_ = qp_.upper;
   for (std::size_t i = 0; i < n_; ++i) {
     if (!std::isfinite(qp_.c[i])) return "c is not finite";
     if (std::isnan(lower_[i]) || std::isnan(upper_[i]) || lower_[i] > upper_[i] || lower_[i] == kInf ||
@@ -186,7 +217,8 @@ std::string NativeTangential::setup() {
       return "empty bounds on variable " + std::to_string(i);
   }
   fixed_value_.assign(n_, 0.0);
-  std::vector<unsigned char> role(n_, 0);  // 0 box, 1 disk, 2 fixed
+  std::vector<unsigned char>& role = work_.role;  // 0 box, 1 disk, 2 fixed
+  role.assign(n_, 0);
   for (const auto& d : qp_.disks) {
     if (d.ix < 0 || d.iy < 0 || static_cast<std::size_t>(d.ix) >= n_ || static_cast<std::size_t>(d.iy) >= n_ ||
         d.ix == d.iy)
@@ -515,10 +547,14 @@ SolveOutcome NativeTangential::solve() {
   double tol_x = options_.tol * scale_;
   const auto m = static_cast<Eigen::Index>(m_);
 
-  Vec x(n_), g(n_), z(n_), y(n_), w(n_), d0(n_), hd0(n_), dt(n_), r(n_), rho(n_), p(n_), q(n_);
-  Vec xt(n_), gt(n_), gh(n_), ght(n_);
+  // Every entry of these is written before it is read (resize keeps the last solve's values).
+  Vec &x = work_.x, &g = work_.g, &z = work_.z, &y = work_.y, &w = work_.w, &d0 = work_.d0, &hd0 = work_.hd0,
+      &dt = work_.dt, &r = work_.r, &rho = work_.rho, &p = work_.p, &q = work_.q, &xt = work_.xt, &gt = work_.gt,
+      &gh = work_.gh, &ght = work_.ght;
+  for (Vec* v : {&x, &g, &z, &y, &w, &d0, &hd0, &dt, &r, &rho, &p, &q, &xt, &gt, &gh, &ght}) v->resize(n_);
   Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m), nu_t(m);
-  z = qp_.x0.size() == n_ ? qp_.x0 : Vec(n_, 0.0);
+  if (qp_.x0.size() == n_) z = qp_.x0;
+  else std::fill(z.begin(), z.end(), 0.0);
   if (!project(z, x, lambda)) {
     out.x = x;
     out.message = "native tangential: the equality rows could not be met inside the disks and bounds (infeasible program)";
@@ -723,9 +759,15 @@ SolveOutcome NativeTangential::solve() {
 
 }  // namespace
 
-SolveOutcome solve_tangential_native(const QuadraticProgram& qp, const SolveOptions& options) {
-  NativeTangential solver(qp, options);
+SolveOutcome solve_tangential_native(const QuadraticProgram& qp, const SolveOptions& options,
+                                     NativeTangentialWorkspace& workspace) {
+  NativeTangential solver(qp, options, *workspace.storage_);
   return solver.solve();
+}
+
+SolveOutcome solve_tangential_native(const QuadraticProgram& qp, const SolveOptions& options) {
+  NativeTangentialWorkspace workspace;
+  return solve_tangential_native(qp, options, workspace);
 }
 
 }  // namespace dc

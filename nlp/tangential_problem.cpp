@@ -75,6 +75,7 @@ struct TangentialProblem::Impl {
   bool native_first = false;                 // auto while marching: native first at any size
   bool native_first_always = false;          // auto: native first for every solve (set_native_first)
   std::optional<SparseTangentialForm> sparse;  // a finite body's sparse saddle form (use_sparse_form)
+  NativeTangentialWorkspace native_work;       // the native solver's vectors, kept between solves
 
   Impl(const Grid& g, const MaterialPair& m, std::vector<double> h, FrictionLaw f, OperatorKind k)
       : grid(g), materials(m), friction(std::move(f)), kind(k), half_space(std::in_place, g, m),
@@ -312,7 +313,10 @@ struct TangentialProblem::Impl {
     const auto order = sparse ? sparse->backends(solver.backend, solver.fallback) : backend_order(solver.backend, native_first || native_first_always ? std::numeric_limits<std::size_t>::max() : n,
                       solver.fallback);
     for (std::size_t k = 0; k < order.size(); ++k) {
-      const TimedOutcome run = run_backend(order[k], qp, options, solve_tangential_native);
+      const TimedOutcome run =
+          run_backend(order[k], qp, options, [this](const QuadraticProgram& q, const SolveOptions& o) {
+            return solve_tangential_native(q, o, native_work);
+          });
       const SolveOutcome& out = run.outcome;
       InnerResult trial;
       SolverReport& rep = trial.report;
