@@ -72,8 +72,8 @@ class FftConvolution final : public ConvolutionBase {
  public:
   FftConvolution(const Grid& grid, std::vector<KernelTable> blocks, int n_out, int n_in)
       : ConvolutionBase(grid, std::move(blocks), n_out, n_in),
-        fft_(grid_.nx, grid_.ny, grid_.nx == 1 ? 1 : fft_good_size(2 * grid_.nx - 1),
-             grid_.ny == 1 ? 1 : fft_good_size(2 * grid_.ny - 1), keep_spectra() ? n_in : 0) {
+        fft_(grid_.nx, grid_.ny, grid_.nx == 1 ? 1 : fft_fast_size(2 * grid_.nx - 1),
+             grid_.ny == 1 ? 1 : fft_fast_size(2 * grid_.ny - 1), keep_spectra() ? n_in : 0) {
     const int mx = fft_.mx(), my = fft_.my();
     const std::size_t ncplx = fft_.spectrum_size();
     const double norm = 1.0 / (static_cast<double>(mx) * my);

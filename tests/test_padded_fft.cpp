@@ -25,14 +25,16 @@ void check_convolution(int nx, int ny, int mx, int my) {
   for (double& v : x) v = u(rng);
   auto K = [&](int di, int dj) { return kernel[(di + nx - 1) + static_cast<std::size_t>(kx) * (dj + ny - 1)]; };
 
-  PaddedFft fft(nx, ny, mx, my);
+  PaddedFft fft(nx, ny, mx, my, 1);
   std::vector<double> box(static_cast<std::size_t>(mx) * my, 0.0), spectrum;
   for (int dj = -(ny - 1); dj <= ny - 1; ++dj)
     for (int di = -(nx - 1); di <= nx - 1; ++di)
       box[(di < 0 ? di + mx : di) + static_cast<std::size_t>(mx) * (dj < 0 ? dj + my : dj)] = K(di, dj);
   fft.periodic_forward(box, spectrum);
+  fft.forward_into(x.data(), 0);  // the stored-spectrum path: the same transform, bit for bit
   fft.forward(x.data());
   double* s = fft.spectrum();
+  for (std::size_t k = 0; k < 2 * fft.spectrum_size(); ++k) ASSERT_EQ(fft.stored(0)[k], s[k]);
   for (std::size_t k = 0; k < fft.spectrum_size(); ++k) {
     const double re = s[2 * k], im = s[2 * k + 1];
     s[2 * k] = spectrum[2 * k] * re - spectrum[2 * k + 1] * im;
@@ -96,10 +98,8 @@ void check_block_operator(const Grid& grid, int n_out, int n_in) {
 }
 
 TEST(PaddedFft, BlockConvolutionEqualsTheDenseOperator) {
-  // 7 x 5 elements: a 15 x 9 box (odd and not square).
+  // 7 x 5 elements: a 16 x 10 box (the odd boxes, 15 x 9, in LinearConvolutionEqualsTheDirectSum).
   const Grid g = Grid::make(3, 7, 5, 0.0, 7e-3, 0.0, 5e-3);
-  EXPECT_EQ(fft_good_size(2 * 7 - 1), 15);
-  EXPECT_EQ(fft_good_size(2 * 5 - 1), 9);
   check_block_operator(g, 2, 2);
   check_block_operator(g, 2, 1);
   check_block_operator(g, 1, 2);
@@ -128,6 +128,15 @@ TEST(FftPlanning, GoodSizesHaveOnlySmallPrimeFactors) {
   EXPECT_EQ(fft_good_size(1023), 1024);
   EXPECT_EQ(fft_good_size(97), 100);   // 2^2 5^2: 98 = 2 7^2 is passed over
   EXPECT_EQ(fft_good_size(181), 192);  // not 189 = 3^3 7
+  // The padded box of a convolution: the cheapest length, not the smallest.
+  EXPECT_EQ(fft_fast_size(2 * 304 - 1), 640);  // not 625 = 5^4 (odd: 2.2x the time)
+  EXPECT_EQ(fft_fast_size(2 * 91 - 1), 200);   // not 192 = 2^6 3
+  EXPECT_EQ(fft_fast_size(2 * 512 - 1), 1024);
+  for (int n = 1; n < 300; ++n) {
+    const int m = fft_fast_size(n);
+    EXPECT_GE(m, n);
+    EXPECT_EQ(fft_good_size(m), m) << n;  // 2, 3, 5-smooth
+  }
   EXPECT_GE(fft_threads(), 1);
 }
 
