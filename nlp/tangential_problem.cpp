@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "anderson_mixing.hpp"
+#include "support_window.hpp"
 #include "backend_choice.hpp"
 #include "errors.hpp"
 #include "fault_injection.hpp"
@@ -72,6 +73,8 @@ struct TangentialProblem::Impl {
   std::vector<double> tau_warm;              // warm start of the tangential program
   ProportionalPredictor predictor;           // step() histories with kappa != 0: extrapolated starts
   bool extrapolate = true;                   // set_extrapolation()
+  bool windowing = true;                     // set_windowing()
+  std::optional<WindowedCompliance> windows;  // Ct on windows of the grid (half-space operators only)
   bool native_first = false;                 // auto while marching: native first at any size
   bool native_first_always = false;          // auto: native first for every solve (set_native_first)
   std::optional<SparseTangentialForm> sparse;  // a finite body's sparse saddle form (use_sparse_form)
@@ -250,28 +253,37 @@ struct TangentialProblem::Impl {
     const double ct0 = Ct->diagonal(0);
     const double f_ref = std::max(max_abs(f), 1e-300);
     const std::size_t n = comps * N;
-    // The sparse form: Q the half-space's share, the body's in the block's rows.
-    ScaledOperator Q(sparse ? *sparse->halfspace : *Ct, 1.0 / ct0);
+    // The program's elements: the grid, or a window of it that holds f > 0 (the same program:
+    // tau is 0 wherever f is). The sparse form: Q the half-space's share, the body's in the
+    // block's rows.
+    SupportWindow window;
+    if (windowing && half_space && !sparse) window = support_window(grid, f);
+    const bool windowed = window.nx > 0;
+    if (windowed && !windows) windows.emplace(grid, materials, kind);
+    const std::size_t Nw = windowed ? window.size() : N, nw = comps * Nw;
+    const auto element = [&](std::size_t l) { return windowed ? window.global(grid, l) : l; };
+    ScaledOperator Q(windowed ? windows->tangential(window) : sparse ? *sparse->halfspace : *Ct, 1.0 / ct0);
     QuadraticProgram qp;
     qp.Q = &Q;
-    qp.c.resize(n);
-    qp.lower.assign(n, -kInf);
-    qp.upper.assign(n, kInf);
-    for (std::size_t e = 0; e < N; ++e) {
+    qp.c.resize(nw);
+    qp.lower.assign(nw, -kInf);
+    qp.upper.assign(nw, kInf);
+    for (std::size_t l = 0; l < Nw; ++l) {
+      const std::size_t e = element(l);
       for (int c = 0; c < comps; ++c) {
         double w = W[c * N + e];
         for (int k = 0; k < n_modes(); ++k)
           if (modes[k].kind == ModeControl::Kind::amplitude) w += given_increment[k] * mode(k, e, c);
-        qp.c[c * N + e] = w / (ct0 * f_ref);
+        qp.c[c * Nw + l] = w / (ct0 * f_ref);
       }
       const double r = f[e] / f_ref;
       if (r <= 0.0) {
-        for (int c = 0; c < comps; ++c) qp.lower[c * N + e] = qp.upper[c * N + e] = 0.0;
+        for (int c = 0; c < comps; ++c) qp.lower[c * Nw + l] = qp.upper[c * Nw + l] = 0.0;
       } else if (comps == 1) {
-        qp.lower[e] = -r;
-        qp.upper[e] = r;
+        qp.lower[l] = -r;
+        qp.upper[l] = r;
       } else {
-        qp.disks.push_back({static_cast<int>(e), static_cast<int>(N + e), r});
+        qp.disks.push_back({static_cast<int>(l), static_cast<int>(Nw + l), r});
       }
     }
     check_resultants(f, modes);
@@ -282,17 +294,18 @@ struct TangentialProblem::Impl {
       // Row sum_e mode_k . tau A = R_k, scaled by the largest resultant friction can carry.
       const double capacity = resultant_capacity(k, f);
       LinearEquality eq;
-      eq.a.assign(n, 0.0);
-      for (std::size_t e = 0; e < N; ++e)
-        for (int c = 0; c < comps; ++c) eq.a[c * N + e] = mode(k, e, c) * A * f_ref / capacity;
+      eq.a.assign(nw, 0.0);
+      for (std::size_t l = 0; l < Nw; ++l)
+        for (int c = 0; c < comps; ++c) eq.a[c * Nw + l] = mode(k, element(l), c) * A * f_ref / capacity;
       eq.b = modes[k].value / capacity;
       qp.equalities.push_back(std::move(eq));
       row_mode.push_back(k);
       row_scale.push_back(capacity);
     }
     if (tau_warm.size() == n) {
-      qp.x0.resize(n);
-      for (std::size_t i = 0; i < n; ++i) qp.x0[i] = tau_warm[i] / f_ref;
+      qp.x0.resize(nw);
+      for (std::size_t l = 0; l < Nw; ++l)
+        for (int c = 0; c < comps; ++c) qp.x0[c * Nw + l] = tau_warm[c * N + element(l)] / f_ref;
     }
     SolveOptions options = solve_options(solver, progress);
     SparseBlock body_rows;
@@ -326,9 +339,10 @@ struct TangentialProblem::Impl {
       rep.objective = out.objective * ct0 * f_ref * f_ref * A;
       rep.status = SolveStatus::failed;
       trial.increment = given_increment;
-      if (out.x.size() == n) {
-        trial.tau.resize(n);
-        for (std::size_t i = 0; i < n; ++i) trial.tau[i] = out.x[i] * f_ref;
+      if (out.x.size() == nw) {
+        trial.tau.assign(n, 0.0);
+        for (std::size_t l = 0; l < Nw; ++l)
+          for (int c = 0; c < comps; ++c) trial.tau[c * N + element(l)] = out.x[c * Nw + l] * f_ref;
         // Project onto the friction set (interior-point iterates may sit a hair outside).
         for (std::size_t e = 0; e < N; ++e) {
           double m2 = 0.0;
@@ -776,6 +790,8 @@ TangentialProblem::TangentialProblem(const Grid& grid, std::shared_ptr<const Lin
 void TangentialProblem::reset() { impl_->reset(); }
 
 void TangentialProblem::set_extrapolation(bool on) { impl_->extrapolate = on; }
+
+void TangentialProblem::set_windowing(bool on) { impl_->windowing = on; }
 
 void TangentialProblem::set_native_first(bool on) { impl_->native_first_always = on; }
 

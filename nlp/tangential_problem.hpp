@@ -137,6 +137,10 @@ class TangentialProblem {
   /// from the state extrapolated from its last two steps (nlp/proportional_predictor.hpp); on by
   /// default, off: from the last step's state. For comparisons and tests.
   void set_extrapolation(bool on);
+  /// The tangential program posed on the smallest window of the grid that holds f(p) > 0
+  /// (nlp/support_window.hpp; the same program, a smaller transform); on by default for the
+  /// half-space's own compliances. For comparisons and tests.
+  void set_windowing(bool on);
 
   /// One step of a moving contact ((3.8), dynamic problems): the rigid-slip increments of the
   /// step given (x, y (m), rotation about z (rad)), the previous relative displacement taken
