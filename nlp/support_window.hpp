@@ -33,7 +33,7 @@ struct SupportWindow {
 /// The smallest window that holds every element with f > 0, its sides rounded up to a multiple
 /// of 8 elements (so that a history reuses a few sizes) within the grid; empty (nx = 0) when it
 /// would cover more than `max_fraction` of the grid or the support is empty.
-SupportWindow support_window(const Grid& grid, const std::vector<double>& f, double max_fraction = 0.7);
+SupportWindow support_window(const Grid& grid, const std::vector<double>& f, double max_fraction = 0.9);
 
 /// The tangential compliance (B22) of windows of one grid and material pair, built once per
 /// window size and kept (at most `capacity` sizes; the oldest is dropped).
