@@ -1,6 +1,7 @@
 #include "linear_operator.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "fft_planning.hpp"
@@ -64,6 +65,72 @@ class DenseConvolution final : public ConvolutionBase {
   Eigen::MatrixXd matrix_;
 };
 
+/// The spectrum of one kernel block, 1/(mx my) included. The half-space's kernels are even or
+/// odd in each offset, so their spectra are real (zz, xx, xy, yy) or imaginary (the kappa
+/// terms); such a spectrum keeps one value per entry (half the memory and the reads of a
+/// product). Shifted kernels (rolling) keep both parts.
+struct KernelSpectrum {
+  enum class Kind { complex, real, imaginary } kind = Kind::complex;
+  std::vector<double> values;  ///< complex: interleaved re/im; otherwise the one nonzero part
+
+  KernelSpectrum(const std::vector<double>& spectrum, double norm) {
+    const std::size_t ncplx = spectrum.size() / 2;
+    double largest = 0.0, re_max = 0.0, im_max = 0.0;
+    for (std::size_t k = 0; k < ncplx; ++k) {
+      re_max = std::max(re_max, std::abs(spectrum[2 * k]));
+      im_max = std::max(im_max, std::abs(spectrum[2 * k + 1]));
+    }
+    largest = std::max(re_max, im_max);
+    // A part below this is the transform's round-off of an exactly even or odd kernel.
+    const double round_off = 1e-13 * largest;
+    const int part = im_max <= round_off ? 0 : (re_max <= round_off ? 1 : -1);
+    if (part < 0) {
+      values.resize(spectrum.size());
+      for (std::size_t k = 0; k < spectrum.size(); ++k) values[k] = spectrum[k] * norm;
+      return;
+    }
+    kind = part == 0 ? Kind::real : Kind::imaginary;
+    values.resize(ncplx);
+    for (std::size_t k = 0; k < ncplx; ++k) values[k] = spectrum[2 * k + part] * norm;
+  }
+
+  /// out (=, or += when accumulate) kernel * in, both interleaved re/im; out may be in.
+  template <bool accumulate>
+  void multiply(const double* in, double* out, std::size_t ncplx) const {
+    const double* kv = values.data();
+    const auto store = [out](std::size_t k, double re, double im) {
+      if constexpr (accumulate) {
+        out[2 * k] += re;
+        out[2 * k + 1] += im;
+      } else {
+        out[2 * k] = re;
+        out[2 * k + 1] = im;
+      }
+    };
+    // Written out: std::complex's operator* guards against inf/nan and is several times slower.
+    switch (kind) {
+      case Kind::complex:
+        for (std::size_t k = 0; k < ncplx; ++k) {
+          const double re = in[2 * k], im = in[2 * k + 1];
+          store(k, kv[2 * k] * re - kv[2 * k + 1] * im, kv[2 * k] * im + kv[2 * k + 1] * re);
+        }
+        break;
+      case Kind::real:
+        for (std::size_t k = 0; k < ncplx; ++k) {
+          const double re = in[2 * k], im = in[2 * k + 1];
+          store(k, kv[k] * re, kv[k] * im);
+        }
+        break;
+      case Kind::imaginary:
+        for (std::size_t k = 0; k < ncplx; ++k) {
+          const double re = in[2 * k], im = in[2 * k + 1];
+          store(k, -kv[k] * im, kv[k] * re);
+        }
+        break;
+    }
+  }
+};
+
 /// Zero-padded (linear, not circular) convolution by FFTW: the kernel spectra and plans are
 /// made once; every apply() does n_in forward and n_out inverse transforms (padded_fft.hpp).
 /// Several inputs: each forward transform writes its own stored spectrum, and the products of
@@ -75,9 +142,8 @@ class FftConvolution final : public ConvolutionBase {
         fft_(grid_.nx, grid_.ny, grid_.nx == 1 ? 1 : fft_fast_size(2 * grid_.nx - 1),
              grid_.ny == 1 ? 1 : fft_fast_size(2 * grid_.ny - 1), keep_spectra() ? n_in : 0) {
     const int mx = fft_.mx(), my = fft_.my();
-    const std::size_t ncplx = fft_.spectrum_size();
     const double norm = 1.0 / (static_cast<double>(mx) * my);
-    kernel_spectra_.resize(2 * blocks_.size() * ncplx);
+    kernel_spectra_.reserve(blocks_.size());
     std::vector<double> box(static_cast<std::size_t>(mx) * my), spectrum;
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
       throw_if_interrupted();  // a large grid's spectra take seconds
@@ -87,7 +153,7 @@ class FftConvolution final : public ConvolutionBase {
         for (int di = -(grid_.nx - 1); di <= grid_.nx - 1; ++di)
           box[wrap(di, mx) + static_cast<std::size_t>(mx) * wrap(dj, my)] = t.at(di, dj);
       fft_.periodic_forward(box, spectrum);
-      for (std::size_t k = 0; k < 2 * ncplx; ++k) kernel_spectra_[2 * b * ncplx + k] = spectrum[k] * norm;
+      kernel_spectra_.emplace_back(spectrum, norm);
     }
   }
 
@@ -97,28 +163,15 @@ class FftConvolution final : public ConvolutionBase {
     double* spectrum = fft_.spectrum();
     if (!keep_spectra()) {  // one block: multiply in place
       fft_.forward(x);
-      multiply(kernel_spectra_.data(), spectrum, ncplx);
+      kernel_spectra_[0].multiply<false>(spectrum, spectrum, ncplx);
       fft_.inverse(y);
       return;
     }
     for (int c = 0; c < n_in_; ++c) fft_.forward_into(x + c * N, c);
     for (int r = 0; r < n_out_; ++r) {
-      // Spectral product, written out (std::complex's operator* guards against inf/nan and is
-      // several times slower in this loop).
-      const double* kern = kernel_spectra_.data() + 2 * static_cast<std::size_t>(r) * n_in_ * ncplx;
-      const double* in = fft_.stored(0);
-      for (std::size_t k = 0; k < 2 * ncplx; k += 2) {
-        spectrum[k] = kern[k] * in[k] - kern[k + 1] * in[k + 1];
-        spectrum[k + 1] = kern[k] * in[k + 1] + kern[k + 1] * in[k];
-      }
-      for (int c = 1; c < n_in_; ++c) {
-        kern += 2 * ncplx;
-        in = fft_.stored(c);
-        for (std::size_t k = 0; k < 2 * ncplx; k += 2) {
-          spectrum[k] += kern[k] * in[k] - kern[k + 1] * in[k + 1];
-          spectrum[k + 1] += kern[k] * in[k + 1] + kern[k + 1] * in[k];
-        }
-      }
+      const KernelSpectrum* row = kernel_spectra_.data() + static_cast<std::size_t>(r) * n_in_;
+      row[0].multiply<false>(fft_.stored(0), spectrum, ncplx);
+      for (int c = 1; c < n_in_; ++c) row[c].multiply<true>(fft_.stored(c), spectrum, ncplx);
       fft_.inverse(y + r * N);
     }
   }
@@ -128,17 +181,9 @@ class FftConvolution final : public ConvolutionBase {
   static std::size_t wrap(int d, int m) { return static_cast<std::size_t>(d < 0 ? d + m : d); }
   /// A single block multiplies in place; several keep the input spectra.
   bool keep_spectra() const { return n_in_ > 1 || n_out_ > 1; }
-  /// s *= kernel (both interleaved re/im), in place.
-  static void multiply(const double* kern, double* s, std::size_t ncplx) {
-    for (std::size_t k = 0; k < ncplx; ++k) {
-      const double re = s[2 * k], im = s[2 * k + 1];
-      s[2 * k] = kern[2 * k] * re - kern[2 * k + 1] * im;
-      s[2 * k + 1] = kern[2 * k] * im + kern[2 * k + 1] * re;
-    }
-  }
 
   mutable PaddedFft fft_;
-  std::vector<double> kernel_spectra_;  ///< interleaved re/im, one spectrum per block, 1/(mx my) included
+  std::vector<KernelSpectrum> kernel_spectra_;  ///< one per block, r * n_in + c
 };
 
 }  // namespace

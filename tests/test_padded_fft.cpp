@@ -63,23 +63,34 @@ TEST(PaddedFft, LinearConvolutionEqualsTheDirectSum) {
   check_convolution(5, 3, 510, 7);  // 256 complex per row: the row buffer is padded off 4 KiB
 }
 
-/// Random kernel tables for an n_out x n_in block operator on `grid`.
-std::vector<KernelTable> random_blocks(const Grid& grid, int count, unsigned seed) {
+/// Random kernel tables for an n_out x n_in block operator on `grid`. Symmetry by block, in
+/// turn: none (a complex spectrum), even in both offsets (real) and odd along x (imaginary), as
+/// the half-space's kernels are.
+std::vector<KernelTable> random_blocks(const Grid& grid, int count, unsigned seed, bool symmetric) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::vector<KernelTable> blocks(static_cast<std::size_t>(count));
-  for (KernelTable& t : blocks) {
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    KernelTable& t = blocks[b];
     t.nx = grid.nx;
     t.ny = grid.ny;
     t.values.resize(static_cast<std::size_t>(2 * grid.nx - 1) * static_cast<std::size_t>(2 * grid.ny - 1));
     for (double& v : t.values) v = u(rng);
+    const int kind = symmetric ? static_cast<int>(b % 3) : 0;
+    if (kind == 0) continue;
+    for (int dj = -(grid.ny - 1); dj <= grid.ny - 1; ++dj)
+      for (int di = -(grid.nx - 1); di <= grid.nx - 1; ++di) {
+        const double mirror = t.at(std::abs(di), std::abs(dj));
+        if (kind == 1) t.at(di, dj) = mirror;
+        else t.at(di, dj) = di == 0 ? 0.0 : (di > 0 ? mirror : -mirror);
+      }
   }
   return blocks;
 }
 
 /// The FFT kind of make_convolution_operator against the dense matrix of the same tables.
-void check_block_operator(const Grid& grid, int n_out, int n_in) {
-  const std::vector<KernelTable> blocks = random_blocks(grid, n_out * n_in, 11u + 3u * grid.nx + grid.ny);
+void check_block_operator(const Grid& grid, int n_out, int n_in, bool symmetric = false) {
+  const std::vector<KernelTable> blocks = random_blocks(grid, n_out * n_in, 11u + 3u * grid.nx + grid.ny, symmetric);
   const auto fft = make_convolution_operator(grid, blocks, n_out, n_in, OperatorKind::fft);
   const auto dense = make_convolution_operator(grid, blocks, n_out, n_in, OperatorKind::dense);
   std::vector<double> x(grid.size() * n_in), y_fft, y_dense;
@@ -104,6 +115,9 @@ TEST(PaddedFft, BlockConvolutionEqualsTheDenseOperator) {
   check_block_operator(g, 2, 1);
   check_block_operator(g, 1, 2);
   check_block_operator(g, 1, 1);
+  check_block_operator(g, 2, 2, true);  // real and imaginary kernel spectra kept as one part
+  check_block_operator(g, 1, 2, true);
+  check_block_operator(g, 1, 1, true);
   check_block_operator(Grid::make(2, 12, 1, 0.0, 12e-3, 0.0, 0.0), 2, 2);  // one-dimensional
 }
 
