@@ -76,6 +76,7 @@ struct TangentialProblem::Impl {
   bool extrapolate = true;                   // set_extrapolation()
   bool windowing = true;                     // set_windowing()
   std::optional<WindowedCompliance> windows;  // Ct on windows of the grid (half-space operators only)
+  std::unique_ptr<TangentialPreconditioner> Ct_preconditioner;  // grid_preconditioner()
   bool native_first = false;                 // auto while marching: native first at any size
   bool native_first_always = false;          // auto: native first for every solve (set_native_first)
   std::optional<SparseTangentialForm> sparse;  // a finite body's sparse saddle form (use_sparse_form)
@@ -202,6 +203,14 @@ struct TangentialProblem::Impl {
     bool shift_undetermined = false;    // frictionless: a resultant-controlled mode has no unique value
   };
 
+  /// The whole grid's tangential preconditioner (built on first use); none for given operators
+  /// (a finite body's compliance is not translation invariant) or the sparse form.
+  const TangentialPreconditioner* grid_preconditioner() {
+    if (!half_space || sparse) return nullptr;
+    if (!Ct_preconditioner) Ct_preconditioner = std::make_unique<TangentialPreconditioner>(*Ct, grid);
+    return Ct_preconditioner.get();
+  }
+
   /// The largest resultant of mode k that friction can carry: sum_e f_e |m_k(e)| A.
   double resultant_capacity(int k, const std::vector<double>& f) const {
     double capacity = 0.0;
@@ -264,9 +273,15 @@ struct TangentialProblem::Impl {
     if (windowed && !windows) windows.emplace(grid, materials, kind);
     const std::size_t Nw = windowed ? window.size() : N, nw = comps * Nw;
     const auto element = [&](std::size_t l) { return windowed ? window.global(grid, l) : l; };
-    ScaledOperator Q(windowed ? windows->tangential(window) : sparse ? *sparse->halfspace : *Ct, 1.0 / ct0);
+    const WindowOperators* ops = windowed ? &windows->operators(window) : nullptr;
+    ScaledOperator Q(ops ? *ops->compliance : sparse ? *sparse->halfspace : *Ct, 1.0 / ct0);
+    // The FFT preconditioner of the half-space's own compliance (Q^-1 = ct0 B22^-1).
+    const TangentialPreconditioner* preconditioner = ops ? ops->preconditioner.get() : grid_preconditioner();
+    std::optional<ScaledOperator> Q_inverse;
+    if (preconditioner) Q_inverse.emplace(*preconditioner, ct0);
     QuadraticProgram qp;
     qp.Q = &Q;
+    if (Q_inverse) qp.preconditioner = &*Q_inverse;
     qp.c.resize(nw);
     qp.lower.assign(nw, -kInf);
     qp.upper.assign(nw, kInf);
