@@ -13,6 +13,9 @@
 #                               table at 23k/93k/372k elements, Spence 35 and 69 steps) timed whole by
 #                               dyncontact_peer_bench: time (median of the runs), iterations,
 #                               alternations, error against the closed form (docs/solvers.md)
+#   scripts/bench.sh fft [--sizes 45,91,152,304,512]
+#                               one operator apply on the FFT path (normal, 2x2 tangential, kappa B21)
+#                               and its set-up on n x n grids, one thread (dyncontact_fft_bench)
 #   scripts/bench.sh finite [--repeat 2] [--sparse-dofs 10k] [--dofs 10k,50k,200k] [--grids 32,64]
 #                               problem "finite" (examples/bench/finite-hemisphere-bench.json): a hemisphere of
 #                               about 10k, 50k and 200k dofs on a 32^2 and a 64^2 grid, condensed program
@@ -47,6 +50,11 @@ if [[ "${1:-}" == "peer" ]]; then
   fi
   echo "== peer cases (threads: ${DYNCONTACT_THREADS:-all cores})"
   exec "$peer" "${opts[@]}" "${cases[@]}"
+fi
+if [[ "${1:-}" == "fft" ]]; then
+  shift
+  scripts/setup.sh
+  exec "$BUILD_DIR/bin/dyncontact_fft_bench" "$@"
 fi
 if [[ "${1:-}" == "finite" ]]; then
   shift
