@@ -309,16 +309,18 @@ struct TangentialProblem::Impl {
     best.report.operator_kind = sparse ? "sparse+" + sparse->halfspace->kind() : Ct->kind();
     bool have_result = false;
     std::string attempts;
-    const auto order = sparse ? sparse->backends(solver.backend, solver.fallback) : backend_order(solver.backend, native_first || native_first_always ? std::numeric_limits<std::size_t>::max() : n,
-                      solver.fallback);
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      const TimedOutcome run = run_backend(order[k], qp, options, solve_tangential_native);
+    // One backend on a program (the sparse form's or the condensed one), certified; `best` keeps
+    // the first certified result, else the best certificate.
+    const auto attempt = [&](const std::string& backend, const QuadraticProgram& program, bool fallback,
+                             const std::string& label) {
+      const TimedOutcome run = run_backend(backend, program, options, solve_tangential_native);
       const SolveOutcome& out = run.outcome;
       InnerResult trial;
       SolverReport& rep = trial.report;
       rep = best.report;
-      rep.backend = order[k];
-      rep.fallback_used = k > 0;
+      rep.operator_kind = program.block ? "sparse+" + sparse->halfspace->kind() : Ct->kind();
+      rep.backend = label;
+      rep.fallback_used = fallback;
       rep.message = out.message;
       rep.iterations = out.iterations;
       rep.polished = out.polished;
@@ -348,7 +350,7 @@ struct TangentialProblem::Impl {
           rep.message += " (backend reported success but the certificate " +
                          format_number(rep.certificate.worst()) + " exceeds the tolerance)";
       }
-      attempts += (attempts.empty() ? "" : "; ") + order[k] + ": " + to_string(rep.status);
+      attempts += (attempts.empty() ? "" : "; ") + label + ": " + to_string(rep.status);
       const bool better = !have_result || rep.status == SolveStatus::converged ||
                           (best.report.status == SolveStatus::failed && rep.status != SolveStatus::failed) ||
                           (rep.status == SolveStatus::not_converged &&
@@ -357,7 +359,25 @@ struct TangentialProblem::Impl {
         best = std::move(trial);
         have_result = true;
       }
+    };
+    const auto order = sparse ? sparse->backends(solver.backend, solver.fallback) : backend_order(solver.backend, native_first || native_first_always ? std::numeric_limits<std::size_t>::max() : n,
+                      solver.fallback);
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      attempt(order[k], qp, k > 0, order[k]);
       if (best.report.status == SolveStatus::converged) break;
+    }
+    // The sparse form failed with `auto`: the same program with the body's rows eliminated (Q the
+    // condensed compliance, no block), as for the normal problem (FiniteContact::solve_sparse).
+    if (sparse && sparse->condensed_fallback && best.report.status != SolveStatus::converged &&
+        solver.backend == "auto" && solver.fallback) {
+      ScaledOperator condensed_q(*Ct, 1.0 / ct0);
+      QuadraticProgram condensed = qp;
+      condensed.Q = &condensed_q;
+      condensed.block = nullptr;
+      for (const char* backend : {"native", "nlopt"}) {
+        attempt(backend, condensed, true, std::string(backend) + " (condensed program)");
+        if (best.report.status == SolveStatus::converged) break;
+      }
     }
     if (best.tau.empty()) best.tau.assign(n, 0.0);  // every backend failed: nothing to keep
     if (best.report.fallback_used || best.report.status != SolveStatus::converged)

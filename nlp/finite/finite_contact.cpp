@@ -186,6 +186,7 @@ void FiniteContact::use_sparse_tangential() {
   };
   form.backends = [](const std::string& requested, bool) { return saddle_backend_order(requested); };
   form.exact_hessian_limit = static_cast<int>(2 * kSaddleExactLimit);  // (tau_x, tau_y): two per element
+  form.condensed_fallback = body_->dofs() <= kSaddleFallbackDofs;
   tangential_->use_sparse_form(std::move(form));
 }
 

@@ -57,7 +57,9 @@ Eigen::VectorXd saddle_body_displacement(const fe::ElasticBody& body, const fe::
 /// 0.99 after 1000 evaluations on a 6 x 6 grid and the coarsest hemisphere).
 std::vector<std::string> saddle_backend_order(const std::string& requested);
 /// With backend "auto", a normal problem Ipopt fails on in the sparse form falls back to NLopt on
-/// the condensed program (FiniteContact::solve_normal) for bodies of at most this many dofs.
+/// the condensed program (FiniteContact::solve_normal), a tangential one to the native solver,
+/// then NLopt, on the condensed program (SparseTangentialForm::condensed_fallback), for bodies of
+/// at most this many dofs.
 inline constexpr std::size_t kSaddleFallbackDofs = 20000;
 
 struct SaddleNormalOutcome {
