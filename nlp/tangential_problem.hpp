@@ -38,7 +38,8 @@ struct OuterLoopReport {
   int iterations = 0;      ///< outer (p, tau) iterations
   double last_change = 0;  ///< relative change of (p, tau) in the last iteration
   /// kappa != 0: max |kappa B32 (tau - tau_in)| / (C_00 max p), the gap error the last
-  /// tangential update leaves in the normal problem (the loop stops below certificate_tol / 100)
+  /// tangential update leaves in the normal problem (the loop stops below certificate_tol / 10,
+  /// and the pressure's certificate is that of the final tau)
   double coupling_residual = 0;
   /// kappa != 0: the coupling residual of the first pass (how far the starting point was)
   double first_residual = 0;
@@ -141,6 +142,10 @@ class TangentialProblem {
   /// from the state extrapolated from its last two steps (nlp/proportional_predictor.hpp); on by
   /// default, off: from the last step's state. For comparisons and tests.
   void set_extrapolation(bool on);
+  /// The tangential program posed on the smallest window of the grid that holds f(p) > 0
+  /// (nlp/support_window.hpp; the same program, a smaller transform); on by default for the
+  /// half-space's own compliances. For comparisons and tests.
+  void set_windowing(bool on);
 
   /// One step of a moving contact ((3.8), dynamic problems): the rigid-slip increments of the
   /// step given (x, y (m), rotation about z (rad)), the previous relative displacement taken

@@ -10,6 +10,7 @@
 
 #include "anderson_mixing.hpp"
 #include "contact_closed_forms.hpp"
+#include "normal_problem.hpp"
 #include "proportional_predictor.hpp"
 #include "tangential_support.hpp"
 
@@ -66,7 +67,7 @@ TEST(OuterLoop, WarmStartedHistoryEqualsColdStartedSteps) {
     expect_certified(a);
     expect_certified(b);
     EXPECT_TRUE(a.outer.converged);
-    EXPECT_LE(a.outer.coupling_residual, 0.01 * solver.certificate_tol) << "step " << k;
+    EXPECT_LE(a.outer.coupling_residual, 0.1 * solver.certificate_tol) << "step " << k;
     warm_alternations += a.outer.iterations;
     cold_alternations += b.outer.iterations;
     expect_same_state(a, b, "step " + std::to_string(k));
@@ -101,7 +102,7 @@ TEST(OuterLoop, ProportionalHistoryStartsFromTheExtrapolatedState) {
     for (const TangentialSolution* s : {&a, &b, &c}) {
       expect_certified(*s);
       EXPECT_TRUE(s->outer.converged);
-      EXPECT_LE(s->outer.coupling_residual, 0.01 * solver.certificate_tol) << "step " << k;
+      EXPECT_LE(s->outer.coupling_residual, 0.1 * solver.certificate_tol) << "step " << k;
     }
     expect_same_state(a, c, "extrapolated, step " + std::to_string(k));
     expect_same_state(b, c, "from the last state, step " + std::to_string(k));
@@ -114,6 +115,34 @@ TEST(OuterLoop, ProportionalHistoryStartsFromTheExtrapolatedState) {
   std::printf("[ outer loop ] alternations over steps 3-%d: extrapolated %d, from the last state %d\n", steps,
               predicted_alternations, previous_alternations);
   EXPECT_LT(predicted_alternations, previous_alternations);
+}
+
+TEST(OuterLoop, PressureIsCertifiedWithTheFinalTraction) {
+  // The loop stops once the coupling residual is a tenth of certificate_tol; the pressure's
+  // certificate is then that of the gap (4.26) with the final traction, not of the one the
+  // pressure was solved with: recomputed here from the solution alone.
+  const Indentation in(0.0, 0.3);
+  TangentialProblem problem = in.problem();
+  TangentialLoad load;
+  load.modes = {test::resultant(0.0), test::resultant(0.0), amplitude(0.0)};
+  const SolverSpec solver = test::native_tangential_solver();
+  for (int k = 1; k <= 2; ++k) {
+    load.normal = {Control::force, Indentation::P_max * k / 2.0};
+    const TangentialSolution s = problem.step(load, solver);
+    expect_certified(s);
+    ASSERT_GT(s.outer.iterations, 1);
+    std::vector<double> tau(s.tx), shift;
+    tau.insert(tau.end(), s.ty.begin(), s.ty.end());
+    problem.normal_from_tangential()->apply(tau, shift);
+    std::vector<double> h = in.su.heights;
+    for (std::size_t i = 0; i < h.size(); ++i) h[i] += shift[i];
+    const NormalProblem normal(in.su.grid, in.m, h);
+    const Certificate c = normal.certify(s.normal.pressure, s.normal.approach, load.normal);
+    const double allowance = 1e-12 + 1e-3 * s.outer.coupling_residual;
+    EXPECT_NEAR(s.report.certificate.complementarity, c.complementarity, allowance) << "step " << k;
+    EXPECT_NEAR(s.report.certificate.gap_violation, c.gap_violation, allowance) << "step " << k;
+    EXPECT_LE(c.worst(), solver.certificate_tol) << "step " << k;
+  }
 }
 
 TEST(OuterLoop, ProportionalLoadsAreRecognised) {

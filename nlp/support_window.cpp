@@ -1,0 +1,71 @@
+#include "support_window.hpp"
+
+#include <algorithm>
+
+#include "influence.hpp"
+
+namespace dc {
+
+Grid SupportWindow::grid_of(const Grid& grid) const {
+  Grid g = grid;
+  g.nx = nx;
+  g.ny = ny;
+  g.x0 = grid.x0 + i0 * grid.dx;
+  if (grid.dimension != 2) g.y0 = grid.y0 + j0 * grid.dy;
+  return g;
+}
+
+namespace {
+
+/// [lo, hi] widened to a multiple of 8 elements within [0, n), centred on the range.
+std::pair<int, int> rounded_range(int lo, int hi, int n) {
+  const int width = std::min(n, (hi - lo + 1 + 7) / 8 * 8);
+  const int start = std::clamp(lo - (width - (hi - lo + 1)) / 2, 0, n - width);
+  return {start, width};
+}
+
+}  // namespace
+
+SupportWindow support_window(const Grid& grid, const std::vector<double>& f, double max_fraction) {
+  int ilo = grid.nx, ihi = -1, jlo = grid.ny, jhi = -1;
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i)
+      if (f[grid.index(i, j)] > 0.0) {
+        ilo = std::min(ilo, i);
+        ihi = std::max(ihi, i);
+        jlo = std::min(jlo, j);
+        jhi = std::max(jhi, j);
+      }
+  SupportWindow w;
+  if (ihi < 0) return w;
+  const auto [i0, nx] = rounded_range(ilo, ihi, grid.nx);
+  const auto [j0, ny] = rounded_range(jlo, jhi, grid.ny);
+  if (static_cast<double>(nx) * ny > max_fraction * static_cast<double>(grid.size())) return w;
+  w.i0 = i0;
+  w.j0 = j0;
+  w.nx = nx;
+  w.ny = ny;
+  return w;
+}
+
+WindowedCompliance::WindowedCompliance(const Grid& grid, const MaterialPair& materials, OperatorKind kind,
+                                       std::size_t capacity)
+    : grid_(grid), materials_(materials), kind_(kind), capacity_(std::max<std::size_t>(capacity, 1)) {}
+
+const LinearOperator& WindowedCompliance::tangential(const SupportWindow& window) {
+  const std::pair<int, int> key{window.nx, window.ny};
+  auto it = operators_.find(key);
+  if (it != operators_.end()) return *it->second;
+  if (operators_.size() >= capacity_) {
+    operators_.erase(order_.front());
+    order_.erase(order_.begin());
+  }
+  // The 2-D logarithmic kernels vanish at the whole grid's length, as on the grid itself.
+  InfluenceOptions options;
+  options.reference_length = grid_.nx * grid_.dx;
+  const HalfSpace half_space(window.grid_of(grid_), materials_, options);
+  order_.push_back(key);
+  return *(operators_[key] = half_space.tangential(kind_));
+}
+
+}  // namespace dc

@@ -1,0 +1,122 @@
+// The tangential program posed on a window of the grid that holds f(p) > 0: the window's
+// compliance is the grid's restricted to it (translation invariance), and a loading history
+// solved on windows reaches the states of the whole grid.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "support_window.hpp"
+#include "tangential_support.hpp"
+
+namespace dc {
+namespace {
+
+TEST(SupportWindow, HoldsTheSupportInARectangleOfWholeEighths) {
+  const Grid g = Grid::make(3, 60, 50, 0.0, 6.0, 0.0, 5.0);
+  std::vector<double> f(g.size(), 0.0);
+  EXPECT_EQ(support_window(g, f).nx, 0) << "no support, no window";
+  // Support: elements 7..19 along x, 45..49 along y (at the grid's edge).
+  for (int j = 45; j < 50; ++j)
+    for (int i = 7; i < 20; ++i) f[g.index(i, j)] = 1.0;
+  const SupportWindow w = support_window(g, f);
+  ASSERT_GT(w.nx, 0);
+  EXPECT_EQ(w.nx % 8, 0);
+  EXPECT_EQ(w.ny % 8, 0);
+  EXPECT_LE(w.i0, 7);
+  EXPECT_GE(w.i0 + w.nx, 20);
+  EXPECT_LE(w.j0, 45);
+  EXPECT_EQ(w.j0 + w.ny, 50) << "the window stays inside the grid";
+  EXPECT_GE(w.i0, 0);
+  std::size_t held = 0;
+  for (std::size_t l = 0; l < w.size(); ++l) held += f[w.global(g, l)] > 0.0;
+  EXPECT_EQ(held, 13u * 5u) << "every element of the support is in the window";
+  const Grid wg = w.grid_of(g);
+  EXPECT_DOUBLE_EQ(wg.xc(0), g.xc(w.i0));
+  EXPECT_DOUBLE_EQ(wg.yc(0), g.yc(w.j0));
+  // A support spread over most of the grid: no window.
+  f[g.index(59, 0)] = 1.0;
+  EXPECT_EQ(support_window(g, f).nx, 0);
+}
+
+/// The window's operator against the grid's, for a field supported in the window.
+void expect_restriction(const Grid& g, const MaterialPair& m, const SupportWindow& w) {
+  const HalfSpace hs(g, m);
+  const auto full = hs.tangential(OperatorKind::fft);
+  WindowedCompliance windows(g, m, OperatorKind::fft);
+  const LinearOperator& part = windows.tangential(w);
+  const int comps = g.dimension == 2 ? 1 : 2;
+  const std::size_t N = g.size(), Nw = w.size();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<double> xw(comps * Nw), x(comps * N, 0.0), yw, y;
+  for (std::size_t l = 0; l < Nw; ++l)
+    for (int c = 0; c < comps; ++c) x[c * N + w.global(g, l)] = xw[c * Nw + l] = u(rng);
+  part.apply(xw, yw);
+  full->apply(x, y);
+  double scale = 0.0, err = 0.0;
+  for (std::size_t l = 0; l < Nw; ++l)
+    for (int c = 0; c < comps; ++c) {
+      scale = std::max(scale, std::abs(y[c * N + w.global(g, l)]));
+      err = std::max(err, std::abs(yw[c * Nw + l] - y[c * N + w.global(g, l)]));
+    }
+  EXPECT_LE(err, 1e-12 * scale) << "dimension " << g.dimension;
+}
+
+TEST(SupportWindow, WindowCompliesAsTheGridRestrictedToIt) {
+  const MaterialPair m{Elastic::from_E_nu(2.1e11, 0.3), Elastic::from_E_nu(7e10, 0.2)};
+  expect_restriction(Grid::make(3, 40, 34, -2.0, 2.0, -1.0, 2.4), m, SupportWindow{5, 9, 16, 8});
+  // 2-D: the logarithmic kernels keep the whole grid's reference length.
+  expect_restriction(Grid::make(2, 70, 1, -3.5, 3.5, 0.0, 1.0), m, SupportWindow{30, 0, 24, 1});
+}
+
+/// a and b are the same state: pressure to 1e-8 of its peak, traction to 1e-7 of the largest bound.
+void expect_same_state(const TangentialSolution& a, const TangentialSolution& b, const std::string& where) {
+  double p_max = 0.0, f_max = 0.0;
+  for (std::size_t e = 0; e < b.normal.pressure.size(); ++e) {
+    p_max = std::max(p_max, b.normal.pressure[e]);
+    f_max = std::max(f_max, b.bound[e]);
+  }
+  for (std::size_t e = 0; e < b.normal.pressure.size(); ++e) {
+    EXPECT_NEAR(a.normal.pressure[e], b.normal.pressure[e], 1e-8 * p_max) << where << ", element " << e;
+    EXPECT_NEAR(a.tx[e], b.tx[e], 1e-7 * f_max) << where << ", element " << e;
+    EXPECT_NEAR(a.ty[e], b.ty[e], 1e-7 * f_max) << where << ", element " << e;
+  }
+  EXPECT_EQ(a.n_stick, b.n_stick) << where;
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(a.amplitudes[k], b.amplitudes[k], 1e-7 * std::max(1e-30, std::abs(b.amplitudes[k]))) << where;
+}
+
+TEST(SupportWindow, HistoryOnWindowsReachesTheStatesOfTheWholeGrid) {
+  // A rigid sphere pressed into an elastic body (kappa != 0) on a grid three times the final
+  // contact's width, loaded in three steps, then a tangential force (x and y) held by the rows:
+  // the programs on windows (smaller than the grid until the last steps) and on the grid agree.
+  const MaterialPair m{Elastic::make_rigid(), Elastic::from_E_nu(7e10, 0.1)};
+  ASSERT_NE(m.kappa(), 0.0);
+  const double P = 100.0, mu = 0.3;
+  const test::SphereSetup su = test::sphere_setup(48, 3.0, m, 0.01, P);
+  TangentialProblem windowed(su.grid, m, su.heights, FrictionLaw::coulomb(mu));
+  TangentialProblem whole(su.grid, m, su.heights, FrictionLaw::coulomb(mu));
+  whole.set_windowing(false);
+  const SolverSpec solver = test::native_tangential_solver();
+  TangentialLoad load;
+  load.modes = {test::resultant(0.0), test::resultant(0.0), test::amplitude(0.0)};
+  for (int k = 1; k <= 3; ++k) {
+    load.normal = {Control::force, P * k / 3.0};
+    const TangentialSolution a = windowed.step(load, solver), b = whole.step(load, solver);
+    test::expect_certified(a);
+    test::expect_certified(b);
+    expect_same_state(a, b, "indentation step " + std::to_string(k));
+  }
+  load.modes = {test::resultant(0.4 * mu * P), test::resultant(-0.2 * mu * P), test::resultant(0.0)};
+  const TangentialSolution a = windowed.step(load, solver), b = whole.step(load, solver);
+  test::expect_certified(a);
+  EXPECT_GT(a.n_slip, 0) << "a partial slip state";
+  expect_same_state(a, b, "tangential force");
+}
+
+}  // namespace
+}  // namespace dc
