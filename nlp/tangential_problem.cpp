@@ -371,7 +371,13 @@ struct TangentialProblem::Impl {
           // Stationarity: (Ct tau + W)/(ct0 f_ref) + alpha m/(ct0 f_ref) = lambda a, a = m A f_ref / S
           trial.increment[row_mode[r]] = -out.equality_multipliers[r] * A * f_ref * f_ref * ct0 / row_scale[r];
         // Our own certificate decides, as for the normal problem: `auto` falls back on it.
-        rep.certificate = step_certificate(trial.tau, slip_increment(W, trial.tau, trial.increment), f, modes);
+        // On a window the slip is computed there alone: tau = 0 and f = 0 outside, where the
+        // certificate does not look at the slip (certify_friction).
+        rep.certificate = step_certificate(
+            trial.tau,
+            ops ? windowed_slip_increment(W, trial.tau, window, *ops->compliance, trial.increment)
+                : slip_increment(W, trial.tau, trial.increment),
+            f, modes);
         const bool certified = rep.certificate.worst() <= solver.certificate_tol;
         rep.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
         if (!certified && out.success)
@@ -427,6 +433,27 @@ struct TangentialProblem::Impl {
         for (int k = 0; k < n_modes(); ++k) rigid += increment[k] * mode(k, e, c);
         ds[c * N + e] += W[c * N + e] + rigid;
       }
+    return ds;
+  }
+
+  /// The slip increment (3.8) of a traction that vanishes outside `window`, computed on the
+  /// window's elements; W + rigid outside (where f = 0, so tau = 0 and the slip is not certified).
+  std::vector<double> windowed_slip_increment(const std::vector<double>& W, const std::vector<double>& tau,
+                                              const SupportWindow& window, const LinearOperator& ct_window,
+                                              const std::array<double, 3>& increment) const {
+    const std::size_t Nw = window.size();
+    std::vector<double> ds(comps * N), tau_window(comps * Nw), ds_window;
+    for (std::size_t l = 0; l < Nw; ++l)
+      for (int c = 0; c < comps; ++c) tau_window[c * Nw + l] = tau[c * N + window.global(grid, l)];
+    ct_window.apply(tau_window, ds_window);
+    for (std::size_t e = 0; e < N; ++e)
+      for (int c = 0; c < comps; ++c) {
+        double rigid = 0.0;
+        for (int k = 0; k < n_modes(); ++k) rigid += increment[k] * mode(k, e, c);
+        ds[c * N + e] = W[c * N + e] + rigid;
+      }
+    for (std::size_t l = 0; l < Nw; ++l)
+      for (int c = 0; c < comps; ++c) ds[c * N + window.global(grid, l)] += ds_window[c * Nw + l];
     return ds;
   }
 
