@@ -108,7 +108,10 @@ class NativeTangential {
   // ---- face and its operators ---------------------------------------------------------------
   void build_face(const Vec& x, const Vec& w);
   void to_face(Vec& v) const;          ///< orthogonal projection onto the free directions
-  void precondition(Vec& v) const;     ///< v /= (1 + curvature) on slipping tangents
+  /// z = M^-1 v on the face: v / (1 + curvature) on slipping tangents, or with the program's preconditioner P (an
+  /// approximate Q^-1) z = F D^-1/2 P D^-1/2 v, F the face's projection, D = 1 + curvature:
+  /// symmetric positive definite on the face.
+  void face_precondition(const Vec& v, Vec& z) const;
   void add_curvature(const Vec& v, Vec& y) const;  ///< y += D v on slipping tangents
   /// Projected preconditioned residual rho = M^-1 r with A_F rho = 0 (r is updated: its range(A_F')
   /// part is removed).
@@ -165,6 +168,7 @@ class NativeTangential {
   std::vector<Vec> a_face_;               // equality rows projected on the face
   std::vector<Vec> a_face_minv_;          // M^-1 a_face_
   Vec minv_;                              // diagonal preconditioner: 1 / (1 + curvature)
+  mutable Vec pre_in_;                    // face_precondition's scaled input
   Eigen::MatrixXd gram_pinv_;             // (A_F M^-1 A_F')^+
   Vec u_last_;                            // z + A'nu of the last projection
   Vec work_u_, work_x_;                   // projection trial buffers
@@ -461,8 +465,18 @@ void NativeTangential::to_face(Vec& v) const {
   }
 }
 
-void NativeTangential::precondition(Vec& v) const {
-  for (std::size_t i = 0; i < n_; ++i) v[i] *= minv_[i];
+void NativeTangential::face_precondition(const Vec& v, Vec& z) const {
+  z.resize(n_);
+  if (!qp_.preconditioner) {
+    for (std::size_t i = 0; i < n_; ++i) z[i] = minv_[i] * v[i];
+    return;
+  }
+  pre_in_.resize(n_);
+  for (std::size_t i = 0; i < n_; ++i) pre_in_[i] = std::sqrt(minv_[i]) * v[i];
+  to_face(pre_in_);
+  qp_.preconditioner->apply(pre_in_.data(), z.data());
+  for (std::size_t i = 0; i < n_; ++i) z[i] *= std::sqrt(minv_[i]);
+  to_face(z);
 }
 
 void NativeTangential::add_curvature(const Vec& v, Vec& y) const {
@@ -491,8 +505,7 @@ void NativeTangential::null_space_precondition(Vec& r, Vec& rho) const {
       for (std::size_t i = 0; i < n_; ++i) r[i] -= ck * a[i];
     }
   }
-  rho.resize(n_);
-  for (std::size_t i = 0; i < n_; ++i) rho[i] = minv_[i] * r[i];
+  face_precondition(r, rho);
 }
 
 SolveOutcome NativeTangential::solve() {
@@ -588,10 +601,7 @@ SolveOutcome NativeTangential::solve() {
         Eigen::MatrixXd gram(m, m);
         a_face_minv_.resize(m_);
         auto& ma = a_face_minv_;
-        for (std::size_t k = 0; k < m_; ++k) {
-          ma[k] = a_face_[k];
-          precondition(ma[k]);
-        }
+        for (std::size_t k = 0; k < m_; ++k) face_precondition(a_face_[k], ma[k]);
         for (Eigen::Index k = 0; k < m; ++k)
           for (Eigen::Index l = 0; l < m; ++l)
             gram(k, l) = dot(a_face_[static_cast<std::size_t>(k)], ma[static_cast<std::size_t>(l)]);

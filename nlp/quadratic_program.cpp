@@ -14,6 +14,8 @@ std::string QuadraticProgram::invalid_reason() const {
   const auto size = c.size();
   if (Q == nullptr) return "no operator Q";
   if (Q->rows() != size || Q->cols() != size) return "Q does not match c in size";
+  if (preconditioner && (preconditioner->rows() != size || preconditioner->cols() != size))
+    return "the preconditioner does not match c in size";
   if ((!lower.empty() && lower.size() != size) || (!upper.empty() && upper.size() != size))
     return "bounds do not match c in size";
   for (const auto& eq : equalities)

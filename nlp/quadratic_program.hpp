@@ -35,6 +35,9 @@ struct QuadraticProgram {
   std::vector<double> x0;  ///< starting point (or empty: zeros projected on the bounds)
   /// Further unknowns kept as sparse rows (sparse_block.hpp): Ipopt only.
   const SparseBlock* block = nullptr;
+  /// An approximate inverse of Q (symmetric positive definite; e.g. core/tangential_preconditioner):
+  /// the native tangential solver's conjugate gradients use it on their face. Optional.
+  const LinearOperator* preconditioner = nullptr;
 
   int n() const { return static_cast<int>(c.size()); }
   /// Why the program is malformed (sizes, indices, missing operator), or empty when it is fine.

@@ -52,10 +52,10 @@ WindowedCompliance::WindowedCompliance(const Grid& grid, const MaterialPair& mat
                                        std::size_t capacity)
     : grid_(grid), materials_(materials), kind_(kind), capacity_(std::max<std::size_t>(capacity, 1)) {}
 
-const LinearOperator& WindowedCompliance::tangential(const SupportWindow& window) {
+const WindowOperators& WindowedCompliance::operators(const SupportWindow& window) {
   const std::pair<int, int> key{window.nx, window.ny};
   auto it = operators_.find(key);
-  if (it != operators_.end()) return *it->second;
+  if (it != operators_.end()) return it->second;
   if (operators_.size() >= capacity_) {
     operators_.erase(order_.front());
     order_.erase(order_.begin());
@@ -63,9 +63,13 @@ const LinearOperator& WindowedCompliance::tangential(const SupportWindow& window
   // The 2-D logarithmic kernels vanish at the whole grid's length, as on the grid itself.
   InfluenceOptions options;
   options.reference_length = grid_.nx * grid_.dx;
-  const HalfSpace half_space(window.grid_of(grid_), materials_, options);
+  const Grid grid = window.grid_of(grid_);
+  const HalfSpace half_space(grid, materials_, options);
+  WindowOperators ops;
+  ops.compliance = half_space.tangential(kind_);
+  ops.preconditioner = std::make_unique<TangentialPreconditioner>(*ops.compliance, grid);
   order_.push_back(key);
-  return *(operators_[key] = half_space.tangential(kind_));
+  return operators_[key] = std::move(ops);
 }
 
 }  // namespace dc

@@ -14,6 +14,7 @@
 #include "grid.hpp"
 #include "linear_operator.hpp"
 #include "material.hpp"
+#include "tangential_preconditioner.hpp"
 
 namespace dc {
 
@@ -33,21 +34,28 @@ struct SupportWindow {
 /// The smallest window that holds every element with f > 0, its sides rounded up to a multiple
 /// of 8 elements (so that a history reuses a few sizes) within the grid; empty (nx = 0) when it
 /// would cover more than `max_fraction` of the grid or the support is empty.
-SupportWindow support_window(const Grid& grid, const std::vector<double>& f, double max_fraction = 0.7);
+SupportWindow support_window(const Grid& grid, const std::vector<double>& f, double max_fraction = 0.9);
 
-/// The tangential compliance (B22) of windows of one grid and material pair, built once per
-/// window size and kept (at most `capacity` sizes; the oldest is dropped).
+/// A window's tangential compliance (B22) and its FFT preconditioner.
+struct WindowOperators {
+  std::unique_ptr<LinearOperator> compliance;
+  std::unique_ptr<TangentialPreconditioner> preconditioner;
+};
+
+/// The operators of windows of one grid and material pair, built once per window size and
+/// kept (at most `capacity` sizes; the oldest is dropped).
 class WindowedCompliance {
  public:
   WindowedCompliance(const Grid& grid, const MaterialPair& materials, OperatorKind kind, std::size_t capacity = 12);
-  const LinearOperator& tangential(const SupportWindow& window);
+  const WindowOperators& operators(const SupportWindow& window);
+  const LinearOperator& tangential(const SupportWindow& window) { return *operators(window).compliance; }
 
  private:
   Grid grid_;
   MaterialPair materials_;
   OperatorKind kind_;
   std::size_t capacity_;
-  std::map<std::pair<int, int>, std::unique_ptr<LinearOperator>> operators_;
+  std::map<std::pair<int, int>, WindowOperators> operators_;
   std::vector<std::pair<int, int>> order_;  ///< sizes in the order they were built
 };
 

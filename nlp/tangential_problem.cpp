@@ -76,6 +76,7 @@ struct TangentialProblem::Impl {
   bool extrapolate = true;                   // set_extrapolation()
   bool windowing = true;                     // set_windowing()
   std::optional<WindowedCompliance> windows;  // Ct on windows of the grid (half-space operators only)
+  std::unique_ptr<TangentialPreconditioner> Ct_preconditioner;  // grid_preconditioner()
   bool native_first = false;                 // auto while marching: native first at any size
   bool native_first_always = false;          // auto: native first for every solve (set_native_first)
   std::optional<SparseTangentialForm> sparse;  // a finite body's sparse saddle form (use_sparse_form)
@@ -201,6 +202,14 @@ struct TangentialProblem::Impl {
     bool shift_undetermined = false;    // frictionless: a resultant-controlled mode has no unique value
   };
 
+  /// The whole grid's tangential preconditioner (built on first use); none for given operators
+  /// (a finite body's compliance is not translation invariant) or the sparse form.
+  const TangentialPreconditioner* grid_preconditioner() {
+    if (!half_space || sparse) return nullptr;
+    if (!Ct_preconditioner) Ct_preconditioner = std::make_unique<TangentialPreconditioner>(*Ct, grid);
+    return Ct_preconditioner.get();
+  }
+
   /// The largest resultant of mode k that friction can carry: sum_e f_e |m_k(e)| A.
   double resultant_capacity(int k, const std::vector<double>& f) const {
     double capacity = 0.0;
@@ -263,9 +272,15 @@ struct TangentialProblem::Impl {
     if (windowed && !windows) windows.emplace(grid, materials, kind);
     const std::size_t Nw = windowed ? window.size() : N, nw = comps * Nw;
     const auto element = [&](std::size_t l) { return windowed ? window.global(grid, l) : l; };
-    ScaledOperator Q(windowed ? windows->tangential(window) : sparse ? *sparse->halfspace : *Ct, 1.0 / ct0);
+    const WindowOperators* ops = windowed ? &windows->operators(window) : nullptr;
+    ScaledOperator Q(ops ? *ops->compliance : sparse ? *sparse->halfspace : *Ct, 1.0 / ct0);
+    // The FFT preconditioner of the half-space's own compliance (Q^-1 = ct0 B22^-1).
+    const TangentialPreconditioner* preconditioner = ops ? ops->preconditioner.get() : grid_preconditioner();
+    std::optional<ScaledOperator> Q_inverse;
+    if (preconditioner) Q_inverse.emplace(*preconditioner, ct0);
     QuadraticProgram qp;
     qp.Q = &Q;
+    if (Q_inverse) qp.preconditioner = &*Q_inverse;
     qp.c.resize(nw);
     qp.lower.assign(nw, -kInf);
     qp.upper.assign(nw, kInf);
@@ -358,7 +373,13 @@ struct TangentialProblem::Impl {
           // Stationarity: (Ct tau + W)/(ct0 f_ref) + alpha m/(ct0 f_ref) = lambda a, a = m A f_ref / S
           trial.increment[row_mode[r]] = -out.equality_multipliers[r] * A * f_ref * f_ref * ct0 / row_scale[r];
         // Our own certificate decides, as for the normal problem: `auto` falls back on it.
-        rep.certificate = step_certificate(trial.tau, slip_increment(W, trial.tau, trial.increment), f, modes);
+        // On a window the slip is computed there alone: tau = 0 and f = 0 outside, where the
+        // certificate does not look at the slip (certify_friction).
+        rep.certificate = step_certificate(
+            trial.tau,
+            ops ? windowed_slip_increment(W, trial.tau, window, *ops->compliance, trial.increment)
+                : slip_increment(W, trial.tau, trial.increment),
+            f, modes);
         const bool certified = rep.certificate.worst() <= solver.certificate_tol;
         rep.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
         if (!certified && out.success)
@@ -432,6 +453,27 @@ struct TangentialProblem::Impl {
         for (int k = 0; k < n_modes(); ++k) rigid += increment[k] * mode(k, e, c);
         ds[c * N + e] += W[c * N + e] + rigid;
       }
+    return ds;
+  }
+
+  /// The slip increment (3.8) of a traction that vanishes outside `window`, computed on the
+  /// window's elements; W + rigid outside (where f = 0, so tau = 0 and the slip is not certified).
+  std::vector<double> windowed_slip_increment(const std::vector<double>& W, const std::vector<double>& tau,
+                                              const SupportWindow& window, const LinearOperator& ct_window,
+                                              const std::array<double, 3>& increment) const {
+    const std::size_t Nw = window.size();
+    std::vector<double> ds(comps * N), tau_window(comps * Nw), ds_window;
+    for (std::size_t l = 0; l < Nw; ++l)
+      for (int c = 0; c < comps; ++c) tau_window[c * Nw + l] = tau[c * N + window.global(grid, l)];
+    ct_window.apply(tau_window, ds_window);
+    for (std::size_t e = 0; e < N; ++e)
+      for (int c = 0; c < comps; ++c) {
+        double rigid = 0.0;
+        for (int k = 0; k < n_modes(); ++k) rigid += increment[k] * mode(k, e, c);
+        ds[c * N + e] = W[c * N + e] + rigid;
+      }
+    for (std::size_t l = 0; l < Nw; ++l)
+      for (int c = 0; c < comps; ++c) ds[c * N + window.global(grid, l)] += ds_window[c * Nw + l];
     return ds;
   }
 

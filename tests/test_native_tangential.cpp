@@ -20,6 +20,7 @@
 #include "linear_operator.hpp"
 #include "material.hpp"
 #include "quadratic_program.hpp"
+#include "tangential_preconditioner.hpp"
 #include "tangential_problem.hpp"
 
 namespace dc {
@@ -515,6 +516,25 @@ TEST(NativeTangential, ExtremeLoadsConverge) {
     const SolveOutcome out = solve_tangential_native(p.qp, SolveOptions{});
     EXPECT_TRUE(out.success) << out.message;
     EXPECT_LT(kkt_violation(p.qp, out.x, out.equality_multipliers), 1e-8);
+  }
+}
+
+TEST(NativeTangential, FftPreconditionerReachesTheSameSolutionInFewerApplies) {
+  // The program's preconditioner (core/tangential_preconditioner) on the CG face: the same
+  // solution (KKT conditions, the unpreconditioned answer), fewer operator applies.
+  for (auto control : {CattaneoProblem::Control::shift, CattaneoProblem::Control::force_xy_moment}) {
+    CattaneoProblem p(64, OperatorKind::fft, control);
+    const SolveOutcome plain = solve_tangential_native(p.qp, SolveOptions{});
+    const TangentialPreconditioner preconditioner(*p.op, p.grid);
+    p.qp.preconditioner = &preconditioner;
+    const SolveOutcome out = solve_tangential_native(p.qp, SolveOptions{});
+    std::printf("[ 64x64 preconditioned ] %d applies against %d\n", out.iterations, plain.iterations);
+    ASSERT_TRUE(plain.success) << plain.message;
+    ASSERT_TRUE(out.success) << out.message;
+    EXPECT_LT(kkt_violation(p.qp, out.x, out.equality_multipliers), 1e-8);
+    EXPECT_LT(row_residual(p.qp, out.x), 1e-8);
+    EXPECT_LT(max_abs_diff(out.x, plain.x), 1e-6 * max_abs(plain.x));
+    EXPECT_LT(out.iterations, 0.8 * plain.iterations) << out.message;  // measured: 63 against 87, 39 against 70
   }
 }
 

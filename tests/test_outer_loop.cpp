@@ -19,22 +19,7 @@ namespace {
 
 using test::amplitude;
 using test::expect_certified;
-
-/// a reaches b's state: the same pressure (1e-6 of its peak), traction (1e-5 of the largest
-/// friction bound) and stick set.
-void expect_same_state(const TangentialSolution& a, const TangentialSolution& b, const std::string& where) {
-  double p_max = 0.0, f_max = 0.0;
-  for (std::size_t e = 0; e < b.normal.pressure.size(); ++e) {
-    p_max = std::max(p_max, b.normal.pressure[e]);
-    f_max = std::max(f_max, b.bound[e]);
-  }
-  for (std::size_t e = 0; e < b.normal.pressure.size(); ++e) {
-    EXPECT_NEAR(a.normal.pressure[e], b.normal.pressure[e], 1e-6 * p_max) << where << ", element " << e;
-    EXPECT_NEAR(a.tx[e], b.tx[e], 1e-5 * f_max) << where << ", element " << e;
-    EXPECT_NEAR(a.ty[e], b.ty[e], 1e-5 * f_max) << where << ", element " << e;
-  }
-  EXPECT_EQ(a.n_stick, b.n_stick) << where;
-}
+using test::expect_same_state;
 
 /// Spence-like indentation: a rigid sphere (R = 10 mm) pressed into an elastic body
 /// (E = 70 GPa, Poisson's ratio nu: kappa != 0) up to P_max = 100 N, Coulomb friction mu, 24^2.

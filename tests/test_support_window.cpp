@@ -73,23 +73,6 @@ TEST(SupportWindow, WindowCompliesAsTheGridRestrictedToIt) {
   expect_restriction(Grid::make(2, 70, 1, -3.5, 3.5, 0.0, 1.0), m, SupportWindow{30, 0, 24, 1});
 }
 
-/// a and b are the same state: pressure to 1e-8 of its peak, traction to 1e-7 of the largest bound.
-void expect_same_state(const TangentialSolution& a, const TangentialSolution& b, const std::string& where) {
-  double p_max = 0.0, f_max = 0.0;
-  for (std::size_t e = 0; e < b.normal.pressure.size(); ++e) {
-    p_max = std::max(p_max, b.normal.pressure[e]);
-    f_max = std::max(f_max, b.bound[e]);
-  }
-  for (std::size_t e = 0; e < b.normal.pressure.size(); ++e) {
-    EXPECT_NEAR(a.normal.pressure[e], b.normal.pressure[e], 1e-8 * p_max) << where << ", element " << e;
-    EXPECT_NEAR(a.tx[e], b.tx[e], 1e-7 * f_max) << where << ", element " << e;
-    EXPECT_NEAR(a.ty[e], b.ty[e], 1e-7 * f_max) << where << ", element " << e;
-  }
-  EXPECT_EQ(a.n_stick, b.n_stick) << where;
-  for (int k = 0; k < 3; ++k)
-    EXPECT_NEAR(a.amplitudes[k], b.amplitudes[k], 1e-7 * std::max(1e-30, std::abs(b.amplitudes[k]))) << where;
-}
-
 TEST(SupportWindow, HistoryOnWindowsReachesTheStatesOfTheWholeGrid) {
   // A rigid sphere pressed into an elastic body (kappa != 0) on a grid three times the final
   // contact's width, loaded in three steps, then a tangential force (x and y) held by the rows:
@@ -109,13 +92,14 @@ TEST(SupportWindow, HistoryOnWindowsReachesTheStatesOfTheWholeGrid) {
     const TangentialSolution a = windowed.step(load, solver), b = whole.step(load, solver);
     test::expect_certified(a);
     test::expect_certified(b);
-    expect_same_state(a, b, "indentation step " + std::to_string(k));
+    test::expect_same_state(a, b, "indentation step " + std::to_string(k));
   }
   load.modes = {test::resultant(0.4 * mu * P), test::resultant(-0.2 * mu * P), test::resultant(0.0)};
   const TangentialSolution a = windowed.step(load, solver), b = whole.step(load, solver);
   test::expect_certified(a);
   EXPECT_GT(a.n_slip, 0) << "a partial slip state";
-  expect_same_state(a, b, "tangential force");
+  test::expect_same_state(a, b, "tangential force");
+  for (int k = 0; k < 2; ++k) EXPECT_NEAR(a.amplitudes[k], b.amplitudes[k], 1e-5 * std::abs(b.amplitudes[k])) << "shift " << k;
 }
 
 }  // namespace

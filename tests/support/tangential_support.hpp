@@ -3,6 +3,8 @@
 // controls, and the certificate check of a converged step.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
 #include <vector>
 
 #include "hertz.hpp"
@@ -23,6 +25,23 @@ inline void expect_certified(const TangentialSolution& s) {
   EXPECT_EQ(s.report.status, SolveStatus::converged) << s.report.message;
   EXPECT_LT(s.report.certificate.friction_law, 1e-6);
   EXPECT_LT(s.report.certificate.gap_function, 1e-5);
+}
+
+/// a reaches b's state: the same pressure (1e-6 of its peak), traction (1e-5 of the largest
+/// friction bound) and stick set: what two solves of one step agree to when their paths differ
+/// (the kappa != 0 loop stops at a coupling residual of certificate_tol / 10).
+inline void expect_same_state(const TangentialSolution& a, const TangentialSolution& b, const std::string& where) {
+  double p_max = 0.0, f_max = 0.0;
+  for (std::size_t e = 0; e < b.normal.pressure.size(); ++e) {
+    p_max = std::max(p_max, b.normal.pressure[e]);
+    f_max = std::max(f_max, b.bound[e]);
+  }
+  for (std::size_t e = 0; e < b.normal.pressure.size(); ++e) {
+    EXPECT_NEAR(a.normal.pressure[e], b.normal.pressure[e], 1e-6 * p_max) << where << ", element " << e;
+    EXPECT_NEAR(a.tx[e], b.tx[e], 1e-5 * f_max) << where << ", element " << e;
+    EXPECT_NEAR(a.ty[e], b.ty[e], 1e-5 * f_max) << where << ", element " << e;
+  }
+  EXPECT_EQ(a.n_stick, b.n_stick) << where;
 }
 
 inline MaterialPair steel_on_steel() { return {Elastic::from_E_nu(2.1e11, 0.3), Elastic::from_E_nu(2.1e11, 0.3)}; }
