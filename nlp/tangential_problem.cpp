@@ -339,19 +339,21 @@ struct TangentialProblem::Impl {
     best.report.operator_kind = sparse ? "sparse+" + sparse->halfspace->kind() : Ct->kind();
     bool have_result = false;
     std::string attempts;
-    const auto order = sparse ? sparse->backends(solver.backend, solver.fallback) : backend_order(solver.backend, native_first || native_first_always ? std::numeric_limits<std::size_t>::max() : n,
-                      solver.fallback);
-    for (std::size_t k = 0; k < order.size(); ++k) {
+    // One backend on a program (the sparse form's or the condensed one), certified; `best` keeps
+    // the first certified result, else the best certificate.
+    const auto attempt = [&](const std::string& backend, const QuadraticProgram& program, bool fallback,
+                             const std::string& label) {
       const TimedOutcome run =
-          run_backend(order[k], qp, options, [this](const QuadraticProgram& q, const SolveOptions& o) {
+          run_backend(backend, program, options, [this](const QuadraticProgram& q, const SolveOptions& o) {
             return solve_tangential_native(q, o, native_work);
           });
       const SolveOutcome& out = run.outcome;
       InnerResult trial;
       SolverReport& rep = trial.report;
       rep = best.report;
-      rep.backend = order[k];
-      rep.fallback_used = k > 0;
+      rep.operator_kind = program.block ? "sparse+" + sparse->halfspace->kind() : Ct->kind();
+      rep.backend = label;
+      rep.fallback_used = fallback;
       rep.message = out.message;
       rep.iterations = out.iterations;
       rep.polished = out.polished;
@@ -375,14 +377,20 @@ struct TangentialProblem::Impl {
           // Stationarity: (Ct tau + W)/(ct0 f_ref) + alpha m/(ct0 f_ref) = lambda a, a = m A f_ref / S
           trial.increment[row_mode[r]] = -out.equality_multipliers[r] * A * f_ref * f_ref * ct0 / row_scale[r];
         // Our own certificate decides, as for the normal problem: `auto` falls back on it.
-        rep.certificate = step_certificate(trial.tau, slip_increment(W, trial.tau, trial.increment), f, modes);
+        // On a window the slip is computed there alone: tau = 0 and f = 0 outside, where the
+        // certificate does not look at the slip (certify_friction).
+        rep.certificate = step_certificate(
+            trial.tau,
+            ops ? windowed_slip_increment(W, trial.tau, window, *ops->compliance, trial.increment)
+                : slip_increment(W, trial.tau, trial.increment),
+            f, modes);
         const bool certified = rep.certificate.worst() <= solver.certificate_tol;
         rep.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
         if (!certified && out.success)
           rep.message += " (backend reported success but the certificate " +
                          format_number(rep.certificate.worst()) + " exceeds the tolerance)";
       }
-      attempts += (attempts.empty() ? "" : "; ") + order[k] + ": " + to_string(rep.status);
+      attempts += (attempts.empty() ? "" : "; ") + label + ": " + to_string(rep.status);
       const bool better = !have_result || rep.status == SolveStatus::converged ||
                           (best.report.status == SolveStatus::failed && rep.status != SolveStatus::failed) ||
                           (rep.status == SolveStatus::not_converged &&
@@ -391,7 +399,25 @@ struct TangentialProblem::Impl {
         best = std::move(trial);
         have_result = true;
       }
+    };
+    const auto order = sparse ? sparse->backends(solver.backend, solver.fallback) : backend_order(solver.backend, native_first || native_first_always ? std::numeric_limits<std::size_t>::max() : n,
+                      solver.fallback);
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      attempt(order[k], qp, k > 0, order[k]);
       if (best.report.status == SolveStatus::converged) break;
+    }
+    // The sparse form failed with `auto`: the same program with the body's rows eliminated (Q the
+    // condensed compliance, no block), as for the normal problem (FiniteContact::solve_sparse).
+    if (sparse && sparse->condensed_fallback && best.report.status != SolveStatus::converged &&
+        solver.backend == "auto" && solver.fallback) {
+      ScaledOperator condensed_q(*Ct, 1.0 / ct0);
+      QuadraticProgram condensed = qp;
+      condensed.Q = &condensed_q;
+      condensed.block = nullptr;
+      for (const char* backend : {"native", "nlopt"}) {
+        attempt(backend, condensed, true, std::string(backend) + " (condensed program)");
+        if (best.report.status == SolveStatus::converged) break;
+      }
     }
     if (best.tau.empty()) best.tau.assign(n, 0.0);  // every backend failed: nothing to keep
     if (best.report.fallback_used || best.report.status != SolveStatus::converged)
@@ -431,6 +457,27 @@ struct TangentialProblem::Impl {
         for (int k = 0; k < n_modes(); ++k) rigid += increment[k] * mode(k, e, c);
         ds[c * N + e] += W[c * N + e] + rigid;
       }
+    return ds;
+  }
+
+  /// The slip increment (3.8) of a traction that vanishes outside `window`, computed on the
+  /// window's elements; W + rigid outside (where f = 0, so tau = 0 and the slip is not certified).
+  std::vector<double> windowed_slip_increment(const std::vector<double>& W, const std::vector<double>& tau,
+                                              const SupportWindow& window, const LinearOperator& ct_window,
+                                              const std::array<double, 3>& increment) const {
+    const std::size_t Nw = window.size();
+    std::vector<double> ds(comps * N), tau_window(comps * Nw), ds_window;
+    for (std::size_t l = 0; l < Nw; ++l)
+      for (int c = 0; c < comps; ++c) tau_window[c * Nw + l] = tau[c * N + window.global(grid, l)];
+    ct_window.apply(tau_window, ds_window);
+    for (std::size_t e = 0; e < N; ++e)
+      for (int c = 0; c < comps; ++c) {
+        double rigid = 0.0;
+        for (int k = 0; k < n_modes(); ++k) rigid += increment[k] * mode(k, e, c);
+        ds[c * N + e] = W[c * N + e] + rigid;
+      }
+    for (std::size_t l = 0; l < Nw; ++l)
+      for (int c = 0; c < comps; ++c) ds[c * N + window.global(grid, l)] += ds_window[c * Nw + l];
     return ds;
   }
 

@@ -89,6 +89,10 @@ struct SparseTangentialForm {
   /// The backends to try, in order, for a requested one.
   std::function<std::vector<std::string>(const std::string& requested, bool fallback)> backends;
   int exact_hessian_limit = 0;  ///< Ipopt: the exact Hessian up to this many tractions
+  /// With backend `auto`, a step the backends above fail on is solved on the condensed program
+  /// (the given compliances, the body's rows eliminated) by the native solver, then NLopt,
+  /// reported as "native (condensed program)" or "nlopt (condensed program)" with fallback_used.
+  bool condensed_fallback = false;
 };
 
 /// Set up once (operators, plans), then step: the state (previous relative displacement)

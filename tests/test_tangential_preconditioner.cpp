@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -14,9 +15,7 @@ namespace dc {
 namespace {
 
 double dot(const std::vector<double>& a, const std::vector<double>& b) {
-  double s = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
-  return s;
+  return std::inner_product(a.begin(), a.end(), b.begin(), 0.0);
 }
 
 void expect_symmetric_positive(const Grid& g, const MaterialPair& m) {

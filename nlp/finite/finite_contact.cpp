@@ -105,7 +105,7 @@ NormalSolution FiniteContact::solve_sparse_by(const std::string& backend, const 
                                               const NormalSpec& control, const SolverSpec& solver,
                                               const ProgressCallback& progress, Eigen::VectorXd& body_displacement) {
   const auto start = std::chrono::steady_clock::now();
-  const SaddleNormalOutcome o = solve_saddle_normal(*body_, *face_, *halfspace_normal_, grid_, h, control,
+  const SaddleNormalOutcome o = solve_saddle_normal(*body_, stress_rows(), *face_, *halfspace_normal_, grid_, h, control,
                                                     solve_options(solver, progress), backend);
   NormalSolution sol;
   sol.report.requested = solver.backend;
@@ -155,6 +155,11 @@ NormalSolution FiniteContact::solve_sparse_by(const std::string& backend, const 
   return sol;
 }
 
+const fe::StressEquilibrium& FiniteContact::stress_rows() {
+  if (!stresses_) stresses_ = std::make_unique<fe::StressEquilibrium>(fe::stress_equilibrium(*body_));
+  return *stresses_;
+}
+
 std::vector<double> FiniteContact::profile_heights() const {
   return tilted_heights(face_->heights(), grid_, tilt_[0], tilt_[1]);
 }
@@ -173,7 +178,7 @@ void FiniteContact::use_sparse_tangential() {
   SparseTangentialForm form;
   form.halfspace = halfspace_tangential_;
   form.body_rows = [this](double traction_unit, double energy_unit, double force_scale) {
-    return saddle_body_block(*body_, *face_, grid_, {0, 1}, traction_unit, energy_unit, force_scale).block;
+    return saddle_body_block(*body_, stress_rows(), *face_, grid_, {0, 1}, traction_unit, energy_unit, force_scale).block;
   };
   form.normal = [this](const std::vector<double>& h, const NormalSpec& load, const SolverSpec& solver) {
     Eigen::VectorXd u;
@@ -181,6 +186,7 @@ void FiniteContact::use_sparse_tangential() {
   };
   form.backends = [](const std::string& requested, bool) { return saddle_backend_order(requested); };
   form.exact_hessian_limit = static_cast<int>(2 * kSaddleExactLimit);  // (tau_x, tau_y): two per element
+  form.condensed_fallback = body_->dofs() <= kSaddleFallbackDofs;
   tangential_->use_sparse_form(std::move(form));
 }
 

@@ -14,6 +14,7 @@
 #include "elastic_body.hpp"
 #include "friction_law.hpp"
 #include "normal_problem.hpp"
+#include "stress_equilibrium.hpp"
 #include "tangential_problem.hpp"
 
 namespace dc {
@@ -71,6 +72,11 @@ class FiniteContact {
   std::shared_ptr<const LinearOperator> halfspace_normal_;
   std::optional<std::array<double, 2>> load_line_;
   std::array<double, 2> tilt_{0.0, 0.0};
+  std::unique_ptr<fe::StressEquilibrium> stresses_;  ///< the sparse form's rows, built on first use
+
+  /// The body's equilibrium in its stresses (stress_equilibrium.hpp) for the sparse form: set up
+  /// once per body, kept for every sparse solve (histories, time steps).
+  const fe::StressEquilibrium& stress_rows();
 
   /// The face's heights tilted by the given tilt.
   std::vector<double> profile_heights() const;

@@ -6,15 +6,13 @@
 #include "backend_choice.hpp"
 #include "errors.hpp"
 #include "scaled_operator.hpp"
-#include "stress_equilibrium.hpp"
 
 namespace dc {
 
-SaddleBody saddle_body_block(const fe::ElasticBody& body, const fe::ContactFace& face, const Grid& grid,
-                             const std::vector<int>& components, double traction_unit, double energy_unit,
+SaddleBody saddle_body_block(const fe::ElasticBody& body, const fe::StressEquilibrium& stresses,
+                             const fe::ContactFace& face, const Grid& grid, const std::vector<int>& components, double traction_unit, double energy_unit,
                              double force_scale) {
   const Eigen::Index N = static_cast<Eigen::Index>(grid.size()), n = static_cast<Eigen::Index>(body.dofs());
-  const fe::StressEquilibrium stresses = fe::stress_equilibrium(body);
   const Eigen::Index ns = static_cast<Eigen::Index>(stresses.stresses());
   const Eigen::Index n_x = static_cast<Eigen::Index>(components.size()) * N, col_s = n_x, col_a = n_x + ns;
   const double area = grid.area(), force_unit = traction_unit * area;
@@ -103,7 +101,8 @@ std::vector<std::string> saddle_backend_order(const std::string& requested) {
                                      "'auto', or the condensed program for '" + requested + "'");
 }
 
-SaddleNormalOutcome solve_saddle_normal(const fe::ElasticBody& body, const fe::ContactFace& face,
+SaddleNormalOutcome solve_saddle_normal(const fe::ElasticBody& body, const fe::StressEquilibrium& stresses,
+                                        const fe::ContactFace& face,
                                         const LinearOperator& halfspace, const Grid& grid,
                                         const std::vector<double>& heights, const NormalSpec& control,
                                         SolveOptions options, const std::string& backend) {
@@ -119,7 +118,7 @@ SaddleNormalOutcome solve_saddle_normal(const fe::ElasticBody& body, const fe::C
   const double energy = area * c0 * p_ref * p_ref;
   const double delta = control.control == Control::approach ? control.value : 0.0;
   const ScaledOperator Q(halfspace, 1.0 / c0);
-  const SaddleBody rows = saddle_body_block(body, face, grid, {2}, p_ref, energy, p_ref * area * n_ref);
+  const SaddleBody rows = saddle_body_block(body, stresses, face, grid, {2}, p_ref, energy, p_ref * area * n_ref);
   QuadraticProgram qp;
   qp.Q = &Q;
   qp.block = &rows.block;

@@ -30,19 +30,21 @@
 #include "linear_operator.hpp"
 #include "quadratic_program.hpp"
 #include "sparse_block.hpp"
+#include "stress_equilibrium.hpp"
 
 namespace dc {
 
 /// The body's rows for a program over tractions x (component components[c] of grid element k
 /// at column c N + k) in units of `traction_unit` (Pa) and an objective in units of
 /// `energy_unit` (Pa m: the compliances' t'C t): y = (s / s_unit, scaled a), every row of
-/// order one when `force_scale` (N) is the order of the resultant.
+/// order one when `force_scale` (N) is the order of the resultant. `stresses` is the body's
+/// stress_equilibrium (set up once per body and kept: about 1.4 M nonzeros for 2k elements).
 struct SaddleBody {
   SparseBlock block;
   double s_unit = 1.0;  ///< weighted stress (Pa m^3/2) per unit of y's s part
 };
-SaddleBody saddle_body_block(const fe::ElasticBody& body, const fe::ContactFace& face, const Grid& grid,
-                             const std::vector<int>& components, double traction_unit, double energy_unit,
+SaddleBody saddle_body_block(const fe::ElasticBody& body, const fe::StressEquilibrium& stresses,
+                             const fe::ContactFace& face, const Grid& grid, const std::vector<int>& components, double traction_unit, double energy_unit,
                              double force_scale);
 /// The body's displacement relative to its mean rigid motion (R'M u = 0) under the tractions
 /// (Pa, grid elements) along `component` (0, 1, 2), from the kept factor.
@@ -55,7 +57,9 @@ Eigen::VectorXd saddle_body_displacement(const fe::ElasticBody& body, const fe::
 /// 0.99 after 1000 evaluations on a 6 x 6 grid and the coarsest hemisphere).
 std::vector<std::string> saddle_backend_order(const std::string& requested);
 /// With backend "auto", a normal problem Ipopt fails on in the sparse form falls back to NLopt on
-/// the condensed program (FiniteContact::solve_normal) for bodies of at most this many dofs.
+/// the condensed program (FiniteContact::solve_normal), a tangential one to the native solver,
+/// then NLopt, on the condensed program (SparseTangentialForm::condensed_fallback), for bodies of
+/// at most this many dofs.
 inline constexpr std::size_t kSaddleFallbackDofs = 20000;
 
 struct SaddleNormalOutcome {
@@ -72,7 +76,8 @@ struct SaddleNormalOutcome {
 /// The normal problem by one backend (ipopt). Grid elements whose `heights` are
 /// infinite cannot touch (p held at 0). `options.hessian`: exact, limited-memory or auto (exact
 /// while the dense half-space block has at most kSaddleExactLimit rows).
-SaddleNormalOutcome solve_saddle_normal(const fe::ElasticBody& body, const fe::ContactFace& face,
+SaddleNormalOutcome solve_saddle_normal(const fe::ElasticBody& body, const fe::StressEquilibrium& stresses,
+                                        const fe::ContactFace& face,
                                         const LinearOperator& halfspace, const Grid& grid,
                                         const std::vector<double>& heights, const NormalSpec& control,
                                         SolveOptions options, const std::string& backend);

@@ -69,5 +69,19 @@ TEST(FiniteSparseTangential, NormalProblemFallsBackToNloptOnTheCondensedProgram)
   EXPECT_GT(s.max_body_displacement, 0.0);
 }
 
+TEST(FiniteSparseTangential, TangentialProblemFallsBackToTheCondensedProgram) {
+  // Ipopt made to fail on the sparse form: "auto" hands the normal problem to NLopt and the
+  // tangential program, the body's rows eliminated, to the native solver on the condensed
+  // program; both reach the condensed program's certified point.
+  setenv("DYNCONTACT_FAULT", "ipopt:fail", 1);
+  const fe::testing::Pair r = solve_both(shift_by_force(0.6), 8, kSmall, "auto");
+  unsetenv("DYNCONTACT_FAULT");
+  expect_same_point(r);
+  EXPECT_TRUE(r.sparse.report.fallback_used);
+  EXPECT_EQ(r.sparse.report.backend, "native (condensed program)") << r.sparse.report.message;
+  EXPECT_NE(r.sparse.report.message.find("ipopt: failed"), std::string::npos) << r.sparse.report.message;
+  EXPECT_EQ(r.sparse.normal.report.backend, "nlopt (condensed program)");
+}
+
 }  // namespace
 }  // namespace dc
