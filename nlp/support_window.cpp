@@ -17,9 +17,11 @@ Grid SupportWindow::grid_of(const Grid& grid) const {
 
 namespace {
 
-/// [lo, hi] widened to a multiple of 8 elements within [0, n), centred on the range.
+/// [lo, hi] widened to a whole number of steps within [0, n), centred on the range; the step
+/// is 8 elements, or a sixteenth of n on large grids (at most 16 sizes per axis).
 std::pair<int, int> rounded_range(int lo, int hi, int n) {
-  const int width = std::min(n, (hi - lo + 1 + 7) / 8 * 8);
+  const int step = std::max(8, (n / 16 + 7) / 8 * 8);
+  const int width = std::min(n, (hi - lo + step) / step * step);
   const int start = std::clamp(lo - (width - (hi - lo + 1)) / 2, 0, n - width);
   return {start, width};
 }
@@ -52,11 +54,20 @@ WindowedCompliance::WindowedCompliance(const Grid& grid, const MaterialPair& mat
                                        std::size_t capacity)
     : grid_(grid), materials_(materials), kind_(kind), capacity_(std::max<std::size_t>(capacity, 1)) {}
 
+std::size_t WindowedCompliance::elements_kept() const {
+  std::size_t kept = 0;
+  for (const auto& size : order_) kept += static_cast<std::size_t>(size.first) * size.second;
+  return kept;
+}
+
 const WindowOperators& WindowedCompliance::operators(const SupportWindow& window) {
   const std::pair<int, int> key{window.nx, window.ny};
   auto it = operators_.find(key);
   if (it != operators_.end()) return it->second;
-  if (operators_.size() >= capacity_) {
+  // Room for the new size: the oldest are dropped while more than `capacity` sizes, or windows
+  // of more than three grids' elements in all, would be kept.
+  const std::size_t added = static_cast<std::size_t>(key.first) * key.second;
+  while (!order_.empty() && (order_.size() >= capacity_ || elements_kept() + added > 3 * grid_.size())) {
     operators_.erase(order_.front());
     order_.erase(order_.begin());
   }

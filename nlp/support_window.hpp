@@ -32,8 +32,9 @@ struct SupportWindow {
 };
 
 /// The smallest window that holds every element with f > 0, its sides rounded up to a multiple
-/// of 8 elements (so that a history reuses a few sizes) within the grid; empty (nx = 0) when it
-/// would cover more than `max_fraction` of the grid or the support is empty.
+/// of 8 elements, or of a sixteenth of the grid's side on large grids (so that a history reuses
+/// a few sizes), within the grid; empty (nx = 0) when it would cover more than `max_fraction`
+/// of the grid or the support is empty.
 SupportWindow support_window(const Grid& grid, const std::vector<double>& f, double max_fraction = 0.9);
 
 /// A window's tangential compliance (B22) and its FFT preconditioner.
@@ -43,12 +44,14 @@ struct WindowOperators {
 };
 
 /// The operators of windows of one grid and material pair, built once per window size and
-/// kept (at most `capacity` sizes; the oldest is dropped).
+/// kept (at most `capacity` sizes and three grids' elements in all; the oldest are dropped).
 class WindowedCompliance {
  public:
   WindowedCompliance(const Grid& grid, const MaterialPair& materials, OperatorKind kind, std::size_t capacity = 12);
   const WindowOperators& operators(const SupportWindow& window);
   const LinearOperator& tangential(const SupportWindow& window) { return *operators(window).compliance; }
+  /// Elements of the windows whose operators are kept (all sizes together).
+  std::size_t elements_kept() const;
 
  private:
   Grid grid_;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "support_window.hpp"
@@ -15,7 +16,7 @@
 namespace dc {
 namespace {
 
-TEST(SupportWindow, HoldsTheSupportInARectangleOfWholeEighths) {
+TEST(SupportWindow, HoldsTheSupportInARectangleOfMultiplesOf8) {
   const Grid g = Grid::make(3, 60, 50, 0.0, 6.0, 0.0, 5.0);
   std::vector<double> f(g.size(), 0.0);
   EXPECT_EQ(support_window(g, f).nx, 0) << "no support, no window";
@@ -40,6 +41,29 @@ TEST(SupportWindow, HoldsTheSupportInARectangleOfWholeEighths) {
   // A support spread over most of the grid: no window.
   f[g.index(59, 0)] = 1.0;
   EXPECT_EQ(support_window(g, f).nx, 0);
+}
+
+TEST(SupportWindow, LargeGridsUseFewWindowSizesAndTheCacheStaysBounded) {
+  // 400^2: the sides are rounded up to a sixteenth of the grid's side (32 elements), not 8.
+  const Grid g = Grid::make(3, 400, 400, -1.0, 1.0, -1.0, 1.0);
+  std::vector<double> f(g.size(), 0.0);
+  for (int j = 200; j < 210; ++j)
+    for (int i = 100; i < 141; ++i) f[g.index(i, j)] = 1.0;
+  const SupportWindow w = support_window(g, f);
+  EXPECT_EQ(w.nx, 64);
+  EXPECT_EQ(w.ny, 32);
+  // The kept operators never hold more than three grids' elements: on a 40^2 grid (1600),
+  // five window sizes of 5504 elements in all.
+  const Grid small = Grid::make(3, 40, 40, -1.0, 1.0, -1.0, 1.0);
+  const MaterialPair m{Elastic::from_E_nu(2.1e11, 0.3), Elastic::from_E_nu(2.1e11, 0.3)};
+  WindowedCompliance windows(small, m, OperatorKind::fft);
+  std::size_t most = 0;
+  for (const auto& [nx, ny] : {std::pair{40, 32}, {32, 40}, {40, 24}, {24, 40}, {32, 32}}) {
+    windows.operators(SupportWindow{0, 0, nx, ny});
+    most = std::max(most, windows.elements_kept());
+  }
+  EXPECT_LE(most, 3 * small.size());
+  EXPECT_GE(windows.elements_kept(), 1024u) << "the last window is kept";
 }
 
 /// The window's operator against the grid's, for a field supported in the window.
