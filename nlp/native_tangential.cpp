@@ -132,9 +132,9 @@ class NativeTangential {
   // ---- face and its operators ---------------------------------------------------------------
   void build_face(const Vec& x, const Vec& w);
   void to_face(Vec& v) const;          ///< orthogonal projection onto the free directions
-  /// z = M^-1 v on the face: v / (1 + curvature) on slipping tangents, or with the program's preconditioner P (an
-  /// approximate Q^-1) z = F D^-1/2 P D^-1/2 v, F the face's projection, D = 1 + curvature:
-  /// symmetric positive definite on the face.
+  /// z = M^-1 v on the face: v / (1 + curvature) on slipping tangents, or with the program's
+  /// preconditioner P (an approximate Q^-1) z = F D^-1/2 P D^-1/2 v, F the face's projection,
+  /// D = 1 + curvature: symmetric positive definite on the face.
   void face_precondition(const Vec& v, Vec& z) const;
   void add_curvature(const Vec& v, Vec& y) const;  ///< y += D v on slipping tangents
   /// Projected preconditioned residual rho = M^-1 r with A_F rho = 0 (r is updated: its range(A_F')
