@@ -575,7 +575,7 @@ struct TangentialProblem::Impl {
   /// to (4.26), accelerated by Anderson mixing of s (N values, in the units of the stopping
   /// test; one B32 apply per pass); both problems start from the previous step's solution (warm).
   /// It stops on the certificate: the pressure was solved with kappa B32 tau_in, and the new
-  /// tau moves that gap by kappa B32 (tau - tau_in); once this is below a tenth of
+  /// tau moves that gap by kappa B32 (tau - tau_in); once this is below a hundredth of
   /// certificate_tol (in the certificate's units, gap / C_00 / max p), the pressure is certified
   /// again with the final tau (certify_with_final_traction), so p and tau certify together.
   /// `inexact` (the inner solve honours the pass's SolverSpec): while the coupling residual is
@@ -592,7 +592,7 @@ struct TangentialProblem::Impl {
     const int max_outer = coupled ? (stall ? 3 : 100) : 1;
     const double outer_tol = std::max(1e-9, 10.0 * solver.tol);
     const double c0 = C->diagonal(0);
-    const double coupling_tol = 0.1 * solver.certificate_tol;
+    const double coupling_tol = 0.01 * solver.certificate_tol;
     AndersonMixing mixer;
     SolverSpec pass = solver;
     if (coupled && inexact) pass = loose_pass(solver, 1e-3);

@@ -38,7 +38,7 @@ struct OuterLoopReport {
   int iterations = 0;      ///< outer (p, tau) iterations
   double last_change = 0;  ///< relative change of (p, tau) in the last iteration
   /// kappa != 0: max |kappa B32 (tau - tau_in)| / (C_00 max p), the gap error the last
-  /// tangential update leaves in the normal problem (the loop stops below certificate_tol / 10,
+  /// tangential update leaves in the normal problem (the loop stops below certificate_tol / 100,
   /// and the pressure's certificate is that of the final tau)
   double coupling_residual = 0;
   /// kappa != 0: the coupling residual of the first pass (how far the starting point was)

@@ -29,7 +29,7 @@ inline void expect_certified(const TangentialSolution& s) {
 
 /// a reaches b's state: the same pressure (1e-6 of its peak), traction (1e-5 of the largest
 /// friction bound) and stick set: what two solves of one step agree to when their paths differ
-/// (the kappa != 0 loop stops at a coupling residual of certificate_tol / 10).
+/// (the kappa != 0 loop stops at a coupling residual of certificate_tol / 100).
 inline void expect_same_state(const TangentialSolution& a, const TangentialSolution& b, const std::string& where) {
   double p_max = 0.0, f_max = 0.0;
   for (std::size_t e = 0; e < b.normal.pressure.size(); ++e) {
