@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "fft_planning.hpp"
+#include "periodic_kernel.hpp"
 
 namespace dc {
 
@@ -20,15 +21,7 @@ NormalPreconditioner::NormalPreconditioner(const LinearOperator& compliance, con
   unit[grid.index(ic, jc)] = 1.0;
   compliance.apply(unit, response);
   const int mx = fft_.mx(), my = fft_.my();
-  // Periodic kernel on the box: offsets in (-m/2, m/2]; those beyond the grid take the value
-  // of the nearest offset the grid holds (a preconditioner needs the shape, not every digit).
-  std::vector<double> box(static_cast<std::size_t>(mx) * my);
-  for (int bj = 0; bj < my; ++bj)
-    for (int bi = 0; bi < mx; ++bi) {
-      const int di = bi <= mx / 2 ? bi : bi - mx, dj = bj <= my / 2 ? bj : bj - my;
-      const int i = std::clamp(ic + di, 0, grid.nx - 1), j = std::clamp(jc + dj, 0, grid.ny - 1);
-      box[bi + static_cast<std::size_t>(mx) * bj] = response[grid.index(i, j)];
-    }
+  const std::vector<double> box = periodic_kernel_box(response, 0, grid, mx, my);
   std::vector<double> spectrum;
   fft_.periodic_forward(box, spectrum);
   // The kernel is even, so its spectrum is real; truncation can leave a few tiny or negative

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "fft_planning.hpp"
+#include "periodic_kernel.hpp"
 
 namespace dc {
 
@@ -16,23 +17,18 @@ TangentialPreconditioner::TangentialPreconditioner(const LinearOperator& complia
     throw std::invalid_argument("tangential preconditioner: operator and grid sizes differ");
   const int ic = grid.nx / 2, jc = grid.ny / 2, mx = fft_.mx(), my = fft_.my();
   const std::size_t ncplx = fft_.spectrum_size();
-  // spectra[out * comps + in]: the periodic kernel of component `in` -> `out` (offsets in
-  // (-m/2, m/2]; those beyond the grid take the nearest offset the grid holds).
+  // spectra[out * comps + in]: the periodic kernel of component `in` -> `out`
+  // (periodic_kernel.hpp). The diagonal of M^-1 is the same at every element (translation
+  // invariance): kept from M^-1 applied to the centre's unit load, once the symbol is known.
   std::vector<std::vector<double>> spectra(static_cast<std::size_t>(comps_ * comps_));
-  std::vector<double> unit(comps_ * n_, 0.0), response, box(static_cast<std::size_t>(mx) * my);
+  std::vector<double> unit(comps_ * n_, 0.0), response;
   for (int in = 0; in < comps_; ++in) {
     std::fill(unit.begin(), unit.end(), 0.0);
     unit[in * n_ + grid.index(ic, jc)] = 1.0;
     compliance.apply(unit, response);
-    for (int out = 0; out < comps_; ++out) {
-      for (int bj = 0; bj < my; ++bj)
-        for (int bi = 0; bi < mx; ++bi) {
-          const int di = bi <= mx / 2 ? bi : bi - mx, dj = bj <= my / 2 ? bj : bj - my;
-          const int i = std::clamp(ic + di, 0, grid.nx - 1), j = std::clamp(jc + dj, 0, grid.ny - 1);
-          box[bi + static_cast<std::size_t>(mx) * bj] = response[out * n_ + grid.index(i, j)];
-        }
-      fft_.periodic_forward(box, spectra[static_cast<std::size_t>(out * comps_ + in)]);
-    }
+    for (int out = 0; out < comps_; ++out)
+      fft_.periodic_forward(periodic_kernel_box(response, out * n_, grid, mx, my),
+                            spectra[static_cast<std::size_t>(out * comps_ + in)]);
   }
   // The kernels are even, so the symbols are real: per wavenumber a symmetric 2 x 2 matrix,
   // inverted through its eigenvalues bounded below (truncation can leave tiny or negative
@@ -62,6 +58,12 @@ TangentialPreconditioner::TangentialPreconditioner(const LinearOperator& complia
     ixy_[k] = c * s * (i1 - i2);
   }
   if (comps_ == 2) spectrum_x_.resize(2 * ncplx);
+  for (int c = 0; c < comps_; ++c) {
+    std::fill(unit.begin(), unit.end(), 0.0);
+    unit[c * n_ + grid.index(ic, jc)] = 1.0;
+    apply(unit, response);
+    diagonal_[c] = response[c * n_ + grid.index(ic, jc)];
+  }
 }
 
 void TangentialPreconditioner::apply(const double* x, double* y) const {
@@ -91,12 +93,7 @@ void TangentialPreconditioner::apply(const double* x, double* y) const {
   fft_.inverse(y);
 }
 
-double TangentialPreconditioner::diagonal(std::size_t i) const {
-  std::vector<double> e(rows(), 0.0), column(rows());
-  e[i] = 1.0;
-  apply(e.data(), column.data());
-  return column[i];
-}
+double TangentialPreconditioner::diagonal(std::size_t i) const { return diagonal_[i / n_]; }
 
 Eigen::MatrixXd TangentialPreconditioner::to_dense(std::size_t max_entries) const {
   if (rows() * cols() > max_entries) throw std::length_error("tangential preconditioner: too large to be dense");

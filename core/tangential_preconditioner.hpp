@@ -26,7 +26,7 @@ class TangentialPreconditioner final : public LinearOperator {
   std::size_t cols() const override { return comps_ * n_; }
   /// y = M^-1 x. Allocates nothing.
   void apply(const double* x, double* y) const override;
-  double diagonal(std::size_t i) const override;
+  double diagonal(std::size_t i) const override;  ///< kept (translation invariant)
   Eigen::MatrixXd to_dense(std::size_t max_entries) const override;
   std::string kind() const override { return "fft-preconditioner"; }
 
@@ -36,6 +36,7 @@ class TangentialPreconditioner final : public LinearOperator {
   /// Per complex entry: the inverse symbol (xx, xy, yy), normalised by the box size.
   std::vector<double> ixx_, ixy_, iyy_;
   mutable PaddedFft fft_;
+  double diagonal_[2] = {0.0, 0.0};  ///< per component: the same at every element
   mutable std::vector<double> spectrum_x_;  ///< the x component's spectrum while y is transformed
 };
 

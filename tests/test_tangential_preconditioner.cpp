@@ -32,6 +32,13 @@ void expect_symmetric_positive(const Grid& g, const MaterialPair& m) {
     EXPECT_NEAR(dot(y, Mx), dot(x, My), 1e-10 * std::sqrt(dot(x, x) * dot(My, My))) << "dimension " << g.dimension;
     EXPECT_GT(dot(x, Mx), 0.0);
   }
+  // The kept diagonal is the operator's, at any element (not only the centre).
+  for (std::size_t i : {std::size_t{0}, pre.rows() / 3, pre.rows() - 1}) {
+    std::vector<double> e(pre.rows(), 0.0), column;
+    e[i] = 1.0;
+    pre.apply(e, column);
+    EXPECT_NEAR(pre.diagonal(i), column[i], 1e-12 * std::abs(column[i])) << "entry " << i;
+  }
 }
 
 TEST(TangentialPreconditioner, SymmetricPositiveDefinite) {
