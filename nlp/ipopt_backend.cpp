@@ -9,6 +9,7 @@
 #include <cmath>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +20,7 @@
 #include <IpSolveStatistics.hpp>
 #include <IpTNLP.hpp>
 
+#include "freed_memory_kept.hpp"
 #include "ipopt_shared.hpp"
 #include "quadratic_program.hpp"
 #include "sparse_block.hpp"
@@ -310,6 +312,11 @@ SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& op
   try {
     // One Ipopt application at a time (threaded tables); the lock outlives the application.
     const std::lock_guard<std::mutex> lock(ipopt_mutex());
+    // The finite body's saddle form: MUMPS's workspace, allocated afresh at every factorisation,
+    // reuses the pages the previous one touched (freed_memory_kept.hpp); given back after the
+    // application (declared after this guard) is gone.
+    std::optional<FreedMemoryKept> kept;
+    if (qp.block) kept.emplace();
     if (options.hessian != "auto" && options.hessian != "exact" && options.hessian != "limited-memory") {
       out.message = "Ipopt: unknown hessian option '" + options.hessian + "'";
       return out;

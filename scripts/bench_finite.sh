@@ -6,8 +6,9 @@
 #   --sparse-dofs 10k       bodies also solved in the sparse saddle form (Ipopt) on the first grid
 #   --repeat 2              runs per point; the table shows medians (the machine may be shared)
 # Columns: body dofs, grid, program, mesh, factorisation and solve seconds (the solve is the whole
-# contact solve after the factorisation), iterations, peak memory (max RSS, /usr/bin/time), and the
-# peak pressure's error against Hertz's p0.
+# contact solve after the factorisation), the CPU seconds of the whole run (user + system, from
+# /usr/bin/time: steadier than wall times on a shared machine), iterations, peak memory (max RSS),
+# and the peak pressure's error against Hertz's p0.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -51,28 +52,30 @@ run_point() {  # size, grid n, program
   for ((k = 0; k < repeat; k++)); do
     rm -rf "$out/run"
     local status=0
-    /usr/bin/time -f "%M" -o "$out/rss" "$exe" solve "$case_file" --out "$out/run" -q "${sets[@]}" || status=$?
+    /usr/bin/time -f "%M %U %S" -o "$out/rss" "$exe" solve "$case_file" --out "$out/run" -q "${sets[@]}" || status=$?
     [[ $status -eq 0 ]] || echo "  (run exited with $status)" >&2
-    awk -v rss="$(tail -n 1 "$out/rss")" -F'[:,]' '
+    local rss user sys
+    read -r rss user sys < <(tail -n 1 "$out/rss")
+    awk -v rss="$rss" -v cpu="$(awk -v u="$user" -v s="$sys" 'BEGIN { print u + s }')" -F'[:,]' '
       /"body_dofs"/ { dofs = $2 + 0 }
       /"mesh_time_s"/ { mesh = $2 + 0 }
       /"factorisation_time_s"/ { fact = $2 + 0 }
       /"max_pressure"/ && !p { p = $2 + 0 }
       /"iterations"/ && !it { it = $2 + 0 }
       /"time_s"/ { time = $2 + 0 }
-      END { print dofs, mesh, fact, time - mesh - fact, it, rss / 1024, p }' "$out/run/summary.json" >>"$out/runs"
+      END { print dofs, mesh, fact, time - mesh - fact, it, rss / 1024, p, cpu }' "$out/run/summary.json" >>"$out/runs"
   done
   local col
-  for col in 1 2 3 4 5 6 7; do awk -v c=$col '{ print $c }' "$out/runs" | median; done | tr '\n' ' ' |
+  for col in 1 2 3 4 5 6 7 8; do awk -v c=$col '{ print $c }' "$out/runs" | median; done | tr '\n' ' ' |
     awk -v n="$n" -v program="$program" -v R=$R -v E=$E -v nu=$nu -v P=$P '{
       Es = E / (2 * (1 - nu * nu)); pi = atan2(0, -1)
       p0 = (6 * P * Es * Es / (pi * pi * pi * R * R)) ^ (1 / 3)
-      printf "%8d  %3d^2  %-9s %7.2f %9.2f %9.2f %6d %9.0f %+8.2f %%\n", $1, n, program, $2, $3, $4, $5, $6, 100 * ($7 / p0 - 1)
+      printf "%8d  %3d^2  %-9s %7.2f %9.2f %9.2f %7.2f %6d %9.0f %+8.2f %%\n", $1, n, program, $2, $3, $4, $8, $5, $6, 100 * ($7 / p0 - 1)
     }'
 }
 
 echo "== finite contact: hemisphere R = $R m on the half-space, P = $P N (medians of $repeat runs)"
-printf "%8s  %5s  %-9s %7s %9s %9s %6s %9s %10s\n" dofs grid program mesh_s factor_s solve_s iter rss_MB "p0-Hertz"
+printf "%8s  %5s  %-9s %7s %9s %9s %7s %6s %9s %10s\n" dofs grid program mesh_s factor_s solve_s cpu_s iter rss_MB "p0-Hertz"
 IFS=, read -ra size_list <<<"$dofs"
 IFS=, read -ra grid_list <<<"$grids"
 IFS=, read -ra sparse_list <<<"$sparse_dofs"
