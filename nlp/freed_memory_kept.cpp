@@ -4,8 +4,6 @@
 
 #if defined(__GLIBC__)
 #include <malloc.h>
-
-#include <climits>
 #endif
 
 namespace dc {
@@ -19,7 +17,9 @@ constexpr int kDefaultTrimThreshold = 128 * 1024;
 
 FreedMemoryKept::FreedMemoryKept() {
   mallopt(M_MMAP_MAX, 0);              // large blocks from the heap (threads' arenas still mmap)
-  mallopt(M_TRIM_THRESHOLD, INT_MAX);  // ... and left there when freed
+  // ... and left there when freed: -1 never trims (the largest int, 2 GB, still gave back the
+  // 50k-dof body's workspace at every factorisation).
+  mallopt(M_TRIM_THRESHOLD, -1);
 }
 
 FreedMemoryKept::~FreedMemoryKept() {

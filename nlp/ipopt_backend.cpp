@@ -335,10 +335,14 @@ SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& op
     ok &= opts->SetStringValue("sb", "yes");
     // The finite body's sparse form with the exact Hessian is a convex QP: Mehrotra's
     // predictor-corrector takes 11 iterations on a 10k-dof body where the default barrier
-    // update took 14, each a factorisation of the KKT matrix.
-    if (qp.block && exact && !disks)
+    // update took 14, each a factorisation of the KKT matrix. Its least-squares start (primal
+    // and duals) costs one more factorisation: without it, the same 11 and 12 iterations at 10k
+    // and 50k dofs and 5-8 s less CPU at 50k (docs/finite.md, "Performance").
+    if (qp.block && exact && !disks) {
       ok &= opts->SetStringValue("mehrotra_algorithm", "yes");
-    else
+      ok &= opts->SetStringValue("least_square_init_primal", "no");
+      ok &= opts->SetStringValue("least_square_init_duals", "no");
+    } else
       ok &= opts->SetStringValue("mu_strategy", "adaptive");
     ok &= opts->SetStringValue("jac_c_constant", "yes");
     ok &= opts->SetStringValue("jac_d_constant", disks ? "no" : "yes");
@@ -347,9 +351,11 @@ SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& op
     // A sparse block (the finite body's saddle form): MUMPS's orderings of the KKT matrix of a
     // 10k-dof body on a 32^2 grid took, per factorisation, AMF 1.5e12 flops (its automatic
     // choice filled the rows of the dense inertia-relief columns M R a in), QAMD 2.0e10, AMD
-    // 7.0e9 and METIS's nested dissection 3.5e9-4.9e9 (0.3 s); at 50k dofs METIS 4.7e10, AMD
-    // 1.2e11, QAMD 1.5e11. METIS's analysis, once per solve, costs about seven factorisations
-    // (the dense half-space block is a clique of the graph); Ipopt factorises once per iteration.
+    // 7.0e9 and nested dissection 3.5e9-4.9e9 (0.3 s); at 50k dofs nested dissection 4.7e10,
+    // AMD 1.2e11, QAMD 1.5e11. Debian's sequential MUMPS has no METIS: 5 orders with SCOTCH (as
+    // 3), whose analysis, once per solve, costs four to seven factorisations (docs/finite.md,
+    // "Performance": PORD crashed at 50k dofs; SCOTCH on one thread or on stresses grouped by
+    // element ordered worse); Ipopt factorises once per iteration.
     if (qp.block) ok &= opts->SetIntegerValue("mumps_pivot_order", 5);
     if (!ok) {
       out.message = "Ipopt: an option was rejected";
