@@ -337,7 +337,7 @@ SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& op
     // predictor-corrector takes 11 iterations on a 10k-dof body where the default barrier
     // update took 14, each a factorisation of the KKT matrix. Its least-squares start (primal
     // and duals) costs one more factorisation: without it, the same 11 and 12 iterations at 10k
-    // and 50k dofs and 5-8 s less CPU at 50k (docs/finite.md, "Performance").
+    // and 50k dofs, Ipopt's own time at 50k 52 -> 47 s (docs/finite.md, "Performance").
     if (qp.block && exact && !disks) {
       ok &= opts->SetStringValue("mehrotra_algorithm", "yes");
       ok &= opts->SetStringValue("least_square_init_primal", "no");
