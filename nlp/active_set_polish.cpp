@@ -120,7 +120,7 @@ double kkt_residual(const QuadraticProgram& qp, const Vec& x, const Vec& lambda)
   return worst;
 }
 
-PolishResult polish_on_active_set(const QuadraticProgram& qp, Vec& x, Vec& lambda) {
+PolishResult polish_on_active_set(const QuadraticProgram& qp, Vec& x, Vec& lambda, double target) {
   PolishResult result;
   const std::size_t n = qp.c.size(), m = qp.equalities.size();
   lambda.resize(m, 0.0);
@@ -203,7 +203,7 @@ PolishResult polish_on_active_set(const QuadraticProgram& qp, Vec& x, Vec& lambd
       x = cur;
       lambda = cur_lambda;
     }
-    if (result.after <= 1e-15) break;
+    if (result.after <= std::max(target, 1e-15)) break;
   }
   return result;
 }

@@ -28,7 +28,10 @@ struct PolishResult {
 };
 
 /// Polishes x (feasible or nearly) and lambda in place; keeps them when no active set improves
-/// on them. `lambda` has one entry per equality row.
-PolishResult polish_on_active_set(const QuadraticProgram& qp, std::vector<double>& x, std::vector<double>& lambda);
+/// on them. `lambda` has one entry per equality row. Stops once the KKT residual is at most
+/// `target` (round-off by default; the slip directions on disks converge linearly, a fixed
+/// fraction per active set, so a caller whose applies are dear asks for what it needs).
+PolishResult polish_on_active_set(const QuadraticProgram& qp, std::vector<double>& x, std::vector<double>& lambda,
+                                  double target = 0.0);
 
 }  // namespace dc

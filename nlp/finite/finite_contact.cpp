@@ -169,6 +169,11 @@ TangentialProblem& FiniteContact::tangential_problem(const FrictionLaw& friction
     auto body_t = std::make_shared<BodyCompliance>(*body_, *face_, grid_, std::vector<int>{0, 1});
     auto Ct = std::make_shared<SumOperator>(halfspace_tangential_, body_t);
     tangential_ = std::make_unique<TangentialProblem>(grid_, normal_compliance_, Ct, profile_heights(), friction);
+    // Ipopt on the condensed program: the exact Hessian while the dense compliance is as large
+    // as the sparse form's dense block (its cost: one multi-column solve of the kept factor, and
+    // a dense factorisation per iteration); limited memory beyond, whose every iteration costs
+    // an apply (a pair of triangular solves) and which takes them by the thousand.
+    tangential_->set_exact_hessian_limit(static_cast<int>(2 * kSaddleExactLimit));
     if (program_ == "sparse") use_sparse_tangential();
   }
   return *tangential_;
