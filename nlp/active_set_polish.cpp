@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 
 #include <Eigen/Dense>
 
@@ -206,6 +207,13 @@ PolishResult polish_on_active_set(const QuadraticProgram& qp, Vec& x, Vec& lambd
     if (result.after <= std::max(target, 1e-15)) break;
   }
   return result;
+}
+
+std::string polish_summary(const PolishResult& polish) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "active-set polish: KKT residual %.3g -> %.3g (%d sets, %d applies)", polish.before,
+                polish.after, polish.rounds, polish.applies);
+  return buf;
 }
 
 }  // namespace dc

@@ -8,6 +8,7 @@
 // is solved exactly (conjugate gradients on Q_FF, one solve per right-hand side and equality
 // row, then the small multiplier system). Repeated while the active set changes (a semismooth
 // Newton iteration); the best feasible point by kkt_residual() is kept.
+#include <string>
 #include <vector>
 
 #include "quadratic_program.hpp"
@@ -33,5 +34,8 @@ struct PolishResult {
 /// fraction per active set, so a caller whose applies are dear asks for what it needs).
 PolishResult polish_on_active_set(const QuadraticProgram& qp, std::vector<double>& x, std::vector<double>& lambda,
                                   double target = 0.0);
+
+/// "active-set polish: KKT residual B -> A (R sets, N applies)", for the backends' messages.
+std::string polish_summary(const PolishResult& polish);
 
 }  // namespace dc

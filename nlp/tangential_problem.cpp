@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <limits>
 #include <numeric>
@@ -409,9 +408,10 @@ struct TangentialProblem::Impl {
         certify_point(out.x, out.equality_multipliers, trial);
         // An interior point leaves elements of tiny slip inside their disks by about mu /
         // (their multiplier): the friction law's residual ~ sqrt(mu), above the tolerance
-        // where Ipopt's own test has passed. Its point finished by the active-set polish on the
-        // condensed program (as NLopt's are), kept when its certificate is the better one.
-        if (backend == "ipopt" && rep.status != SolveStatus::converged) {
+        // where Ipopt's own test has passed. That point finished by the active-set polish on the
+        // condensed program (as NLopt's are), kept when its certificate is the better one; a
+        // point Ipopt did not finish goes to the fallbacks as it is.
+        if (backend == "ipopt" && out.success && rep.status != SolveStatus::converged) {
           const auto polish_start = std::chrono::steady_clock::now();
           std::vector<double> x = out.x, multipliers = out.equality_multipliers;
           // The program's KKT residual is the friction law's (the same compliance ct0 and level
@@ -426,10 +426,7 @@ struct TangentialProblem::Impl {
             trial = std::move(polished);
             rep.polished = true;
             rep.objective = condensed.objective(x.data()) * ct0 * f_ref * f_ref * A;
-            char buf[160];
-            std::snprintf(buf, sizeof buf, "; active-set polish: KKT residual %.3g -> %.3g (%d sets, %d applies)",
-                          polish.before, polish.after, polish.rounds, polish.applies);
-            rep.message += buf;
+            rep.message += "; " + polish_summary(polish);
           }
           rep.time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - polish_start).count();
         }
