@@ -123,7 +123,8 @@ NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverSpec&
     for (std::size_t i = 0; i < n; ++i) qp.x0[i] = warm_start_[i] / s.p_ref;
   }
 
-  const SolveOptions options = solve_options(solver, progress);
+  SolveOptions options = solve_options(solver, progress);
+  if (exact_hessian_limit_ > 0) options.exact_hessian_limit = exact_hessian_limit_;
 
   NormalSolution best;
   best.report.requested = solver.backend;

@@ -47,6 +47,11 @@ class NormalProblem {
   /// `auto` tries the native solver first whatever the size (time steps: every solve is one
   /// warm-started program, where native is the fastest); the others remain its fallbacks.
   void set_native_first(bool on) { native_first_ = on; }
+  /// Ipopt with `solver.hessian` auto: the exact Hessian up to this many unknowns instead of
+  /// SolveOptions' limit (measured on the half-space's FFT operator; a finite body's condensed
+  /// compliance costs a pair of triangular solves per apply, its dense matrix one multi-column
+  /// solve). 0: SolveOptions' own.
+  void set_exact_hessian_limit(int unknowns) { exact_hessian_limit_ = unknowns; }
 
   const LinearOperator& compliance() const { return *compliance_; }
   const Grid& grid() const { return grid_; }
@@ -58,6 +63,7 @@ class NormalProblem {
   std::vector<double> heights_;
   std::vector<double> warm_start_;
   bool native_first_ = false;
+  int exact_hessian_limit_ = 0;
   /// The native solver's FFT preconditioner: built at the first native solve, then reused.
   std::shared_ptr<const NormalPreconditioner> preconditioner_;
 };

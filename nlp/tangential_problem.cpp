@@ -922,7 +922,10 @@ void TangentialProblem::set_windowing(bool on) { impl_->windowing = on; }
 
 void TangentialProblem::set_native_first(bool on) { impl_->native_first_always = on; }
 
-void TangentialProblem::set_exact_hessian_limit(int tractions) { impl_->exact_hessian_limit = tractions; }
+void TangentialProblem::set_exact_hessian_limit(int elements) {
+  impl_->exact_hessian_limit = impl_->comps * elements;
+  impl_->normal->set_exact_hessian_limit(elements);
+}
 
 void TangentialProblem::use_sparse_form(SparseTangentialForm form) {
   if (!impl_->given_operators) throw std::logic_error("tangential problem: the sparse form needs given compliances");

@@ -29,6 +29,7 @@ FiniteContact::FiniteContact(const FeBodySpec& spec, const Grid& grid, const Ela
   body_normal_ = std::make_shared<BodyCompliance>(*body_, *face_, grid_, std::vector<int>{2});
   normal_compliance_ = std::make_shared<SumOperator>(hs, body_normal_);
   normal_ = std::make_unique<NormalProblem>(normal_compliance_, grid_, profile_heights());
+  normal_->set_exact_hessian_limit(static_cast<int>(kSaddleExactLimit));  // as the tangential program's below
 }
 
 FiniteNormalSolution FiniteContact::solve_normal(const NormalSpec& control, const SolverSpec& solver,
@@ -173,7 +174,7 @@ TangentialProblem& FiniteContact::tangential_problem(const FrictionLaw& friction
     // as the sparse form's dense block (its cost: one multi-column solve of the kept factor, and
     // a dense factorisation per iteration); limited memory beyond, whose every iteration costs
     // an apply (a pair of triangular solves) and which takes them by the thousand.
-    tangential_->set_exact_hessian_limit(static_cast<int>(2 * kSaddleExactLimit));
+    tangential_->set_exact_hessian_limit(static_cast<int>(kSaddleExactLimit));
     if (program_ == "sparse") use_sparse_tangential();
   }
   return *tangential_;

@@ -3,7 +3,8 @@
 // certificate's tolerance.
 //  - The condensed program by Ipopt on a 16^2 grid: 1024 tractions, beyond SolveOptions' limit of
 //    the exact Hessian (500, measured on the half-space's FFT operator); the finite body's
-//    limit keeps it exact (its dense compliance built by multi-column solves of the kept factor).
+//    limit keeps it exact (its dense compliance built by multi-column solves of the kept factor);
+//    the normal problem's on 24^2 (576 pressures) likewise.
 //  - An interior point leaves elements of tiny slip inside their friction disks by about
 //    mu / (multiplier), the friction law's residual ~ sqrt(mu) (examples/finite-torsion.json:
 //    1.1e-6 at Ipopt's tol 1e-9). Ipopt stopped early (tol 1e-4) misses the certificate until
@@ -92,6 +93,19 @@ TEST(FiniteIpoptTorsion, IpoptsPointsArePolishedToTheCertificateOnBothForms) {
     expect_same_point(r);
     EXPECT_TRUE(r.sparse.report.polished) << r.sparse.report.message;
   }
+}
+
+TEST(FiniteIpoptTorsion, NormalProblemByIpoptBeyondTheHalfSpacesLimitTakesTheExactHessian) {
+  // 24^2 = 576 pressures, beyond SolveOptions' 500: the finite body's limit keeps the Hessian
+  // exact, and Ipopt's own test passes within 30 iterations.
+  const Grid g = grid(24);
+  FiniteContact body(fe::testing::hemisphere("condensed", kSmall), g, Elastic::from_E_nu(fe::testing::kE, fe::testing::kNu));
+  SolverSpec ipopt;
+  ipopt.backend = "ipopt";
+  ipopt.max_iter = 30;
+  const NormalSolution s = body.solve_normal({Control::force, kP}, ipopt).contact;
+  EXPECT_EQ(s.report.status, SolveStatus::converged) << s.report.message;
+  EXPECT_EQ(s.report.message.rfind("Ipopt: Solve_Succeeded", 0), 0u) << s.report.message;
 }
 
 TEST(FiniteIpoptTorsion, IpoptsNormalPointIsPolishedToTheCertificate) {
