@@ -343,14 +343,16 @@ struct TangentialProblem::Impl {
     bool have_result = false;
     std::string attempts;
     // The condensed program: the same program with the body's rows eliminated (Q the condensed
-    // compliance, no block); the program itself when it has no block.
+    // compliance, no block); the program itself when it has no block (no copy).
     ScaledOperator condensed_q(*Ct, 1.0 / ct0);
-    QuadraticProgram condensed = qp;
+    QuadraticProgram sparse_condensed;
     if (sparse) {
-      condensed.Q = &condensed_q;
-      condensed.block = nullptr;
-      condensed.preconditioner = nullptr;
+      sparse_condensed = qp;
+      sparse_condensed.Q = &condensed_q;
+      sparse_condensed.block = nullptr;
+      sparse_condensed.preconditioner = nullptr;
     }
+    const QuadraticProgram& condensed = sparse ? sparse_condensed : qp;
     // A point of the program (x, its equality multipliers) as tractions and rigid increments,
     // certified on the condensed compliances.
     const auto certify_point = [&](const std::vector<double>& x, const std::vector<double>& multipliers,
