@@ -388,11 +388,11 @@ struct TangentialProblem::Impl {
     // the first certified result, else the best certificate.
     const auto attempt = [&](const std::string& backend, const QuadraticProgram& program, bool fallback,
                              const std::string& label) {
-      TimedOutcome run =
+      const TimedOutcome run =
           run_backend(backend, program, options, [this](const QuadraticProgram& q, const SolveOptions& o) {
             return solve_tangential_native(q, o, native_work);
           });
-      SolveOutcome& out = run.outcome;
+      const SolveOutcome& out = run.outcome;
       InnerResult trial;
       SolverReport& rep = trial.report;
       rep = best.report;
