@@ -80,6 +80,17 @@ Certificate NormalProblem::certify(const std::vector<double>& p, double approach
 
 NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverSpec& solver,
                                     const ProgressCallback& progress) {
+  return solve_or_polish(control, solver, progress, nullptr);
+}
+
+NormalSolution NormalProblem::polish(const std::vector<double>& pressure, const NormalSpec& control,
+                                     const SolverSpec& solver) {
+  if (pressure.size() != grid_.size()) throw std::invalid_argument("normal problem: polish: one pressure per element");
+  return solve_or_polish(control, solver, {}, &pressure);
+}
+
+NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const SolverSpec& solver,
+                                              const ProgressCallback& progress, const std::vector<double>* given) {
   const std::size_t n = grid_.size();
   const double A = grid_.area();
   std::size_t n_free = 0;
@@ -163,6 +174,33 @@ NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverSpec&
     sol.report.status =
         sol.report.certificate.worst() <= solver.certificate_tol ? SolveStatus::converged : SolveStatus::not_converged;
   };
+  if (given) {
+    NormalSolution sol;
+    sol.report = best.report;
+    sol.report.backend = "active-set polish";
+    std::vector<double> x(n), lambda, g(n);
+    for (std::size_t i = 0; i < n; ++i) x[i] = std::max((*given)[i], 0.0) / s.p_ref;
+    if (!qp.equalities.empty()) {
+      // The force row's multiplier from the contact's reduced gradient: Qx + c = lambda a there.
+      qp.gradient(x.data(), g.data());
+      double sum = 0.0;
+      int count = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (x[i] > 0.0 && qp.equalities[0].a[i] != 0.0) {
+          sum += g[i] / qp.equalities[0].a[i];
+          ++count;
+        }
+      lambda.assign(1, count > 0 ? sum / count : 0.0);
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const PolishResult polish = polish_on_active_set(qp, x, lambda, 1e-2 * solver.certificate_tol);
+    fill_solution(x, sol);
+    sol.report.polished = polish.improved;
+    sol.report.message = polish_summary(polish);
+    sol.report.iterations = polish.applies;
+    sol.report.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return sol;
+  }
   const auto order =
       backend_order(solver.backend, native_first_ ? std::numeric_limits<std::size_t>::max() : n, solver.fallback);
   for (std::size_t k = 0; k < order.size(); ++k) {

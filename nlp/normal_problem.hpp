@@ -35,6 +35,11 @@ class NormalProblem {
   /// the report says so.
   NormalSolution solve(const NormalSpec& control, const SolverSpec& solver,
                        const ProgressCallback& progress = {});
+  /// A pressure from another form of this program (a finite body's sparse saddle form) finished
+  /// by the active-set polish on it, to a hundredth of solver.certificate_tol: the solution and
+  /// its certificate at the polished point (report.polished when the polish improved on it;
+  /// the message says by how much).
+  NormalSolution polish(const std::vector<double>& pressure, const NormalSpec& control, const SolverSpec& solver);
   /// Certificate of an arbitrary pressure field (for tests and for every solve).
   Certificate certify(const std::vector<double>& pressure, double approach, const NormalSpec& control) const;
   /// Rigid-body shift of the profile between solves (dynamic steps move the body).
@@ -58,6 +63,10 @@ class NormalProblem {
   const std::vector<double>& heights() const { return heights_; }
 
  private:
+  /// solve(), or with `given` (a pressure per element) polish() instead of the backends.
+  NormalSolution solve_or_polish(const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress,
+                                 const std::vector<double>* given);
+
   std::shared_ptr<const LinearOperator> compliance_;
   Grid grid_;
   std::vector<double> heights_;
