@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 
 #include <Eigen/Dense>
 
@@ -120,7 +121,7 @@ double kkt_residual(const QuadraticProgram& qp, const Vec& x, const Vec& lambda)
   return worst;
 }
 
-PolishResult polish_on_active_set(const QuadraticProgram& qp, Vec& x, Vec& lambda) {
+PolishResult polish_on_active_set(const QuadraticProgram& qp, Vec& x, Vec& lambda, double target) {
   PolishResult result;
   const std::size_t n = qp.c.size(), m = qp.equalities.size();
   lambda.resize(m, 0.0);
@@ -203,9 +204,16 @@ PolishResult polish_on_active_set(const QuadraticProgram& qp, Vec& x, Vec& lambd
       x = cur;
       lambda = cur_lambda;
     }
-    if (result.after <= 1e-15) break;
+    if (result.after <= std::max(target, 1e-15)) break;
   }
   return result;
+}
+
+std::string polish_summary(const PolishResult& polish) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "active-set polish: KKT residual %.3g -> %.3g (%d sets, %d applies)", polish.before,
+                polish.after, polish.rounds, polish.applies);
+  return buf;
 }
 
 }  // namespace dc

@@ -8,6 +8,7 @@
 // is solved exactly (conjugate gradients on Q_FF, one solve per right-hand side and equality
 // row, then the small multiplier system). Repeated while the active set changes (a semismooth
 // Newton iteration); the best feasible point by kkt_residual() is kept.
+#include <string>
 #include <vector>
 
 #include "quadratic_program.hpp"
@@ -28,7 +29,13 @@ struct PolishResult {
 };
 
 /// Polishes x (feasible or nearly) and lambda in place; keeps them when no active set improves
-/// on them. `lambda` has one entry per equality row.
-PolishResult polish_on_active_set(const QuadraticProgram& qp, std::vector<double>& x, std::vector<double>& lambda);
+/// on them. `lambda` has one entry per equality row. Stops once the KKT residual is at most
+/// `target` (round-off by default; the slip directions on disks converge linearly, a fixed
+/// fraction per active set, so a caller whose applies are dear asks for what it needs).
+PolishResult polish_on_active_set(const QuadraticProgram& qp, std::vector<double>& x, std::vector<double>& lambda,
+                                  double target = 0.0);
+
+/// "active-set polish: KKT residual B -> A (R sets, N applies)", for the backends' messages.
+std::string polish_summary(const PolishResult& polish);
 
 }  // namespace dc

@@ -8,7 +8,6 @@
 // (active_set_polish.hpp) and the polished point kept when its KKT residual is smaller.
 #include <algorithm>
 #include <climits>
-#include <cstdio>
 #include <cmath>
 #include <exception>
 #include <string>
@@ -239,10 +238,7 @@ SolveOutcome solve_with_nlopt(const QuadraticProgram& qp, const SolveOptions& op
     out.iterations += polish.applies;
     if (polish.improved) {
       out.polished = true;  // success stays NLopt's own verdict: the certificate decides
-      char buf[160];
-      std::snprintf(buf, sizeof buf, "; active-set polish: KKT residual %.3g -> %.3g (%d sets, %d applies)",
-                    polish.before, polish.after, polish.rounds, polish.applies);
-      out.message += buf;
+      out.message += "; " + polish_summary(polish);
     }
     out.objective = qp.objective(out.x.data());
   } catch (const std::exception& e) {

@@ -35,6 +35,11 @@ class NormalProblem {
   /// the report says so.
   NormalSolution solve(const NormalSpec& control, const SolverSpec& solver,
                        const ProgressCallback& progress = {});
+  /// A pressure from another form of this program (a finite body's sparse saddle form) finished
+  /// by the active-set polish on it, to a hundredth of solver.certificate_tol: the solution and
+  /// its certificate at the polished point (report.polished when the polish improved on it;
+  /// the message says by how much).
+  NormalSolution polish(const std::vector<double>& pressure, const NormalSpec& control, const SolverSpec& solver);
   /// Certificate of an arbitrary pressure field (for tests and for every solve).
   Certificate certify(const std::vector<double>& pressure, double approach, const NormalSpec& control) const;
   /// Rigid-body shift of the profile between solves (dynamic steps move the body).
@@ -47,17 +52,27 @@ class NormalProblem {
   /// `auto` tries the native solver first whatever the size (time steps: every solve is one
   /// warm-started program, where native is the fastest); the others remain its fallbacks.
   void set_native_first(bool on) { native_first_ = on; }
+  /// Ipopt with `solver.hessian` auto: the exact Hessian up to this many unknowns instead of
+  /// SolveOptions' limit (measured on the half-space's FFT operator; a finite body's condensed
+  /// compliance costs a pair of triangular solves per apply, its dense matrix one multi-column
+  /// solve). 0: SolveOptions' own.
+  void set_exact_hessian_limit(int unknowns) { exact_hessian_limit_ = unknowns; }
 
   const LinearOperator& compliance() const { return *compliance_; }
   const Grid& grid() const { return grid_; }
   const std::vector<double>& heights() const { return heights_; }
 
  private:
+  /// solve(), or with `given` (a pressure per element) polish() instead of the backends.
+  NormalSolution solve_or_polish(const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress,
+                                 const std::vector<double>* given);
+
   std::shared_ptr<const LinearOperator> compliance_;
   Grid grid_;
   std::vector<double> heights_;
   std::vector<double> warm_start_;
   bool native_first_ = false;
+  int exact_hessian_limit_ = 0;
   /// The native solver's FFT preconditioner: built at the first native solve, then reused.
   std::shared_ptr<const NormalPreconditioner> preconditioner_;
 };

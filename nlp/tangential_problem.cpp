@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "active_set_polish.hpp"
 #include "anderson_mixing.hpp"
 #include "support_window.hpp"
 #include "backend_choice.hpp"
@@ -80,6 +81,7 @@ struct TangentialProblem::Impl {
   bool native_first = false;                 // auto while marching: native first at any size
   bool native_first_always = false;          // auto: native first for every solve (set_native_first)
   std::optional<SparseTangentialForm> sparse;  // a finite body's sparse saddle form (use_sparse_form)
+  int exact_hessian_limit = 0;                 // set_exact_hessian_limit (0: SolveOptions' own)
   NativeTangentialWorkspace native_work;       // the native solver's vectors, kept between solves
 
   Impl(const Grid& g, const MaterialPair& m, std::vector<double> h, FrictionLaw f, OperatorKind k)
@@ -325,6 +327,7 @@ struct TangentialProblem::Impl {
         for (int c = 0; c < comps; ++c) qp.x0[c * Nw + l] = tau_warm[c * N + element(l)] / f_ref;
     }
     SolveOptions options = solve_options(solver, progress);
+    if (exact_hessian_limit > 0) options.exact_hessian_limit = exact_hessian_limit;
     SparseBlock body_rows;
     if (sparse) {
       const double n_active = static_cast<double>(std::count_if(f.begin(), f.end(), [](double b) { return b > 0.0; }));
@@ -339,6 +342,48 @@ struct TangentialProblem::Impl {
     best.report.operator_kind = sparse ? "sparse+" + sparse->halfspace->kind() : Ct->kind();
     bool have_result = false;
     std::string attempts;
+    // The condensed program: the same program with the body's rows eliminated (Q the condensed
+    // compliance, no block); the program itself when it has no block (no copy).
+    ScaledOperator condensed_q(*Ct, 1.0 / ct0);
+    QuadraticProgram sparse_condensed;
+    if (sparse) {
+      sparse_condensed = qp;
+      sparse_condensed.Q = &condensed_q;
+      sparse_condensed.block = nullptr;
+      sparse_condensed.preconditioner = nullptr;
+    }
+    const QuadraticProgram& condensed = sparse ? sparse_condensed : qp;
+    // A point of the program (x, its equality multipliers) as tractions and rigid increments,
+    // certified on the condensed compliances.
+    const auto certify_point = [&](const std::vector<double>& x, const std::vector<double>& multipliers,
+                                   InnerResult& trial) {
+      SolverReport& rep = trial.report;
+      trial.increment = given_increment;
+      trial.tau.assign(n, 0.0);
+      for (std::size_t l = 0; l < Nw; ++l)
+        for (int c = 0; c < comps; ++c) trial.tau[c * N + element(l)] = x[c * Nw + l] * f_ref;
+      // Project onto the friction set (interior-point iterates may sit a hair outside).
+      for (std::size_t e = 0; e < N; ++e) {
+        double m2 = 0.0;
+        for (int c = 0; c < comps; ++c) m2 += trial.tau[c * N + e] * trial.tau[c * N + e];
+        const double mag = std::sqrt(m2);
+        if (mag > f[e])
+          for (int c = 0; c < comps; ++c) trial.tau[c * N + e] *= f[e] > 0.0 ? f[e] / mag : 0.0;
+      }
+      for (std::size_t r = 0; r < row_mode.size() && r < multipliers.size(); ++r)
+        // Stationarity: (Ct tau + W)/(ct0 f_ref) + alpha m/(ct0 f_ref) = lambda a, a = m A f_ref / S
+        trial.increment[row_mode[r]] = -multipliers[r] * A * f_ref * f_ref * ct0 / row_scale[r];
+      // Our own certificate decides, as for the normal problem: `auto` falls back on it.
+      // On a window the slip is computed there alone: tau = 0 and f = 0 outside, where the
+      // certificate does not look at the slip (certify_friction).
+      rep.certificate = step_certificate(
+          trial.tau,
+          ops ? windowed_slip_increment(W, trial.tau, window, *ops->compliance, trial.increment)
+              : slip_increment(W, trial.tau, trial.increment),
+          f, modes);
+      const bool certified = rep.certificate.worst() <= solver.certificate_tol;
+      rep.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
+    };
     // One backend on a program (the sparse form's or the condensed one), certified; `best` keeps
     // the first certified result, else the best certificate.
     const auto attempt = [&](const std::string& backend, const QuadraticProgram& program, bool fallback,
@@ -362,31 +407,32 @@ struct TangentialProblem::Impl {
       rep.status = SolveStatus::failed;
       trial.increment = given_increment;
       if (out.x.size() == nw) {
-        trial.tau.assign(n, 0.0);
-        for (std::size_t l = 0; l < Nw; ++l)
-          for (int c = 0; c < comps; ++c) trial.tau[c * N + element(l)] = out.x[c * Nw + l] * f_ref;
-        // Project onto the friction set (interior-point iterates may sit a hair outside).
-        for (std::size_t e = 0; e < N; ++e) {
-          double m2 = 0.0;
-          for (int c = 0; c < comps; ++c) m2 += trial.tau[c * N + e] * trial.tau[c * N + e];
-          const double mag = std::sqrt(m2);
-          if (mag > f[e])
-            for (int c = 0; c < comps; ++c) trial.tau[c * N + e] *= f[e] > 0.0 ? f[e] / mag : 0.0;
+        certify_point(out.x, out.equality_multipliers, trial);
+        // An interior point leaves elements of tiny slip inside their disks by about mu /
+        // (their multiplier): the friction law's residual ~ sqrt(mu), above the tolerance
+        // where Ipopt's own test has passed. That point finished by the active-set polish on the
+        // condensed program (as NLopt's are), kept when its certificate is the better one; a
+        // point Ipopt did not finish goes to the fallbacks as it is.
+        if (backend == "ipopt" && out.success && rep.status != SolveStatus::converged) {
+          const auto polish_start = std::chrono::steady_clock::now();
+          std::vector<double> x = out.x, multipliers = out.equality_multipliers;
+          // The program's KKT residual is the friction law's (the same compliance ct0 and level
+          // f_ref): polished to a hundredth of the tolerance, not to round-off (each set's solves
+          // cost some hundred applies, each a pair of triangular solves on a finite body).
+          const PolishResult polish =
+              polish_on_active_set(condensed, x, multipliers, 1e-2 * solver.certificate_tol);
+          InnerResult polished;
+          polished.report = rep;
+          if (polish.improved) certify_point(x, multipliers, polished);
+          if (polish.improved && polished.report.certificate.worst() < rep.certificate.worst()) {
+            trial = std::move(polished);
+            rep.polished = true;
+            rep.objective = condensed.objective(x.data()) * ct0 * f_ref * f_ref * A;
+            rep.message += "; " + polish_summary(polish);
+          }
+          rep.time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - polish_start).count();
         }
-        for (std::size_t r = 0; r < row_mode.size() && r < out.equality_multipliers.size(); ++r)
-          // Stationarity: (Ct tau + W)/(ct0 f_ref) + alpha m/(ct0 f_ref) = lambda a, a = m A f_ref / S
-          trial.increment[row_mode[r]] = -out.equality_multipliers[r] * A * f_ref * f_ref * ct0 / row_scale[r];
-        // Our own certificate decides, as for the normal problem: `auto` falls back on it.
-        // On a window the slip is computed there alone: tau = 0 and f = 0 outside, where the
-        // certificate does not look at the slip (certify_friction).
-        rep.certificate = step_certificate(
-            trial.tau,
-            ops ? windowed_slip_increment(W, trial.tau, window, *ops->compliance, trial.increment)
-                : slip_increment(W, trial.tau, trial.increment),
-            f, modes);
-        const bool certified = rep.certificate.worst() <= solver.certificate_tol;
-        rep.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
-        if (!certified && out.success)
+        if (rep.status != SolveStatus::converged && out.success)
           rep.message += " (backend reported success but the certificate " +
                          format_number(rep.certificate.worst()) + " exceeds the tolerance)";
       }
@@ -410,10 +456,6 @@ struct TangentialProblem::Impl {
     // condensed compliance, no block), as for the normal problem (FiniteContact::solve_sparse).
     if (sparse && sparse->condensed_fallback && best.report.status != SolveStatus::converged &&
         solver.backend == "auto" && solver.fallback) {
-      ScaledOperator condensed_q(*Ct, 1.0 / ct0);
-      QuadraticProgram condensed = qp;
-      condensed.Q = &condensed_q;
-      condensed.block = nullptr;
       for (const char* backend : {"native", "nlopt"}) {
         attempt(backend, condensed, true, std::string(backend) + " (condensed program)");
         if (best.report.status == SolveStatus::converged) break;
@@ -881,6 +923,11 @@ void TangentialProblem::set_extrapolation(bool on) { impl_->extrapolate = on; }
 void TangentialProblem::set_windowing(bool on) { impl_->windowing = on; }
 
 void TangentialProblem::set_native_first(bool on) { impl_->native_first_always = on; }
+
+void TangentialProblem::set_exact_hessian_limit(int elements) {
+  impl_->exact_hessian_limit = impl_->comps * elements;
+  impl_->normal->set_exact_hessian_limit(elements);
+}
 
 void TangentialProblem::use_sparse_form(SparseTangentialForm form) {
   if (!impl_->given_operators) throw std::logic_error("tangential problem: the sparse form needs given compliances");

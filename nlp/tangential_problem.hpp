@@ -132,6 +132,12 @@ class TangentialProblem {
   /// `auto` tries the native solvers first for every solve, whatever the size (time stepping:
   /// every solve is warm-started, where they are the fastest); the others remain fallbacks.
   void set_native_first(bool on);
+  /// Ipopt on these programs with `solver.hessian` auto: the exact Hessian up to this many grid
+  /// elements (the normal problem's unknowns; the tangential program's, two per element in 3-D)
+  /// instead of SolveOptions' limit (measured on the half-space's FFT operator). A finite body's
+  /// condensed compliance costs a pair of triangular solves per apply, which limited memory
+  /// spends by the thousand, and its dense matrix one multi-column solve.
+  void set_exact_hessian_limit(int elements);
   /// Solve the normal problem and the tangential program by the sparse form (given compliances
   /// only): the certificates stay those of the condensed compliances.
   void use_sparse_form(SparseTangentialForm form);

@@ -137,6 +137,16 @@ void ElasticBody::deform(const Eigen::VectorXd& F, Eigen::VectorXd& u) const {
   u.noalias() -= R_ * r;
 }
 
+void ElasticBody::deform_columns(const Eigen::MatrixXd& F, Eigen::MatrixXd& u) const {
+  // deform() column by column: P F, the supported solve, P'u.
+  const Eigen::MatrixXd a = RMR_inv_ * (R_.transpose() * F);
+  Eigen::MatrixXd balanced = F - MR_ * a;
+  for (int s : supports_) balanced.row(s).setZero();
+  u = factor_->llt.solve(balanced);
+  const Eigen::MatrixXd r = RMR_inv_ * (MR_.transpose() * u);
+  u.noalias() -= R_ * r;
+}
+
 std::vector<Eigen::Matrix<double, 6, 1>> ElasticBody::element_stress(const Eigen::VectorXd& u) const {
   std::vector<Eigen::Matrix<double, 6, 1>> out(mesh_.elements.size());
   for (std::size_t e = 0; e < mesh_.elements.size(); ++e) {

@@ -36,6 +36,9 @@ class ElasticBody {
   /// u = P' Ks^-1 P F (see above): the deformation under a load of any resultant. Allocates
   /// nothing after the first call with the same sizes.
   void deform(const Eigen::VectorXd& F, Eigen::VectorXd& u) const;
+  /// The same for many loads at once, one per column: one multi-column solve with the kept
+  /// factor (BLAS 3 in the supernodes), much faster than a solve per column.
+  void deform_columns(const Eigen::MatrixXd& F, Eigen::MatrixXd& u) const;
   /// The rigid modes (3n x 6: translations x, y, z, rotations about x, y, z at the centre of mass).
   const Eigen::MatrixXd& rigid_modes() const { return R_; }
   /// The pieces of deform() for programs that keep the equilibrium as sparse equalities

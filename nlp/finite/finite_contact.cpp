@@ -29,6 +29,7 @@ FiniteContact::FiniteContact(const FeBodySpec& spec, const Grid& grid, const Ela
   body_normal_ = std::make_shared<BodyCompliance>(*body_, *face_, grid_, std::vector<int>{2});
   normal_compliance_ = std::make_shared<SumOperator>(hs, body_normal_);
   normal_ = std::make_unique<NormalProblem>(normal_compliance_, grid_, profile_heights());
+  normal_->set_exact_hessian_limit(static_cast<int>(kSaddleExactLimit));  // as the tangential program's below
 }
 
 FiniteNormalSolution FiniteContact::solve_normal(const NormalSpec& control, const SolverSpec& solver,
@@ -147,6 +148,24 @@ NormalSolution FiniteContact::solve_sparse_by(const std::string& backend, const 
   // residuals as for the condensed solvers, so (a) and (b) are judged alike.
   normal_->set_heights(h);
   sol.report.certificate = normal_->certify(sol.pressure, sol.approach, control);
+  // An interior point leaves the contact's edge elements off their bound by about mu / (their
+  // multiplier): a point Ipopt accepted that misses the certificate is finished by the
+  // active-set polish on the condensed program, kept when its certificate is the better one.
+  if (sol.report.certificate.worst() > solver.certificate_tol && o.success) {
+    NormalSolution polished = normal_->polish(sol.pressure, control, solver);
+    if (polished.report.polished && polished.report.certificate.worst() < sol.report.certificate.worst()) {
+      sol.pressure = std::move(polished.pressure);
+      sol.gap = std::move(polished.gap);
+      sol.approach = polished.approach;
+      sol.force = polished.force;
+      sol.report.objective = polished.report.objective;
+      sol.report.certificate = polished.report.certificate;
+      sol.report.polished = true;
+      sol.report.message += "; " + polished.report.message;
+      body_normal_->displacement(sol.pressure.data(), body_displacement);
+    }
+    sol.report.time_s += polished.report.time_s;
+  }
   const bool certified = sol.report.certificate.worst() <= solver.certificate_tol;
   sol.report.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
   if (!certified && o.success)
@@ -169,6 +188,11 @@ TangentialProblem& FiniteContact::tangential_problem(const FrictionLaw& friction
     auto body_t = std::make_shared<BodyCompliance>(*body_, *face_, grid_, std::vector<int>{0, 1});
     auto Ct = std::make_shared<SumOperator>(halfspace_tangential_, body_t);
     tangential_ = std::make_unique<TangentialProblem>(grid_, normal_compliance_, Ct, profile_heights(), friction);
+    // Ipopt on the condensed program: the exact Hessian while the dense compliance is as large
+    // as the sparse form's dense block (its cost: one multi-column solve of the kept factor, and
+    // a dense factorisation per iteration); limited memory beyond, whose every iteration costs
+    // an apply (a pair of triangular solves) and which takes them by the thousand.
+    tangential_->set_exact_hessian_limit(static_cast<int>(kSaddleExactLimit));
     if (program_ == "sparse") use_sparse_tangential();
   }
   return *tangential_;
