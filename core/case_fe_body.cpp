@@ -56,8 +56,8 @@ std::array<int, 3> read_elements(const JsonBlock& b) {
 
 FeBodySpec read_fe_body(const json& block, const std::string& case_dir) {
   const JsonBlock b(block, "fe_body");
-  b.allow({"shape", "size", "radius", "height", "mesh", "elements", "contact_size", "material", "regions", "density",
-           "program", "tilt", "load_line"});
+  b.allow({"shape", "size", "radius", "height", "mesh", "elements", "contact_size", "refine_radius", "material",
+           "regions", "density", "program", "tilt", "load_line"});
   FeBodySpec s;
   s.program = b.choice("program", s.program, {"condensed", "sparse"});
   const std::string shape = b.choice("shape", "hemisphere", {"block", "cylinder", "hemisphere", "mesh"});
@@ -94,6 +94,10 @@ FeBodySpec read_fe_body(const json& block, const std::string& case_dir) {
     }
   s.elements = read_elements(b);
   s.contact_size = b.has("contact_size") ? b.positive("contact_size") : 0.0;
+  if (b.has("refine_radius")) {
+    s.refine_radius = b.number("refine_radius");
+    if (!(*s.refine_radius >= 0.0)) throw InputError(b.key("refine_radius"), "must be a length >= 0");
+  }
   const double density = b.positive("density");
   s.material = read_body_material(b.child("material"), density);
   if (b.has("regions")) {
@@ -106,6 +110,10 @@ FeBodySpec read_fe_body(const json& block, const std::string& case_dir) {
     }
   }
   return s;
+}
+
+double grid_refine_radius(const Grid& grid) {
+  return std::max(0.0, std::min({-grid.x0, grid.x_max(), -grid.y0, grid.y_max()}));
 }
 
 void read_finite_blocks(const json& document, Case& c, const std::string& base_dir) {

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "elastic_stiffness.hpp"
+#include "grid.hpp"
 
 namespace dc {
 
@@ -29,6 +30,11 @@ struct FeBodySpec {
   std::string mesh_file;                      ///< shape mesh: a Gmsh file (tetrahedra)
   std::array<int, 3> elements{8, 8, 8};       ///< divisions of the extent: the coarse element size
   double contact_size = 0.0;                  ///< element size at the contact (0: coarse / 4)
+  /// Radius (m) of the disk about the body's lowest point (the contact face's centre, the grid's
+  /// origin) over which the face's elements keep `contact_size`; beyond it they grow with the
+  /// distance from that disk. Not given: the grid's reach (`grid_refine_radius`, taken by
+  /// FiniteContact); 0 refines the lowest point alone.
+  std::optional<double> refine_radius;
   fe::BodyMaterial material;
   std::vector<FeRegionSpec> regions;
   /// The program of the normal and tangential problems: "condensed" (the compliances C_hs +
@@ -41,6 +47,10 @@ struct FeBodySpec {
   std::array<double, 2> tilt{0.0, 0.0};
   std::optional<std::array<double, 2>> load_line;
 };
+
+/// The radius of the largest disk about the grid's origin inside the grid (0 when the origin lies
+/// outside it): where the contact can lie, so where the body's face must resolve it.
+double grid_refine_radius(const Grid& grid);
 
 /// Reads the "fe_body" block (key prefix "fe_body"); paths relative to `case_dir`.
 FeBodySpec read_fe_body(const nlohmann::json& block, const std::string& case_dir);

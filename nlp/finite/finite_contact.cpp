@@ -14,7 +14,9 @@ namespace dc {
 FiniteContact::FiniteContact(const FeBodySpec& spec, const Grid& grid, const Elastic& halfspace, OperatorKind kind)
     : grid_(grid), program_(spec.program), load_line_(spec.load_line), tilt_(spec.tilt) {
   const auto start = std::chrono::steady_clock::now();
-  fe::BodyMesh mesh = fe::mesh_body(spec);
+  FeBodySpec meshed = spec;  // the face refined over the grid unless the case says otherwise
+  if (!meshed.refine_radius) meshed.refine_radius = grid_refine_radius(grid);
+  fe::BodyMesh mesh = fe::mesh_body(meshed);
   mesh_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<fe::BodyMaterial> materials{spec.material};
   for (const auto& r : spec.regions) materials.push_back(r.material);

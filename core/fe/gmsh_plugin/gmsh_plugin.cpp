@@ -4,6 +4,7 @@
 // not pay Gmsh's start-up (OpenCASCADE, FLTK: about 0.2 s per process).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <limits>
 #include <mutex>
@@ -67,17 +68,36 @@ std::array<double, 3> extent_of(const FeBodySpec& s) {
   return {0.0, 0.0, 0.0};
 }
 
-/// Element size growing from `contact_size` at the lowest point to the coarse size.
+/// Element size `contact_size` over the disk of `refine_radius` about the lowest point (where
+/// the contact grid lies: the face resolves the grid's fields there), growing from it at
+/// kSizeGrowth per unit distance up to the coarse size. Measured on a steel hemisphere under a
+/// shift (R / a = 54, tractions against Cattaneo-Mindlin, L2): the lowest point alone refined at
+/// a growth of 0.3 gave 27 % (11k dofs) and 15 % at 4 x the elements (27k dofs; the contact's
+/// edge kept 0.3 a); the grid's disk at 0.6 gives 15 % with 12k dofs and 8 % with 20k.
+constexpr double kSizeGrowth = 0.6;
+
+/// A length for Gmsh's expression in full precision (std::to_string keeps six decimals: 0 for a
+/// micrometre body).
+std::string expression_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
 void set_size_field(const FeBodySpec& s) {
   const double h = coarse_size(s, extent_of(s));
   const double h0 = s.contact_size > 0.0 ? std::min(s.contact_size, h) : 0.25 * h;
+  const double r0 = s.refine_radius.value_or(0.0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   gmsh::option::setNumber("Mesh.MeshSizeMax", h);
   gmsh::option::setNumber("Mesh.MeshSizeMin", h0);
   const int field = gmsh::model::mesh::field::add("MathEval");
-  const std::string expr = "Min(" + std::to_string(h) + ", " + std::to_string(h0) + " + 0.3 * Sqrt(x*x + y*y + z*z))";
+  // The distance from the disk r <= r0 in the plane z = 0 of the lowest point.
+  const std::string distance = "Sqrt(Max(0, Sqrt(x*x + y*y) - " + expression_number(r0) + ")^2 + z*z)";
+  const std::string expr = "Min(" + expression_number(h) + ", " + expression_number(h0) + " + " +
+                           expression_number(kSizeGrowth) + " * " + distance + ")";
   gmsh::model::mesh::field::setString(field, "F", expr);
   gmsh::model::mesh::field::setAsBackgroundMesh(field);
 }
