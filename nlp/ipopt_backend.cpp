@@ -22,6 +22,7 @@
 
 #include "freed_memory_kept.hpp"
 #include "ipopt_shared.hpp"
+#include "mumps_ordering_hook.hpp"
 #include "quadratic_program.hpp"
 #include "sparse_block.hpp"
 #include "interrupt.hpp"
@@ -317,6 +318,9 @@ SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& op
     // application (declared after this guard) is gone.
     std::optional<FreedMemoryKept> kept;
     if (qp.block) kept.emplace();
+    // ... and MUMPS takes our ordering of its KKT matrix (mumps_ordering_hook.hpp).
+    std::optional<MumpsOrderedByUs> ordered;
+    if (qp.block) ordered.emplace();
     if (options.hessian != "auto" && options.hessian != "exact" && options.hessian != "limited-memory") {
       out.message = "Ipopt: unknown hessian option '" + options.hessian + "'";
       return out;

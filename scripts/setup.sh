@@ -26,6 +26,7 @@ PACKAGES=(
   libopenmpi-dev openmpi-bin
   python3-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib
   libgmsh-dev libsuitesparse-dev  # finite-element bodies (DYNCONTACT_WITH_FE)
+  libmetis-dev  # METIS orders the sparse saddle form for MUMPS (nlp/mumps_ordering_hook.hpp)
   libopenblas0-pthread  # an optimised BLAS for CHOLMOD and MUMPS (reference BLAS: 6x slower factorisations)
   time  # /usr/bin/time: peak memory in scripts/bench.sh finite
 )

@@ -9,6 +9,7 @@
 #include <cstdlib>
 
 #include "errors.hpp"
+#include "mumps_ordering_hook.hpp"
 #include "saddle_form.hpp"
 #include "sparse_tangential_pair.hpp"
 
@@ -23,9 +24,15 @@ constexpr std::array<int, 3> kSmall{2, 2, 1};  // about 4k dofs
 constexpr double kHalfWidthTest = fe::testing::kHalfWidth;
 
 TEST(FiniteSparseTangential, ShiftByForceAgreesWithTheCondensedProgram) {
+  const long ordered_before = mumps_analyses_ordered_by_us();
   const fe::testing::Pair r = solve_both(shift_by_force(0.6), 8, kSmall, "ipopt");
   expect_same_point(r);
   EXPECT_EQ(r.sparse.report.backend, "ipopt");
+  // MUMPS took our ordering (nlp/mumps_ordering_hook.hpp) for the normal and the tangential
+  // program's KKT matrix.
+  if (mumps_ordering_hook_built()) {
+    EXPECT_GE(mumps_analyses_ordered_by_us() - ordered_before, 2);
+  }
   EXPECT_LT(r.sparse.amplitudes[0], 0.0) << "a force +F_x on the body meets a shift -s_x";
 }
 
