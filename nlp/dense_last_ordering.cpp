@@ -14,38 +14,16 @@ using idx_t = int;  // no METIS in this build: dense_last_ordering gives no orde
 namespace dc {
 
 namespace {
-
-// A row is far above the typical degree beyond both (dense_rows_of_graph).
-constexpr double kDenseOverMedian = 8.0;
-constexpr std::int64_t kDenseDegreeFloor = 200;
-// AMD's threshold for dense rows: 10 sqrt(n) (SuiteSparse AMD_DEFAULT_DENSE).
-constexpr double kHubOverSqrtN = 10.0;
-
-std::int64_t median_degree(const std::vector<std::int64_t>& start) {
-  const std::size_t n = start.size() - 1;
-  if (n == 0) return 0;
-  std::vector<std::int64_t> degree(n);
-  for (std::size_t i = 0; i < n; ++i) degree[i] = start[i + 1] - start[i];
-  std::nth_element(degree.begin(), degree.begin() + static_cast<std::ptrdiff_t>(n / 2), degree.end());
-  return degree[n / 2];
-}
-
+// AMD's threshold for dense rows (SuiteSparse AMD_DEFAULT_DENSE, at least 16).
+constexpr double kDenseOverSqrtN = 10.0;
+constexpr double kDenseDegreeFloor = 16.0;
 }  // namespace
 
-std::vector<bool> dense_rows_of_graph(const std::vector<std::int64_t>& start, const std::vector<int>& adjacency) {
+std::vector<bool> dense_rows_of_graph(const std::vector<std::int64_t>& start) {
   const std::size_t n = start.size() - 1;
-  const double high = std::max<double>(kDenseOverMedian * static_cast<double>(median_degree(start)),
-                                       static_cast<double>(kDenseDegreeFloor));
-  const double hub = kHubOverSqrtN * std::sqrt(static_cast<double>(n));
-  std::vector<bool> candidate(n), dense(n);
-  for (std::size_t i = 0; i < n; ++i) candidate[i] = static_cast<double>(start[i + 1] - start[i]) > high;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!candidate[i]) continue;
-    const std::int64_t degree = start[i + 1] - start[i];
-    std::int64_t among = 0;
-    for (std::int64_t k = start[i]; k < start[i + 1]; ++k) among += candidate[static_cast<std::size_t>(adjacency[k])];
-    dense[i] = 2 * among > degree || static_cast<double>(degree) > hub;
-  }
+  const double dense_degree = std::max(kDenseDegreeFloor, kDenseOverSqrtN * std::sqrt(static_cast<double>(n)));
+  std::vector<bool> dense(n);
+  for (std::size_t i = 0; i < n; ++i) dense[i] = static_cast<double>(start[i + 1] - start[i]) > dense_degree;
   return dense;
 }
 
@@ -85,7 +63,7 @@ DenseLastOrdering dense_last_ordering(int n, std::int64_t entries, const int* ro
   adjacency.resize(static_cast<std::size_t>(kept));
   if (kept > std::numeric_limits<idx_t>::max()) return out;  // beyond METIS's indices
 
-  const std::vector<bool> dense = dense_rows_of_graph(unique_start, adjacency);
+  const std::vector<bool> dense = dense_rows_of_graph(unique_start);
   // The sparse rows renumbered 0.. in their order, their graph without the dense rows.
   std::vector<idx_t> local(size, -1);
   idx_t sparse = 0;

@@ -318,7 +318,8 @@ SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& op
     // application (declared after this guard) is gone.
     std::optional<FreedMemoryKept> kept;
     if (qp.block) kept.emplace();
-    // ... and MUMPS takes our ordering of its KKT matrix (mumps_ordering_hook.hpp).
+    // ... and MUMPS takes our ordering of its KKT matrix (mumps_ordering_hook.hpp: METIS's
+    // nested dissection; mumps_pivot_order below is what MUMPS does where the hook is not taken).
     std::optional<MumpsOrderedByUs> ordered;
     if (qp.block) ordered.emplace();
     if (options.hessian != "auto" && options.hessian != "exact" && options.hessian != "limited-memory") {

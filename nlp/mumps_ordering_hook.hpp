@@ -1,7 +1,8 @@
 #pragma once
 // MUMPS orders the KKT matrix of the finite body's sparse saddle form with our ordering
-// (nlp/dense_last_ordering.hpp: METIS's nested dissection without the dense half-space block,
-// that block last) instead of its own, within a scope.
+// (nlp/dense_last_ordering.hpp: METIS's nested dissection, the dense inertia-relief columns
+// last) instead of its own (SCOTCH: slower, and its result varied from run to run), within a
+// scope.
 //
 // Ipopt 3.11 takes MUMPS's ordering as a number (mumps_pivot_order) and offers no way to hand it
 // a permutation, and its linear-solver classes are not installed. So this library defines
