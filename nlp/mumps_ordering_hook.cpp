@@ -42,8 +42,9 @@ constexpr int kOrderingUsed = 7 - 1;    // INFOG(7)
 constexpr int kUserOrdering = 1;
 
 void analyse_with_our_ordering(DMUMPS_STRUC_C* mumps) {
+  // MUMPS 5 reads NNZ, or NZ when NNZ is 0 (Ipopt 3.11 sets NZ only).
   const long long entries = mumps->nnz > 0 ? mumps->nnz : mumps->nz;
-  const DenseLastOrdering order = dense_last_ordering(mumps->n, entries, mumps->irn, mumps->jcn);
+  DenseLastOrdering order = dense_last_ordering(mumps->n, entries, mumps->irn, mumps->jcn);
   if (order.position.empty()) {  // METIS failed: MUMPS's own ordering
     real_dmumps()(mumps);
     return;
@@ -51,7 +52,7 @@ void analyse_with_our_ordering(DMUMPS_STRUC_C* mumps) {
   const int asked = mumps->icntl[kOrdering];
   MUMPS_INT* const asked_permutation = mumps->perm_in;
   mumps->icntl[kOrdering] = kUserOrdering;
-  mumps->perm_in = const_cast<MUMPS_INT*>(order.position.data());
+  mumps->perm_in = order.position.data();
   real_dmumps()(mumps);
   const bool ours = mumps->info[0] >= 0 && mumps->infog[kOrderingUsed] == kUserOrdering;
   mumps->icntl[kOrdering] = asked;  // PERM_IN is read by the analysis only
