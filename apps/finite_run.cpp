@@ -15,6 +15,7 @@
 #include "finite_contact.hpp"
 #include "plot_writer.hpp"
 #include "progress.hpp"
+#include "result_limits.hpp"
 #include "static_fields.hpp"
 #include "summary_writer.hpp"
 #include "tangential_run.hpp"
@@ -52,6 +53,18 @@ nlohmann::json solve_tangential_steps(const Case& c, FiniteContact& fc, Progress
   if (t.has_history) summary["steps"] = steps;
   summary.erase("step");
   return summary;
+}
+
+/// The mean size of the face's elements over the contact (elements with p above the threshold).
+double contact_face_element_size(const fe::ContactFace& face, const StaticFields& fields) {
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t k = 0; k < fields.p.size(); ++k)
+    if (fields.p[k] > fields.contact_threshold && face.face_element_sizes()[k] > 0.0) {
+      sum += face.face_element_sizes()[k];
+      ++n;
+    }
+  return n > 0 ? sum / n : 0.0;
 }
 
 /// A solved finite case: what run_static returns, and the body for body.vtu.
@@ -101,6 +114,7 @@ FiniteRun solve_finite(const Case& c, bool progress) {
   s["mesh_time_s"] = fc.mesh_seconds();
   s["factorisation_time_s"] = fc.body().factorisation_seconds();
   s["program"] = c.fe_body->program;
+  s["contact_face_element_size"] = contact_face_element_size(fc.face(), fields);
   s["tilt"] = {fc.tilt()[0], fc.tilt()[1]};
   out.run.fields.push_back(std::move(fields));
   out.run.converged = report.status == SolveStatus::converged;
@@ -133,6 +147,8 @@ int run_finite(const Case& c, const std::string& dir, bool quiet) {
     files["plots"] = plots;
   }
   s["files"] = files;
+  const std::vector<ResultLimit> limits = result_limits(c, measured_contact_size(c, s));
+  s["limits"] = limits_json(limits);
   const std::string summary_path = write_summary(dir, s);
   if (!quiet) {
     std::printf("%s: %s (%s, %d iterations, %.3g s; certificate %.2e)\n", c.name.c_str(), to_string(report.status),
@@ -147,6 +163,7 @@ int run_finite(const Case& c, const std::string& dir, bool quiet) {
     std::printf("wrote %s\n", summary_path.c_str());
     std::fflush(stdout);
   }
+  if (report_limits(limits, dir)) return kExitBadInput;
   if (report.status != SolveStatus::converged) {
     if (c.solver.accept_unconverged) return kExitOk;
     std::cerr << "error: solver: did not converge (" << report.message << "); results written to " << dir << "\n";

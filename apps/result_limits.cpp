@@ -17,9 +17,14 @@ bool unbounded_profile(const Case& c) {
          (p.type == ProfileType::quadratic && (p.a == 0.0 || p.b == 0.0));
 }
 
-/// Radii of curvature along x and y (0: none, e.g. a flat punch or a table).
+/// Radii of curvature along x and y (0: none, e.g. a flat punch or a table; an fe_body: its
+/// hemisphere's radius).
 void curvature_radii(const Case& c, double& rx, double& ry) {
   rx = ry = 0.0;
+  if (c.fe_body) {
+    if (c.fe_body->shape == FeShape::hemisphere) rx = ry = c.fe_body->radius;
+    return;
+  }
   const ProfileSpec& p = c.profile;
   if (p.type == ProfileType::flat_punch || p.type == ProfileType::table) return;
   double A = 0.0, B = 0.0;
@@ -61,6 +66,18 @@ std::vector<ResultLimit> result_limits(const Case& c, const ContactSize& size) {
                           "peak pressure can be off by a large factor); refine the grid (8 or more across)",
                           across),
                    false});
+  // An fe_body's face elements wider than a third of the contact's half-width: the body's
+  // compliance, and so the pressure, is not resolved (Hertz hemispheres, pressure against Hertz
+  // in L2: 3 % at 0.17, 7 % at 0.37, 16-18 % at 1; docs/finite.md, "Choosing contact_size").
+  const double half_width = c.dimension == 3 ? std::min(size.half_width_x, size.half_width_y) : size.half_width_x;
+  if (size.face_element_size > 0.0 && half_width > 0.0 && size.face_element_size > half_width / 3.0)
+    out.push_back({"fe_body.contact_size",
+                   format("the body's face elements over the contact are %.3g m, %.2g times the contact's "
+                          "half-width: the pressure is not resolved (expect errors of 5 %% or more); give "
+                          "fe_body.contact_size of a sixth of the half-width or less, or a grid closer to the "
+                          "contact (the default is an eighth of the grid's reach)",
+                          size.face_element_size, size.face_element_size / half_width),
+                   false});
   double rx = 0.0, ry = 0.0;
   curvature_radii(c, rx, ry);
   double ratio = 0.0;
@@ -94,6 +111,7 @@ ContactSize measured_contact_size(const Case& c, const nlohmann::json& s) {
   size.half_width_x = s.value(two_d ? "contact_half_width" : "contact_half_width_x", 0.0);
   size.half_width_y = two_d ? 0.0 : s.value("contact_half_width_y", 0.0);
   size.edge_fraction = s.value("contact_edge_fraction", 0.0);
+  size.face_element_size = s.value("contact_face_element_size", 0.0);
   if (s.value("n_contact", 0) > 0 && s.contains("elements_across_contact")) {
     const auto& n = s["elements_across_contact"];
     size.across_x = n.is_array() ? n[0].get<int>() : n.get<int>();

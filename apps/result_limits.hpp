@@ -1,7 +1,8 @@
 #pragma once
 // Results the program knows to be wrong or outside its model, found from the contact's size:
-// a contact truncated by the grid's edge, a contact too coarse to resolve, and a contact as
-// large as the body's radius of curvature (linear elasticity and the half-space void).
+// a contact truncated by the grid's edge, a contact too coarse to resolve (by the grid, or by an
+// fe_body's face elements), and a contact as large as the body's radius of curvature (linear
+// elasticity and the half-space void).
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@ struct ContactSize {
   double half_width_x = 0.0, half_width_y = 0.0;  ///< m (2-D: y unused)
   double edge_fraction = 0.0;   ///< of the grid's edge elements in contact (estimates: 0 or 1)
   int across_x = -1, across_y = -1;  ///< elements across the contact (-1: not known)
+  double face_element_size = 0.0;    ///< an fe_body's face elements over the contact (m; 0: none)
 };
 
 std::vector<ResultLimit> result_limits(const Case& c, const ContactSize& size);

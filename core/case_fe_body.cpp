@@ -116,6 +116,8 @@ double grid_refine_radius(const Grid& grid) {
   return std::max(0.0, std::min({-grid.x0, grid.x_max(), -grid.y0, grid.y_max()}));
 }
 
+double grid_contact_size(const Grid& grid) { return grid_refine_radius(grid) / 8.0; }
+
 void read_finite_blocks(const json& document, Case& c, const std::string& base_dir) {
   const JsonBlock top(document, "");
   // A dynamic case with an fe_body: the body's motion sets the approach (no normal block).
@@ -131,6 +133,7 @@ void read_finite_blocks(const json& document, Case& c, const std::string& base_d
   if (JsonBlock(top.at("grid"), "grid").has("extent"))
     throw InputError("grid.extent", "problem " + problem + " needs the grid's x and y bounds (no Hertz estimate of its size)");
   c.grid = read_grid(top.at("grid"), c, true);
+  c.allow_edge_contact = JsonBlock(top.at("grid"), "grid").boolean_or("allow_edge_contact", false);
   if (dynamic && (c.fe_body->load_line || c.fe_body->tilt != std::array<double, 2>{0.0, 0.0}))
     throw InputError(c.fe_body->load_line ? "fe_body.load_line" : "fe_body.tilt",
                      "a dynamic body's tilt is its motion's: not given");

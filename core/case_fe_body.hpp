@@ -29,7 +29,10 @@ struct FeBodySpec {
   double height = 0.0;                        ///< cylinder
   std::string mesh_file;                      ///< shape mesh: a Gmsh file (tetrahedra)
   std::array<int, 3> elements{8, 8, 8};       ///< divisions of the extent: the coarse element size
-  double contact_size = 0.0;                  ///< element size at the contact (0: coarse / 4)
+  double contact_size = 0.0;                  ///< element size at the contact (0: the default below)
+  /// Not given `contact_size`: the face's elements at the contact are coarse / 4, and at most this
+  /// (0: no bound). FiniteContact sets it from the grid (`grid_contact_size`).
+  double default_contact_size_bound = 0.0;
   /// Radius (m) of the disk about the body's lowest point (the contact face's centre, the grid's
   /// origin) over which the face's elements keep `contact_size`; beyond it they grow with the
   /// distance from that disk. Not given: the grid's reach (`grid_refine_radius`, taken by
@@ -51,6 +54,13 @@ struct FeBodySpec {
 /// The radius of the largest disk about the grid's origin inside the grid (0 when the origin lies
 /// outside it): where the contact can lie, so where the body's face must resolve it.
 double grid_refine_radius(const Grid& grid);
+
+/// The default element size at the contact: an eighth of `grid_refine_radius` (two cells of a
+/// 32 x 32 grid about the origin), 0 when the origin lies outside the grid. The grid spans the
+/// contact with a margin, so this resolves the contact's radius a with some six elements:
+/// measured on Hertz hemispheres (docs/finite.md, "Choosing contact_size"), p0 within 1 % and
+/// the pressure within 3 % (L2), where the coarse / 4 of a large body gave 6-8.5 % and 16 %.
+double grid_contact_size(const Grid& grid);
 
 /// Reads the "fe_body" block (key prefix "fe_body"); paths relative to `case_dir`.
 FeBodySpec read_fe_body(const nlohmann::json& block, const std::string& case_dir);

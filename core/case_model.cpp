@@ -43,7 +43,7 @@ Elastic parse_elastic(const json& j, const std::string& path) {
 MaterialPair parse_materials(const json& j, bool body_from_mesh = false) {
   JsonBlock o(j, "materials");
   if (body_from_mesh) {
-    o.allow({"base"});
+    o.allow({"base", "allow_large_strain"});
     return MaterialPair{Elastic::make_rigid(), parse_elastic(o.at("base"), "materials.base")};
   }
   o.allow({"body", "base", "allow_large_strain"});
@@ -328,7 +328,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   const bool fe = finite || (c.problem == ProblemKind::dynamic && top.has("fe_body"));
   if (required("materials")) {
     c.materials = parse_materials(top.at("materials"), fe);
-    if (!fe) c.allow_large_strain = JsonBlock(top.at("materials"), "materials").boolean_or("allow_large_strain", false);
+    c.allow_large_strain = JsonBlock(top.at("materials"), "materials").boolean_or("allow_large_strain", false);
   }
   const bool has_profile = required("profile");
   if (has_profile) c.profile = read_profile(top.at("profile"), c.dimension, base_dir);

@@ -79,6 +79,11 @@ std::array<double, 3> projected_barycentric(const FaceTriangle& t, double x, dou
   return {1.0 - l1 - l2, l1, l2};
 }
 
+double mean_edge_length(const FaceTriangle& t) {
+  const auto& c = t.corners;
+  return ((c[1] - c[0]).norm() + (c[2] - c[1]).norm() + (c[0] - c[2]).norm()) / 3.0;
+}
+
 }  // namespace
 
 ContactFace::ContactFace(const BodyMesh& mesh, const Grid& grid, int samples) : grid_(grid) {
@@ -126,6 +131,7 @@ ContactFace::ContactFace(const BodyMesh& mesh, const Grid& grid, int samples) : 
   };
 
   heights_.assign(N, std::numeric_limits<double>::infinity());
+  face_sizes_.assign(N, 0.0);
   std::vector<Eigen::Triplet<double>> entries;
   const double w = grid.area() / (samples * samples);
   bool any = false;
@@ -138,6 +144,7 @@ ContactFace::ContactFace(const BodyMesh& mesh, const Grid& grid, int samples) : 
       const double zc = locate(k, grid.xc(i), grid.yc(j), face, l);
       if (face >= 0) {
         heights_[k] = zc - lowest_z_;
+        face_sizes_[k] = mean_edge_length(faces[face]);
         any = true;
       }
       for (int sj = 0; sj < samples; ++sj)

@@ -24,6 +24,9 @@ class ContactFace {
   /// where no face lies over the centre (cannot touch).
   const std::vector<double>& heights() const { return heights_; }
   double lowest_z() const { return lowest_z_; }
+  /// The mean edge length (m) of the face's triangle over each grid element centre (0 where no
+  /// face lies over it): how finely the body resolves the contact there.
+  const std::vector<double>& face_element_sizes() const { return face_sizes_; }
   /// F(3 i + component) += scale sum_k B_ik t_k for the traction component t (one value per element).
   void add_forces(const double* traction, int component, double scale, Eigen::VectorXd& F) const;
   /// w_k = (B'u_component)_k / A: the mean displacement component over each grid element.
@@ -36,6 +39,7 @@ class ContactFace {
   Grid grid_;
   Eigen::SparseMatrix<double, Eigen::RowMajor> Bt_;  // grid elements x nodes
   std::vector<double> heights_;
+  std::vector<double> face_sizes_;
   double lowest_z_ = 0.0;
   std::size_t n_triangles_ = 0;
 };

@@ -57,6 +57,48 @@ TEST_F(FiniteCli, HemisphereExampleSolvesWithBodyOutputs) {
   EXPECT_NEAR(s["max_pressure"].get<double>(), h.p0, 0.05 * h.p0);
 }
 
+TEST_F(FiniteCli, CoarseContactFaceIsAWarningNamingContactSize) {
+  // Face elements as large as the contact (a = 0.60 mm): the pressure is not resolved. The run
+  // finishes (exit 0) and says so on stderr and in summary.json's limits; the example's own
+  // contact_size (a / 4) gives no warning.
+  const dc::test::CliResult r =
+      run("solve " + case_file([](json& d) { d["fe_body"]["contact_size"] = 6e-4; }) + " --out coarse");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: fe_body.contact_size:"), std::string::npos) << r.err;
+  const json s = json::parse(dc::test::slurp(dir_ / "coarse" / "summary.json"));
+  ASSERT_EQ(s["limits"].size(), 1u) << s["limits"].dump();
+  EXPECT_EQ(s["limits"][0]["key"], "fe_body.contact_size");
+  EXPECT_GT(s["contact_face_element_size"].get<double>(), 2e-4);
+
+  const dc::test::CliResult fine = run("solve " + case_file([](json&) {}) + " --out fine");
+  ASSERT_EQ(fine.code, 0) << fine.err;
+  EXPECT_EQ(fine.err.find("warning: fe_body.contact_size"), std::string::npos) << fine.err;
+  const json f = json::parse(dc::test::slurp(dir_ / "fine" / "summary.json"));
+  EXPECT_TRUE(f["limits"].empty()) << f["limits"].dump();
+  EXPECT_LT(f["contact_face_element_size"].get<double>(), 2e-4);
+}
+
+TEST_F(FiniteCli, ContactTruncatedByTheGridIsAnErrorUnlessAccepted) {
+  // The example's contact (a = 0.60 mm) on a grid of +-0.45 mm: the pressure is cut at the
+  // grid's edge. As for the local problems: exit 2 naming grid, results written; accepted with
+  // grid.allow_edge_contact (a warning).
+  const auto narrow = [](json& d) {
+    d["grid"]["x"] = {-4.5e-4, 4.5e-4};
+    d["grid"]["y"] = {-4.5e-4, 4.5e-4};
+  };
+  const dc::test::CliResult r = run("solve " + case_file(narrow) + " --out cut");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("error: grid: the contact reaches the edge of the grid"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "cut" / "summary.json"));
+
+  const dc::test::CliResult accepted = run("solve " + case_file([&](json& d) {
+                                             narrow(d);
+                                             d["grid"]["allow_edge_contact"] = true;
+                                           }) + " --out accepted");
+  EXPECT_EQ(accepted.code, 0) << accepted.err;
+  EXPECT_NE(accepted.err.find("warning: grid: the contact reaches the edge"), std::string::npos) << accepted.err;
+}
+
 TEST_F(FiniteCli, ValidateDescribesTheFiniteElementBody) {
   const dc::test::CliResult r =
       run("validate " + dc::test::shell_quote(dc::test::example_path("finite-hemisphere")));

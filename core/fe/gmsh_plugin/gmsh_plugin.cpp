@@ -86,7 +86,9 @@ std::string expression_number(double v) {
 
 void set_size_field(const FeBodySpec& s) {
   const double h = coarse_size(s, extent_of(s));
-  const double h0 = s.contact_size > 0.0 ? std::min(s.contact_size, h) : 0.25 * h;
+  double h0 = 0.25 * h;
+  if (s.contact_size > 0.0) h0 = std::min(s.contact_size, h);
+  else if (s.default_contact_size_bound > 0.0) h0 = std::min(h0, s.default_contact_size_bound);
   const double r0 = s.refine_radius.value_or(0.0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
