@@ -1,10 +1,12 @@
 #include "finite_run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <utility>
 
 #include "cli_common.hpp"
 #include "errors.hpp"
@@ -74,10 +76,11 @@ struct FiniteRun {
   Eigen::VectorXd body_u;
 };
 
-FiniteRun solve_finite(const Case& c, bool progress) {
+/// Meshes `body` (the case's fe_body, or its remesh) and solves the case on it.
+FiniteRun solve_finite_on(const Case& c, const FeBodySpec& body, bool progress) {
   const auto start = std::chrono::steady_clock::now();
   FiniteRun out;
-  out.contact = std::make_unique<FiniteContact>(*c.fe_body, c.grid, c.materials.base,
+  out.contact = std::make_unique<FiniteContact>(body, c.grid, c.materials.base,
                                                 c.solver.operator_kind == "dense" ? OperatorKind::dense
                                                 : c.solver.operator_kind == "fft" ? OperatorKind::fft
                                                                                    : OperatorKind::automatic);
@@ -119,6 +122,52 @@ FiniteRun solve_finite(const Case& c, bool progress) {
   out.run.fields.push_back(std::move(fields));
   out.run.converged = report.status == SolveStatus::converged;
   out.run.interrupted = interrupt_requested();
+  return out;
+}
+
+/// The remesh refines the face over the disk of kRemeshRadius times the larger half-width found.
+constexpr double kRemeshRadius = 1.5;
+
+/// The contact's half-widths found by the first solve, smaller first: the smaller (an ellipse's
+/// minor semi-axis) sets the element size, the larger the refined disk.
+std::pair<double, double> found_half_widths(const nlohmann::json& s) {
+  const double x = s.value("contact_half_width_x", 0.0), y = s.value("contact_half_width_y", 0.0);
+  return std::minmax(x, y);
+}
+
+/// The contact_size of a remesh when the case leaves it to the default and the face's elements
+/// came out coarser than kFaceResolvedShare of the contact's half-width (a grid wide against
+/// its contact); 0 when none is needed or it would not help (bounded below by half a grid cell:
+/// finer faces cannot show on the grid).
+double remesh_contact_size(const Case& c, const nlohmann::json& s) {
+  if (c.fe_body->contact_size > 0.0) return 0.0;  // the case's own choice: a warning, no remesh
+  const double half_width = found_half_widths(s).first;
+  const double face = s.value("contact_face_element_size", 0.0);
+  if (!(half_width > 0.0 && face > kFaceResolvedShare * half_width)) return 0.0;
+  const double size = std::max(kRemeshShare * half_width, 0.5 * std::min(c.grid.dx, c.grid.dy));
+  return size < 0.8 * face ? size : 0.0;
+}
+
+/// Solves the case; with the default contact_size, once more on a face remeshed to the contact
+/// found when the first mesh did not resolve it (summary.json's "remeshed").
+FiniteRun solve_finite(const Case& c, bool progress) {
+  FiniteRun first = solve_finite_on(c, *c.fe_body, progress);
+  const double size = first.run.interrupted ? 0.0 : remesh_contact_size(c, first.run.summary);
+  if (size == 0.0) {
+    first.run.summary["remeshed"] = false;
+    return first;
+  }
+  if (progress)
+    std::fprintf(stderr, "remeshing: the face's elements (%.3g m) are coarse for the contact found; contact_size %.3g m\n",
+                 first.run.summary["contact_face_element_size"].get<double>(), size);
+  FeBodySpec refined = *c.fe_body;
+  refined.contact_size = size;
+  if (!refined.refine_radius)  // the contact found, with a margin, rather than the whole grid
+    refined.refine_radius = std::min(grid_refine_radius(c.grid), kRemeshRadius * found_half_widths(first.run.summary).second);
+  FiniteRun out = solve_finite_on(c, refined, progress);
+  out.run.report.time_s += first.run.report.time_s;
+  out.run.summary["solver"]["time_s"] = out.run.report.time_s;
+  out.run.summary["remeshed"] = true;
   return out;
 }
 

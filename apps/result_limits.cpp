@@ -66,11 +66,10 @@ std::vector<ResultLimit> result_limits(const Case& c, const ContactSize& size) {
                           "peak pressure can be off by a large factor); refine the grid (8 or more across)",
                           across),
                    false});
-  // An fe_body's face elements wider than a third of the contact's half-width: the body's
-  // compliance, and so the pressure, is not resolved (Hertz hemispheres, pressure against Hertz
-  // in L2: 3 % at 0.17, 7 % at 0.37, 16-18 % at 1; docs/finite.md, "Choosing contact_size").
+  // An fe_body's face elements too wide for the contact: the body's compliance, and so the
+  // pressure, is not resolved (kFaceResolvedShare).
   const double half_width = c.dimension == 3 ? std::min(size.half_width_x, size.half_width_y) : size.half_width_x;
-  if (size.face_element_size > 0.0 && half_width > 0.0 && size.face_element_size > half_width / 3.0)
+  if (size.face_element_size > 0.0 && half_width > 0.0 && size.face_element_size > kFaceResolvedShare * half_width)
     out.push_back({"fe_body.contact_size",
                    format("the body's face elements over the contact are %.3g m, %.2g times the contact's "
                           "half-width: the pressure is not resolved (expect errors of 5 %% or more); give "

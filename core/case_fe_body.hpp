@@ -62,6 +62,14 @@ double grid_refine_radius(const Grid& grid);
 /// the pressure within 3 % (L2), where the coarse / 4 of a large body gave 6-8.5 % and 16 %.
 double grid_contact_size(const Grid& grid);
 
+/// The face's elements over the contact resolve it when their mean edge is at most this share of
+/// the contact's half-width (Hertz hemispheres, pressure in L2: 3 % at 0.17, 7 % at 0.37, 16 % at
+/// 1; docs/finite.md, "Choosing contact_size"): beyond it a run warns, or remeshes when the
+/// case leaves contact_size to the default.
+constexpr double kFaceResolvedShare = 1.0 / 3.0;
+/// The contact_size of that remesh, as a share of the measured half-width.
+constexpr double kRemeshShare = 1.0 / 6.0;
+
 /// Reads the "fe_body" block (key prefix "fe_body"); paths relative to `case_dir`.
 FeBodySpec read_fe_body(const nlohmann::json& block, const std::string& case_dir);
 

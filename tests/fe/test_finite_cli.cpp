@@ -59,8 +59,8 @@ TEST_F(FiniteCli, HemisphereExampleSolvesWithBodyOutputs) {
 
 TEST_F(FiniteCli, CoarseContactFaceIsAWarningNamingContactSize) {
   // Face elements as large as the contact (a = 0.60 mm): the pressure is not resolved. The run
-  // finishes (exit 0) and says so on stderr and in summary.json's limits; the example's own
-  // contact_size (a / 4) gives no warning.
+  // finishes (exit 0) and says so on stderr and in summary.json's limits; the example, with the
+  // default contact_size (an eighth of the grid's reach: a / 5), gives no warning.
   const dc::test::CliResult r =
       run("solve " + case_file([](json& d) { d["fe_body"]["contact_size"] = 6e-4; }) + " --out coarse");
   ASSERT_EQ(r.code, 0) << r.err;
@@ -69,6 +69,7 @@ TEST_F(FiniteCli, CoarseContactFaceIsAWarningNamingContactSize) {
   ASSERT_EQ(s["limits"].size(), 1u) << s["limits"].dump();
   EXPECT_EQ(s["limits"][0]["key"], "fe_body.contact_size");
   EXPECT_GT(s["contact_face_element_size"].get<double>(), 2e-4);
+  EXPECT_FALSE(s["remeshed"].get<bool>());  // a given contact_size is the case's choice
 
   const dc::test::CliResult fine = run("solve " + case_file([](json&) {}) + " --out fine");
   ASSERT_EQ(fine.code, 0) << fine.err;
@@ -76,6 +77,30 @@ TEST_F(FiniteCli, CoarseContactFaceIsAWarningNamingContactSize) {
   const json f = json::parse(dc::test::slurp(dir_ / "fine" / "summary.json"));
   EXPECT_TRUE(f["limits"].empty()) << f["limits"].dump();
   EXPECT_LT(f["contact_face_element_size"].get<double>(), 2e-4);
+}
+
+TEST_F(FiniteCli, DefaultFaceIsRemeshedToAContactSmallAgainstTheGrid) {
+  // The example on a grid three times its contact's radius (a = 0.60 mm, +-1.8 mm, 48 x 48): the
+  // grid's default contact_size (reach / 8 = 0.37 a) does not resolve the contact, so the run
+  // meshes the face again at a sixth of the half-width it found and solves once more. Then no
+  // warning, the face within a third of the half-width, and Hertz for the pair: p0 within 3 %
+  // (the mesh error at a / 6, docs/finite.md).
+  const dc::test::CliResult r = run("solve " + case_file([](json& d) {
+                                      d.at("fe_body").erase("contact_size");
+                                      d["grid"] = {{"nx", 48}, {"ny", 48}, {"x", {-1.8e-3, 1.8e-3}}, {"y", {-1.8e-3, 1.8e-3}}};
+                                    }) + " --out wide");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("remeshing:"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("warning:"), std::string::npos) << r.err;
+  const json s = json::parse(dc::test::slurp(dir_ / "wide" / "summary.json"));
+  EXPECT_TRUE(s["remeshed"].get<bool>());
+  EXPECT_TRUE(s["limits"].empty()) << s["limits"].dump();
+  const double half_width = s["contact_half_width_x"].get<double>();
+  EXPECT_LT(s["contact_face_element_size"].get<double>(), half_width / 3.0);
+  const dc::MaterialPair pair{dc::Elastic::from_E_nu(2.1e11, 0.3), dc::Elastic::from_E_nu(2.1e11, 0.3)};
+  const json c = dc::test::example_json("finite-hemisphere");
+  const auto h = dc::hertz::sphere(c["fe_body"]["radius"].get<double>(), c["normal"]["force"].get<double>(), pair.E_star());
+  EXPECT_NEAR(s["max_pressure"].get<double>(), h.p0, 0.03 * h.p0);
 }
 
 TEST_F(FiniteCli, ContactTruncatedByTheGridIsAnErrorUnlessAccepted) {
