@@ -140,7 +140,8 @@ std::pair<double, double> found_half_widths(const nlohmann::json& s) {
 /// its contact); 0 when none is needed or it would not help (bounded below by half a grid cell:
 /// finer faces cannot show on the grid).
 double remesh_contact_size(const Case& c, const nlohmann::json& s) {
-  if (c.fe_body->contact_size > 0.0) return 0.0;  // the case's own choice: a warning, no remesh
+  // The case's own choice, or its own mesh file: a warning, no remesh.
+  if (c.fe_body->contact_size > 0.0 || c.fe_body->shape == FeShape::mesh) return 0.0;
   const double half_width = found_half_widths(s).first;
   const double face = s.value("contact_face_element_size", 0.0);
   if (!(half_width > 0.0 && face > kFaceResolvedShare * half_width)) return 0.0;
