@@ -90,6 +90,15 @@ int run_validate(const ValidateArgs& args) {
                   "dy = %.4g m\n",
                   g.nx, g.ny, g.size(), g.x0, g.x_max(), g.y0, g.y_max(), g.dx, g.dy);
   }
+  if (c.fe_body && c.fe_body->shape != FeShape::mesh) {
+    if (c.fe_body->contact_size > 0.0)
+      std::printf("  face:     contact_size %.4g m (given)\n", c.fe_body->contact_size);
+    else
+      std::printf("  face:     contact_size at most %.4g m (an eighth of the grid's reach)%s\n", grid_contact_size(g),
+                  c.problem == ProblemKind::finite ? "; meshed again to the contact found when coarser than a third "
+                                                     "of its half-width"
+                                                   : "");
+  }
   if (static_problem) {
     const ResourceEstimate est = estimate_resources(c);
     std::printf("  estimate: %s operator, about %.3g MB and %.2g s per solve%s\n            (%s)\n", est.operator_kind.c_str(),

@@ -129,6 +129,9 @@ TEST_F(FiniteCli, ValidateDescribesTheFiniteElementBody) {
       run("validate " + dc::test::shell_quote(dc::test::example_path("finite-hemisphere")));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("body:     finite elements (fe_body)"), std::string::npos) << r.out;
+  // The example leaves contact_size to the grid: an eighth of its reach (0.9 mm).
+  EXPECT_NE(r.out.find("face:     contact_size at most 0.0001125 m (an eighth of the grid's reach)"), std::string::npos)
+      << r.out;
   EXPECT_EQ(r.out.find("rigid"), std::string::npos) << r.out;
 }
 
