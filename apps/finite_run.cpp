@@ -137,15 +137,17 @@ std::pair<double, double> found_half_widths(const nlohmann::json& s) {
 
 /// The contact_size of a remesh when the case leaves it to the default and the face's elements
 /// came out coarser than kFaceResolvedShare of the contact's half-width (a grid wide against
-/// its contact); 0 when none is needed or it would not help (bounded below by half a grid cell:
-/// finer faces cannot show on the grid).
+/// its contact): kRemeshShare of it, and no coarser than a compliant body's face_cell_bound;
+/// 0 when none is needed or it would not help (bounded below by half a grid cell: finer faces
+/// cannot show on the grid).
 double remesh_contact_size(const Case& c, const nlohmann::json& s) {
   // The case's own choice, or its own mesh file: a warning, no remesh.
   if (c.fe_body->contact_size > 0.0 || c.fe_body->shape == FeShape::mesh) return 0.0;
   const double half_width = found_half_widths(s).first;
   const double face = s.value("contact_face_element_size", 0.0);
   if (!(half_width > 0.0 && face > kFaceResolvedShare * half_width)) return 0.0;
-  const double size = std::max(kRemeshShare * half_width, 0.5 * std::min(c.grid.dx, c.grid.dy));
+  const double size = std::max(std::min(kRemeshShare * half_width, face_cell_bound(*c.fe_body, c.materials.base, c.grid)),
+                                0.5 * std::min(c.grid.dx, c.grid.dy));
   return size < 0.8 * face ? size : 0.0;
 }
 

@@ -77,6 +77,19 @@ std::vector<ResultLimit> result_limits(const Case& c, const ContactSize& size) {
                           "contact (the default is an eighth of the grid's reach)",
                           size.face_element_size, size.face_element_size / half_width),
                    false});
+  // A body more compliant than the half-space: its face must also resolve the grid's cells.
+  if (size.face_element_size > 0.0 && c.fe_body) {
+    const double bound = face_cell_bound(*c.fe_body, c.materials.base, c.grid);
+    if (size.face_element_size > 1.25 * bound)  // Gmsh's edges come out up to ~1.15 x the size asked
+      out.push_back({"fe_body.contact_size",
+                     format("the body is %.3g times as compliant as the half-space and its face elements over the "
+                            "contact are %.3g m: within them the pressure's grid-scale modes meet the half-space "
+                            "alone (expect a noisy pressure and a slow solve); give fe_body.contact_size of at most ",
+                            body_compliance_ratio(*c.fe_body, c.materials.base), size.face_element_size) +
+                         format("%.3g m (%.2g grid cells), or leave it to the default", bound,
+                                bound / std::min(c.grid.dx, c.grid.dy)),
+                     false});
+  }
   double rx = 0.0, ry = 0.0;
   curvature_radii(c, rx, ry);
   double ratio = 0.0;

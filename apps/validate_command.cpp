@@ -1,4 +1,5 @@
 // dyncontact validate CASE.json [--set path=value ...]
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -91,13 +92,20 @@ int run_validate(const ValidateArgs& args) {
                   g.nx, g.ny, g.size(), g.x0, g.x_max(), g.y0, g.y_max(), g.dx, g.dy);
   }
   if (c.fe_body && c.fe_body->shape != FeShape::mesh) {
-    if (c.fe_body->contact_size > 0.0)
+    if (c.fe_body->contact_size > 0.0) {
       std::printf("  face:     contact_size %.4g m (given)\n", c.fe_body->contact_size);
-    else
-      std::printf("  face:     contact_size at most %.4g m (an eighth of the grid's reach)%s\n", grid_contact_size(g),
-                  c.problem == ProblemKind::finite ? "; meshed again to the contact found when coarser than a third "
-                                                     "of its half-width"
-                                                   : "");
+    } else {
+      const double reach = grid_contact_size(g), cells = face_cell_bound(*c.fe_body, c.materials.base, g);
+      if (cells < reach)
+        std::printf("  face:     contact_size at most %.4g m (%.2g grid cells: the body is %.3g times as compliant as "
+                    "the half-space)",
+                    cells, cells / std::min(g.dx, g.dy), body_compliance_ratio(*c.fe_body, c.materials.base));
+      else
+        std::printf("  face:     contact_size at most %.4g m (an eighth of the grid's reach)", reach);
+      std::printf("%s\n", c.problem == ProblemKind::finite
+                              ? "; meshed again to the contact found when coarser than a third of its half-width"
+                              : "");
+    }
   }
   if (static_problem) {
     const ResourceEstimate est = estimate_resources(c);

@@ -10,6 +10,7 @@
 
 #include "elastic_stiffness.hpp"
 #include "grid.hpp"
+#include "material.hpp"
 
 namespace dc {
 
@@ -61,6 +62,21 @@ double grid_refine_radius(const Grid& grid);
 /// measured on Hertz hemispheres (docs/finite.md, "Choosing contact_size"), p0 within 1 % and
 /// the pressure within 3 % (L2), where the coarse / 4 of a large body gave 6-8.5 % and 16 %.
 double grid_contact_size(const Grid& grid);
+
+/// The body's normal compliance (1 - nu^2) / E against the half-space's: the largest over the
+/// body's material and its regions, each taken isotropic by the Voigt averages of its stiffness
+/// (bulk and shear moduli). 0 when the half-space is rigid.
+double body_compliance_ratio(const FeBodySpec& body, const Elastic& halfspace);
+
+/// The element size at the contact that a body more compliant than the half-space needs against
+/// the grid's cells (+infinity when the body is the stiffer): 4 / sqrt(ratio) cells, at least
+/// half a cell. Within a face element the pressure's grid-scale modes are resisted by the
+/// half-space alone; a body `ratio` times as compliant leaves them nearly free, and the normal
+/// problem ill-conditioned. Measured on Hertz hemispheres (32² over +-1.3-1.6 a): aluminium on
+/// steel (ratio 3) at 2 cells p0 +1.3 %, L2 5.1 %, at 1.5 cells 0.6 %, 3.6 %; ratio 30 at 2
+/// cells the native solver did not converge (p0 +230 %), at 1 cell p0 +0.7 %, L2 5.3 %; rubber on
+/// steel (ratio 2e4) at 1 cell not converged, at 0.5 cells p0 +1.1 %, L2 3.8 %.
+double face_cell_bound(const FeBodySpec& body, const Elastic& halfspace, const Grid& grid);
 
 /// The face's elements over the contact resolve it when their mean edge is at most this share of
 /// the contact's half-width (Hertz hemispheres, pressure in L2: 3 % at 0.17, 7 % at 0.37, 16 % at

@@ -79,6 +79,21 @@ TEST_F(FiniteCli, CoarseContactFaceIsAWarningNamingContactSize) {
   EXPECT_LT(f["contact_face_element_size"].get<double>(), 2e-4);
 }
 
+TEST_F(FiniteCli, SoftBodyWithCoarseFaceIsAWarningNamingContactSize) {
+  // The example's body 30 times as compliant as the half-space, with faces of 1.3 grid cells
+  // given: the face does not resolve the grid's cells (face_cell_bound: 0.73 cells). A warning
+  // naming fe_body.contact_size whatever the solver made of it.
+  const dc::test::CliResult r = run("solve " + case_file([](json& d) {
+                                      d["fe_body"]["material"]["E"] = 7e9;
+                                      d["fe_body"]["contact_size"] = 2e-4;
+                                      d["grid"]["x"] = {-1.8e-3, 1.8e-3};
+                                      d["grid"]["y"] = {-1.8e-3, 1.8e-3};
+                                      d["solver"]["backend"] = "ipopt";
+                                    }) + " --out soft");
+  EXPECT_NE(r.err.find("warning: fe_body.contact_size: the body is 30 times as compliant"), std::string::npos)
+      << r.err;
+}
+
 TEST_F(FiniteCli, DefaultFaceIsRemeshedToAContactSmallAgainstTheGrid) {
   // The example on a grid three times its contact's radius (a = 0.60 mm, +-1.8 mm, 48 x 48): the
   // grid's default contact_size (reach / 8 = 0.37 a) does not resolve the contact, so the run
