@@ -95,13 +95,15 @@ int run_validate(const ValidateArgs& args) {
     if (c.fe_body->contact_size > 0.0) {
       std::printf("  face:     contact_size %.4g m (given)\n", c.fe_body->contact_size);
     } else {
-      const double reach = grid_contact_size(g), cells = face_cell_bound(*c.fe_body, c.materials.base, g);
-      if (cells < reach)
+      const double bound = default_contact_size_bound(*c.fe_body, c.materials.base, g);
+      if (bound == 0.0)
+        std::printf("  face:     contact_size a quarter of the coarse elements (the grid holds no origin to bound it)");
+      else if (bound == face_cell_bound(*c.fe_body, c.materials.base, g))
         std::printf("  face:     contact_size at most %.4g m (%.2g grid cells: the body is %.3g times as compliant as "
                     "the half-space)",
-                    cells, cells / std::min(g.dx, g.dy), body_compliance_ratio(*c.fe_body, c.materials.base));
+                    bound, bound / std::min(g.dx, g.dy), body_compliance_ratio(*c.fe_body, c.materials.base));
       else
-        std::printf("  face:     contact_size at most %.4g m (an eighth of the grid's reach)", reach);
+        std::printf("  face:     contact_size at most %.4g m (an eighth of the grid's reach)", bound);
       std::printf("%s\n", c.problem == ProblemKind::finite
                               ? "; meshed again to the contact found when coarser than a third of its half-width"
                               : "");

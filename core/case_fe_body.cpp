@@ -147,6 +147,12 @@ double face_cell_bound(const FeBodySpec& body, const Elastic& halfspace, const G
   return std::max(0.5, 4.0 / std::sqrt(ratio)) * std::min(grid.dx, grid.dy);
 }
 
+double default_contact_size_bound(const FeBodySpec& body, const Elastic& halfspace, const Grid& grid) {
+  double bound = face_cell_bound(body, halfspace, grid);
+  if (const double reach = grid_contact_size(grid); reach > 0.0) bound = std::min(bound, reach);
+  return std::isfinite(bound) ? bound : 0.0;
+}
+
 void read_finite_blocks(const json& document, Case& c, const std::string& base_dir) {
   const JsonBlock top(document, "");
   // A dynamic case with an fe_body: the body's motion sets the approach (no normal block).

@@ -78,6 +78,11 @@ double body_compliance_ratio(const FeBodySpec& body, const Elastic& halfspace);
 /// steel (ratio 2e4) at 1 cell not converged, at 0.5 cells p0 +1.1 %, L2 3.8 %.
 double face_cell_bound(const FeBodySpec& body, const Elastic& halfspace, const Grid& grid);
 
+/// The bound on the default contact_size (FeBodySpec::default_contact_size_bound): the smaller of
+/// `grid_contact_size` (when the grid holds the origin) and `face_cell_bound`; 0 when neither
+/// applies (coarse / 4 alone).
+double default_contact_size_bound(const FeBodySpec& body, const Elastic& halfspace, const Grid& grid);
+
 /// The face's elements over the contact resolve it when their mean edge is at most this share of
 /// the contact's half-width (Hertz hemispheres, pressure in L2: 3 % at 0.17, 7 % at 0.37, 16 % at
 /// 1; docs/finite.md, "Choosing contact_size"): beyond it a run warns, or remeshes when the

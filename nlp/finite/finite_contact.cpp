@@ -1,6 +1,5 @@
 #include "finite_contact.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -18,7 +17,7 @@ FiniteContact::FiniteContact(const FeBodySpec& spec, const Grid& grid, const Ela
   FeBodySpec meshed = spec;  // the face refined over the grid unless the case says otherwise
   if (!meshed.refine_radius) meshed.refine_radius = grid_refine_radius(grid);
   if (meshed.contact_size == 0.0)
-    meshed.default_contact_size_bound = std::min(grid_contact_size(grid), face_cell_bound(spec, halfspace, grid));
+    meshed.default_contact_size_bound = default_contact_size_bound(spec, halfspace, grid);
   fe::BodyMesh mesh = fe::mesh_body(meshed);
   mesh_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<fe::BodyMaterial> materials{spec.material};

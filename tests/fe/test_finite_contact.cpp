@@ -156,11 +156,19 @@ TEST(FiniteContact, BodyComplianceRatioAndTheFaceCellBound) {
   EXPECT_NEAR(body_compliance_ratio(body, steel), 25.0, 1e-9);
   const Grid g = Grid::make(3, 32, 16, -1e-3, 1e-3, -1e-3, 1e-3);  // dy = 2 dx
   EXPECT_NEAR(face_cell_bound(body, steel, g), 0.8 * g.dx, 1e-12);  // 4 / sqrt(25) cells of the smaller side
+  // The default's bound: the cells bind here (0.8 dx below reach / 8 = 2 dx), and they still
+  // bind on a grid that does not hold the origin (no reach).
+  EXPECT_NEAR(default_contact_size_bound(body, steel, g), 0.8 * g.dx, 1e-12);
+  const Grid offset = Grid::make(3, 32, 16, 1e-3, 3e-3, -1e-3, 1e-3);
+  EXPECT_EQ(grid_contact_size(offset), 0.0);
+  EXPECT_NEAR(default_contact_size_bound(body, steel, offset), 0.8 * offset.dx, 1e-12);
   body.regions.clear();
   body.material = {fe::isotropic_stiffness(1e7, 0.45, "test"), 1000.0};  // rubber: at least half a cell
   EXPECT_NEAR(face_cell_bound(body, steel, g), 0.5 * g.dx, 1e-12);
   body.material = {fe::isotropic_stiffness(kE, kNu, "test"), 7800.0};  // as stiff as the half-space: none
   EXPECT_TRUE(std::isinf(face_cell_bound(body, steel, g)));
+  EXPECT_NEAR(default_contact_size_bound(body, steel, g), grid_contact_size(g), 1e-15);
+  EXPECT_EQ(default_contact_size_bound(body, steel, offset), 0.0);  // coarse / 4 alone
   EXPECT_EQ(body_compliance_ratio(body, Elastic::make_rigid()), 0.0);
 }
 
