@@ -12,6 +12,7 @@
 #include "fields_writer.hpp"
 #include "gnuplot_figures.hpp"
 #include "interrupt_handler.hpp"
+#include "result_limits.hpp"
 #include "summary_writer.hpp"
 #ifdef DYNCONTACT_WITH_FE
 #include "body_snapshots.hpp"
@@ -115,6 +116,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
               << ")\n";
     return kExitBadInput;
   }
+  if (report_limits(out.limits, dir)) return kExitBadInput;
   if (!r.completed) {
     std::cerr << "error: dynamic run " << r.status << "; the time series so far is in " << dir << "\n";
     return kExitUnconverged;
@@ -153,6 +155,13 @@ int run_dynamic_sweep(const Case& c, const std::string& dir, bool quiet) {
   }
   if (!out.input_error.empty()) {
     std::cerr << "error: " << out.input_error << " (that run stopped there; see " << path << ")\n";
+    return kExitBadInput;
+  }
+  if (out.limit_error) {
+    for (const json& l : summary["limits"])
+      if (l["level"] == "error")
+        std::cerr << "error: " << l["key"].get<std::string>() << ": " << l["run"].get<std::string>() << ": "
+                  << l["message"].get<std::string>() << " (results written to " << dir << " for inspection)\n";
     return kExitBadInput;
   }
   if (!out.all_completed) {

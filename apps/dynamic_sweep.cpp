@@ -1,6 +1,8 @@
 #include "dynamic_sweep.hpp"
 
+#include "dynamic_limits.hpp"
 #include "dynamic_series.hpp"
+#include "errors.hpp"
 #include "progress.hpp"
 #include "table_ranks.hpp"
 
@@ -10,6 +12,13 @@ using nlohmann::json;
 
 DynamicSweepOutcome simulate_dynamic_sweep(const Case& c, bool quiet) {
   const std::vector<SweepPoint> points = sweep_points(c);
+  for (const SweepPoint& p : points) {  // what is known wrong before any run
+    try {
+      dynamic_limits_before(p.run);
+    } catch (const InputError& e) {
+      throw InputError(e.key(), std::string(e.what()).substr(e.key().size() + 2) + " (sweep run " + p.label + ")");
+    }
+  }
   const LaunchRank launched = launch_rank();
   Progress progress("sweep", launched.root() && !quiet);
   // One unit per run: its summary, its time series and how it ended (null: not run, interrupted).
@@ -30,7 +39,7 @@ DynamicSweepOutcome simulate_dynamic_sweep(const Case& c, bool quiet) {
   if (!out.root) return out;
   out.planned = points.size();
 
-  json runs = json::array();
+  json runs = json::array(), limits = json::array();
   for (std::size_t k = 0; k < units.size() && !out.interrupted; ++k) {
     const json& u = units[k];
     if (u.is_null()) {  // not run (interrupted): the runs before it
@@ -48,6 +57,11 @@ DynamicSweepOutcome simulate_dynamic_sweep(const Case& c, bool quiet) {
     const std::string file = "timeseries_" + std::to_string(k) + ".csv";
     for (auto it = u["summary"].begin(); it != u["summary"].end(); ++it) run[it.key()] = it.value();
     run["timeseries"] = file;
+    for (json l : u["summary"]["limits"]) {
+      out.limit_error = out.limit_error || l["level"] == "error";
+      l["run"] = points[k].label;
+      limits.push_back(l);
+    }
     runs.push_back(run);
     out.files.push_back(file);
     out.texts.push_back(u["timeseries"].get<std::string>());
@@ -60,6 +74,7 @@ DynamicSweepOutcome simulate_dynamic_sweep(const Case& c, bool quiet) {
                  {"problem", "dynamic"},
                  {"sweep", {{"key", c.sweep->key}, {"values", c.sweep->values}}},
                  {"status", out.interrupted ? "interrupted" : out.all_completed ? "completed" : "stopped"},
+                 {"limits", limits},
                  {"runs", runs}};
   return out;
 }

@@ -22,10 +22,12 @@ struct DynamicSweepOutcome {
   bool all_completed = true;        ///< every run reached t_end
   bool interrupted = false;         ///< a signal stopped the sweep (the runs before it are kept)
   std::string input_error;          ///< the first run's "key: reason" that stopped on its input
+  bool limit_error = false;         ///< a run's result limits hold an error (summary "limits", with "run")
   std::size_t planned = 0;          ///< runs of the sweep
 };
 
 /// Runs every point of the case's sweep (progress with the time left on stderr unless `quiet`).
+/// Every point is checked first (dynamic_limits_before: InputError naming the run's key).
 DynamicSweepOutcome simulate_dynamic_sweep(const Case& c, bool quiet);
 
 }  // namespace dc::cli

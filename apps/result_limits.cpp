@@ -53,6 +53,7 @@ std::vector<ResultLimit> result_limits(const Case& c, const ContactSize& size) {
       l.message += " (this profile's contact is unbounded along y: its ends are cut by the grid)";
     } else if (c.allow_edge_contact) {
       l.message += " (accepted: grid.allow_edge_contact)";
+      l.accepted = true;
     } else {
       l.message += ", or set grid.allow_edge_contact: true to accept a truncated contact";
       l.error = true;
@@ -107,6 +108,7 @@ std::vector<ResultLimit> result_limits(const Case& c, const ContactSize& size) {
       l.message += "; expect errors of order (a/R)^2";
     } else if (c.allow_large_strain) {
       l.message += "; the result is not that of the physical body (accepted: materials.allow_large_strain)";
+      l.accepted = true;
     } else {
       l.message += "; the result is not that of the physical body (stiffer materials or a smaller load reduce "
                    "a/R), or set materials.allow_large_strain: true to accept it";
@@ -144,7 +146,10 @@ bool report_limits(const std::vector<ResultLimit>& limits, const std::string& di
 
 nlohmann::json limits_json(const std::vector<ResultLimit>& limits) {
   nlohmann::json out = nlohmann::json::array();
-  for (const auto& l : limits) out.push_back({{"key", l.key}, {"message", l.message}, {"accepted", !l.error}});
+  for (const auto& l : limits) out.push_back({{"key", l.key},
+                   {"message", l.message},
+                   {"level", l.error ? "error" : "warning"},
+                   {"accepted", l.accepted}});
   return out;
 }
 

@@ -16,6 +16,7 @@ struct ResultLimit {
   std::string key;      ///< the case key that accepts it or must change (grid, materials)
   std::string message;
   bool error = false;   ///< a wrong result not accepted by the case: exit 2
+  bool accepted = false;  ///< known wrong, and accepted by a key of the case (allow_*)
 };
 
 /// The contact's size as measured (after a solve) or estimated (Hertz, for validate).
@@ -35,7 +36,8 @@ ContactSize measured_contact_size(const Case& c, const nlohmann::json& summary);
 /// for inspection); true when one is an error (the run must exit 2).
 bool report_limits(const std::vector<ResultLimit>& limits, const std::string& dir);
 
-/// Summary entries: [{key, message, accepted}].
+/// Summary entries: [{key, message, level ("error" or "warning"), accepted}]: a warning is
+/// accepted only when a key of the case accepted it (grid.allow_edge_contact, ...).
 nlohmann::json limits_json(const std::vector<ResultLimit>& limits);
 
 }  // namespace dc::cli

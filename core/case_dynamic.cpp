@@ -13,11 +13,22 @@
 namespace dc {
 namespace {
 
-std::array<double, 3> vector3(const JsonBlock& o, const char* k) {
+/// [x, y, z], each component of magnitude at most `max` (`unit` for the message).
+std::array<double, 3> vector3(const JsonBlock& o, const char* k, double max, const char* unit) {
   const auto v = o.numbers(k);
   if (v.size() != 3) throw InputError(o.key(k), "must be [x, y, z]");
+  for (int i = 0; i < 3; ++i)
+    if (!(std::abs(v[i]) <= max))
+      throw InputError(o.key(k) + "[" + std::to_string(i) + "]",
+                       "must be at most " + fmt(max) + " " + unit + " in magnitude, got " + fmt(v[i]));
   return {v[0], v[1], v[2]};
 }
+
+// Physical ranges of the rigid body (beyond them the arithmetic, not the physics, decides).
+constexpr double kMaxMass = 1e15, kMinMass = 1e-15;   // kg (2-D: kg/m)
+constexpr double kMaxInertia = 1e15;                  // kg m^2
+constexpr double kMaxSpeed = 1e4;                     // m/s
+constexpr double kMaxOmega = 1e7;                     // rad/s
 
 void read_body(const JsonBlock& body, const Case& c, DynamicSpec& s) {
   body.allow({"mass", "inertia", "radius", "initial"});
@@ -25,18 +36,18 @@ void read_body(const JsonBlock& body, const Case& c, DynamicSpec& s) {
   s.has_mass = body.has("mass") || !s.fe_body;
   s.has_inertia = body.has("inertia") || !s.fe_body;
   s.has_radius = body.has("radius");
-  if (s.has_mass) s.mass = body.positive("mass");
+  if (s.has_mass) s.mass = body.bounded("mass", kMinMass, kMaxMass, "kg");
   if (s.has_inertia && body.at("inertia").is_number()) {
-    const double i = body.positive("inertia");
+    const double i = body.positive_at_most("inertia", kMaxInertia, "kg m^2");
     s.inertia = {i, i, i};
   } else if (s.has_inertia) {
-    s.inertia = vector3(body, "inertia");
+    s.inertia = vector3(body, "inertia", kMaxInertia, "kg m^2");
     for (int k = 0; k < 3; ++k)
       if (!(s.inertia[k] > 0.0))
         throw InputError("body.inertia[" + std::to_string(k) + "]", "principal moments must be positive");
   }
   if (body.has("radius")) {
-    s.radius = body.positive("radius");
+    s.radius = body.positive_at_most("radius", kMaxLength, "m");
   } else if (!s.fe_body && (c.profile.type == ProfileType::sphere || c.profile.type == ProfileType::cylinder)) {
     s.radius = c.profile.radius;  // a ball or a wheel: the centre of mass at the centre
   } else if (!s.fe_body) {
@@ -47,11 +58,11 @@ void read_body(const JsonBlock& body, const Case& c, DynamicSpec& s) {
     const JsonBlock init = body.child("initial");
     init.allow({"position", "velocity", "omega"});
     if (init.has("position")) {
-      s.position = vector3(init, "position");
+      s.position = vector3(init, "position", kMaxLength, "m");
       s.has_position = true;
     }
-    if (init.has("velocity")) s.velocity = vector3(init, "velocity");
-    if (init.has("omega")) s.omega = vector3(init, "omega");
+    if (init.has("velocity")) s.velocity = vector3(init, "velocity", kMaxSpeed, "m/s");
+    if (init.has("omega")) s.omega = vector3(init, "omega", kMaxOmega, "rad/s");
   }
   if (!s.has_position) s.position = {0.0, 0.0, s.radius};  // fe_body: set from the mesh's radius
   if (c.dimension == 2) {
@@ -102,9 +113,14 @@ void check_shift_torsion(const JsonBlock& top, DynamicSpec& s) {
 }
 
 void read_time(const JsonBlock& time, DynamicSpec& s) {
-  time.allow({"dt", "t_end", "scheme"});
+  time.allow({"dt", "t_end", "scheme", "energy_tolerance", "allow_coarse_dt"});
   s.dt = time.positive("dt");
   s.t_end = time.positive("t_end");
+  if (time.has("energy_tolerance")) {
+    s.energy_tolerance = time.positive("energy_tolerance");
+    if (!(s.energy_tolerance <= 1.0)) throw InputError(time.key("energy_tolerance"), "must be at most 1 (a share of the energy)");
+  }
+  s.allow_coarse_dt = time.boolean_or("allow_coarse_dt", false);
   if (s.t_end / s.dt > 1e8) throw InputError("time.dt", "over 1e8 steps to time.t_end");
   s.bdf2 = time.choice("scheme", "bdf2", {"bdf1", "bdf2"}) == "bdf2";
 }

@@ -30,6 +30,11 @@ struct DynamicSpec {
   std::array<ValueRate, 3> force{}, moment{};  ///< loads.force.{x,y,z}, loads.moment.{x,y,z}
   double dt = 0.0, t_end = 0.0;             ///< time (s)
   bool bdf2 = false;                        ///< time.scheme
+  /// time.energy_tolerance: the largest energy imbalance of an accepted run (balances.energy;
+  /// above it the run is known wrong: a limit error naming time.dt).
+  double energy_tolerance = 0.05;
+  /// time.allow_coarse_dt: accept fewer than kMinStepsPerContact steps per Hertz contact time.
+  bool allow_coarse_dt = false;
   NormalModel normal_model = NormalModel::dynamic;
   ContactModel contact_model = ContactModel::automatic;
   /// An fe_body (docs/dynamics.md "A finite-element body"): mass, inertia and radius come from

@@ -1,0 +1,220 @@
+#include "dynamic_limits.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "errors.hpp"
+#include "hertz.hpp"
+
+namespace dc::cli {
+namespace {
+
+std::string format(const char* f, double a, double b = 0.0, double c = 0.0) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, f, a, b, c);
+  return buf;
+}
+
+/// The pressure field of a step (null without contact).
+const std::vector<double>* step_pressure(const dynamics::ContactState& cs) {
+  if (cs.fields) return &cs.fields->normal.pressure;
+  return cs.pressure;
+}
+
+/// The contact's size on the grid from a pressure field: elements with p above a share of the
+/// peak (as fields.csv marks them), their extent, and the share of the grid's edge in contact.
+ContactSize measure(const Grid& g, const std::vector<double>& p, int& n_contact) {
+  double p_max = 0.0;
+  for (double v : p)
+    if (std::isfinite(v)) p_max = std::max(p_max, v);
+  ContactSize size;
+  n_contact = 0;
+  if (!(p_max > 0.0)) return size;
+  const double threshold = 1e-9 * p_max;
+  int n_edge = 0, n_edge_contact = 0;
+  int i_min = g.nx, i_max = -1, j_min = g.ny, j_max = -1;
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const bool edge = i == 0 || i == g.nx - 1 || (g.dimension == 3 && (j == 0 || j == g.ny - 1));
+      n_edge += edge;
+      if (!(p[g.index(i, j)] > threshold)) continue;
+      ++n_contact;
+      n_edge_contact += edge;
+      i_min = std::min(i_min, i), i_max = std::max(i_max, i);
+      j_min = std::min(j_min, j), j_max = std::max(j_max, j);
+    }
+  if (n_contact == 0) return size;
+  size.across_x = i_max - i_min + 1;
+  size.across_y = g.dimension == 3 ? j_max - j_min + 1 : size.across_x;
+  size.half_width_x = 0.5 * size.across_x * g.dx;
+  size.half_width_y = g.dimension == 3 ? 0.5 * size.across_y * g.dy : 0.0;
+  size.edge_fraction = n_edge > 0 ? static_cast<double>(n_edge_contact) / n_edge : 0.0;
+  return size;
+}
+
+}  // namespace
+
+std::optional<DynamicContactEstimate> estimate_dynamic_contact(const Case& c) {
+  if (!c.dynamic || c.dimension != 3 || c.fe_body) return std::nullopt;
+  if (c.profile.type == ProfileType::table || c.profile.type == ProfileType::flat_punch) return std::nullopt;
+  double A = 0.0, B = 0.0;
+  c.profile.quadratic_coefficients(A, B);
+  if (!(A > 0.0 && B > 0.0)) return std::nullopt;
+  const DynamicSpec& s = *c.dynamic;
+  DynamicContactEstimate e;
+  NormalSpec load;
+  if (dynamic_sizing_load(s, c, load)) {
+    e.load = load.value;
+    const hertz::EllipticSolution h = hertz::elliptic(A, B, e.load, c.materials.E_star());
+    e.approach = h.approach;
+    e.half_width_x = h.a;
+    e.half_width_y = h.b;
+  }
+  const double v0 = -s.velocity[2];
+  if (s.normal_model == NormalModel::dynamic && v0 > 0.0) {
+    // Hertz impact (Johnson 11.4): delta_max = (15 m v0^2 / (16 E* sqrt(R)))^(2/5), contact time
+    // 2.94 delta_max / v0 (R: the equivalent radius of the elliptic gap).
+    const double R = 0.5 / std::sqrt(A * B), E = c.materials.E_star();
+    const double delta_max = std::pow(15.0 * s.mass * v0 * v0 / (16.0 * E * std::sqrt(R)), 0.4);
+    e.contact_time = 2.94 * delta_max / v0;
+    e.steps_per_contact = e.contact_time / s.dt;
+  }
+  if (s.normal_model == NormalModel::dynamic) e.start_inside = std::max(0.0, s.radius - s.position[2]);
+  return e;
+}
+
+std::vector<ResultLimit> dynamic_limits_before(const Case& c) {
+  std::vector<ResultLimit> out;
+  const auto e = estimate_dynamic_contact(c);
+  if (!e) return out;
+  const DynamicSpec& s = *c.dynamic;
+  if (e->start_inside > kStartInsideShare * e->approach + 1e-9 * s.radius)
+    throw InputError("body.initial.position",
+                     format("the body starts %.3g m inside the half-space (z = %.6g m, its lowest point %.6g m "
+                            "below the centre), ",
+                            e->start_inside, s.position[2], s.radius) +
+                         format("deeper than the loads and the impact would press it (Hertz approach %.3g m): the "
+                                "overlap's elastic force would throw it out; start it touching (z = body.radius) "
+                                "or above",
+                                e->approach));
+  if (e->contact_time > 0.0 && e->steps_per_contact < kMinStepsPerContact) {
+    ResultLimit l{"time.dt",
+                  format("%.3g steps of %.3g s in the Hertz contact time of the impact (%.3g s): the peak force "
+                         "and the rebound are off by several per cent or more; ",
+                         e->steps_per_contact, s.dt, e->contact_time) +
+                      format("give time.dt of at most %.3g s (%.0f steps per contact)",
+                             e->contact_time / kMinStepsPerContact, kMinStepsPerContact)};
+    if (!s.allow_coarse_dt)
+      throw InputError("time.dt", l.message + ", or set time.allow_coarse_dt: true to accept it");
+    l.message += " (accepted: time.allow_coarse_dt)";
+    l.accepted = true;
+    out.push_back(l);
+  }
+  if (e->load > 0.0) {
+    const Grid& g = c.grid;
+    ContactSize size;
+    size.half_width_x = e->half_width_x;
+    size.half_width_y = e->half_width_y;
+    const bool beyond = e->half_width_x > std::min(-g.x0, g.x_max()) || e->half_width_y > std::min(-g.y0, g.y_max());
+    size.edge_fraction = beyond ? 1.0 : 0.0;
+    size.across_x = static_cast<int>(2.0 * e->half_width_x / g.dx);
+    size.across_y = static_cast<int>(2.0 * e->half_width_y / g.dy);
+    const std::string lead = format("the Hertz estimate of the largest contact (%.3g N): ", e->load);
+    for (ResultLimit l : result_limits(c, size)) {
+      if (l.key == "grid" && beyond)  // an estimate: the share of the edge is not known before the run
+        l.message = "the contact reaches beyond the grid: " + l.message.substr(l.message.find(": ") + 2);
+      if (l.error) throw InputError(l.key, lead + l.message);
+      l.message = lead + l.message;
+      out.push_back(l);
+    }
+  }
+  return out;
+}
+
+DynamicLimitTracker::DynamicLimitTracker(const Case& c) : case_(c) {
+  if (const auto e = estimate_dynamic_contact(c)) reference_approach_ = e->approach;
+}
+
+void DynamicLimitTracker::add(const dynamics::DynamicSample& s) {
+  const dynamics::ContactState& cs = s.contact_state;
+  const std::vector<double>* p = step_pressure(cs);
+  int n = 0;
+  const ContactSize size = p ? measure(case_.grid, *p, n) : ContactSize{};
+  const double time = s.state.time;
+  if (size.edge_fraction > worst_edge_fraction_) {
+    worst_edge_fraction_ = size.edge_fraction;
+    worst_edge_time_ = time;
+  }
+  if (n > largest_n_) {
+    largest_n_ = n;
+    largest_ = size;
+  }
+  // The body's lowest point below the half-space's surface (3-D dynamic normal model: the
+  // approach is the body's height, whatever the grid saw).
+  const bool height_approach = case_.dimension == 3 && case_.dynamic->normal_model == NormalModel::dynamic;
+  if (n > 0) {
+    seen_approach_ = std::max(seen_approach_, cs.approach);
+    ++episode_steps_;
+  } else {
+    if (height_approach && cs.approach > unseen_approach_) {
+      unseen_approach_ = cs.approach;
+      unseen_time_ = time;
+    }
+    if (episode_steps_ > 0 && (shortest_episode_ == 0 || episode_steps_ < shortest_episode_)) {
+      shortest_episode_ = episode_steps_;
+      shortest_episode_time_ = time;
+    }
+    episode_steps_ = 0;
+  }
+}
+
+std::vector<ResultLimit> DynamicLimitTracker::limits(const dynamics::DynamicResult& r) const {
+  const Case& c = case_;
+  const DynamicSpec& s = *c.dynamic;
+  ContactSize size = largest_;
+  size.edge_fraction = worst_edge_fraction_;
+  std::vector<ResultLimit> out;
+  for (ResultLimit l : result_limits(c, size)) {
+    if (l.key == "grid" && worst_edge_fraction_ > 0.0)
+      l.message = format("at t = %.6g s ", worst_edge_time_) + l.message;
+    out.push_back(l);
+  }
+  // Penetration that no element saw: the grid's elements are coarse against the contact (or
+  // the grid does not lie under the body). A first touch between element centres is a small
+  // share of the deepest approach; more is a body sinking through a grid that cannot hold it.
+  const double reference = std::max(seen_approach_, reference_approach_);
+  if (unseen_approach_ > 0.1 * reference + 1e-9 * s.radius)
+    out.push_back({"grid",
+                   format("at t = %.6g s the body is %.3g m inside the half-space with no element of the grid in "
+                          "contact (the deepest approach in contact: %.3g m): the grid's elements are too large "
+                          "for the contact and its force is missing; a finer grid (grid.nx, grid.ny) or a smaller "
+                          "grid.extent",
+                          unseen_time_, unseen_approach_, seen_approach_),
+                   true});
+  // A contact of a few steps: its force history is not resolved (an impact: the rebound).
+  if (shortest_episode_ > 0 && shortest_episode_ < kMinStepsPerContact) {
+    ResultLimit l{"time.dt",
+                  format("a contact ending at t = %.6g s lasted %.0f step(s): its force history is not resolved "
+                         "(fewer than %.0f steps per contact); a smaller time.dt",
+                         shortest_episode_time_, shortest_episode_, kMinStepsPerContact)};
+    if (s.allow_coarse_dt) {
+      l.message += " (accepted: time.allow_coarse_dt)";
+      l.accepted = true;
+    }
+    out.push_back(l);
+  }
+  if (r.steps > 0 && r.energy_imbalance > s.energy_tolerance) {
+    ResultLimit l{"time.dt",
+                  format("the energy balance of the run is off by %.3g of the energy (balances.energy; "
+                         "time.energy_tolerance %.3g): the time step is too coarse for the contact (or the grid "
+                         "too coarse for it); a smaller time.dt, or raise time.energy_tolerance to accept it",
+                         r.energy_imbalance, s.energy_tolerance)};
+    l.error = true;
+    out.push_back(l);
+  }
+  return out;
+}
+
+}  // namespace dc::cli

@@ -1,0 +1,67 @@
+#pragma once
+// The result limits of a "dynamic" run (docs/limits.md): what is known wrong before the run
+// (a body starting inside the half-space, a time step too coarse for the Hertz contact time,
+// an estimated contact the grid or the half-space model cannot hold) and what the run shows
+// at any step (the contact reaching the grid's edge, a/R, a body penetrating between the grid's
+// elements, too few steps in a contact, the energy balance).
+#include <optional>
+#include <vector>
+
+#include "case_model.hpp"
+#include "dynamic_simulation.hpp"
+#include "result_limits.hpp"
+
+namespace dc::cli {
+
+/// Fewer steps than this in a Hertz contact time and the impact's peak force and rebound are
+/// off by several per cent (ball-impact, bdf2: 14 steps 8 %, 7 steps 19 %, 2 steps 70 %).
+inline constexpr double kMinStepsPerContact = 20.0;
+/// A body may start inside the half-space by up to this share of the deepest Hertz approach the
+/// run's loads give (a start at its static equilibrium, or a little beyond it).
+inline constexpr double kStartInsideShare = 1.1;
+
+/// The Hertz estimate of a dynamic case's largest contact (3-D curved profiles; the sizing load
+/// of grid.extent: the static vertical load or the impact's peak force, Johnson 11.4).
+struct DynamicContactEstimate {
+  double load = 0.0;            ///< N
+  double approach = 0.0;        ///< m, at that load
+  double half_width_x = 0.0, half_width_y = 0.0;  ///< m
+  double contact_time = 0.0;    ///< s, of an impact (2.94 delta_max / v0); 0: no impact
+  double steps_per_contact = 0.0;  ///< contact_time / dt (0: no impact)
+  double start_inside = 0.0;    ///< m, how far the body starts inside the half-space (0: outside)
+};
+
+/// None for a case without a Hertz estimate (2-D, flat or table profiles, an fe_body).
+std::optional<DynamicContactEstimate> estimate_dynamic_contact(const Case& c);
+
+/// Before anything is solved: throws InputError naming body.initial.position (starting inside
+/// the half-space beyond kStartInsideShare of the Hertz approach), time.dt (an impact with fewer
+/// than kMinStepsPerContact steps, unless time.allow_coarse_dt) or the key of an error limit of
+/// the estimated contact (grid, materials); returns the warnings.
+std::vector<ResultLimit> dynamic_limits_before(const Case& c);
+
+/// Follows a run step by step; limits() after it.
+class DynamicLimitTracker {
+ public:
+  explicit DynamicLimitTracker(const Case& c);
+  void add(const dynamics::DynamicSample& s);
+  /// The limits of the run so far (grid edge at any step, a/R and resolution at the largest
+  /// contact, penetration no element saw, short contacts, the energy balance of `r`).
+  std::vector<ResultLimit> limits(const dynamics::DynamicResult& r) const;
+
+ private:
+  const Case& case_;
+  double reference_approach_ = 0.0;  ///< the Hertz estimate's, 0 without one
+  ContactSize largest_{};            ///< at the step with the most elements in contact
+  int largest_n_ = 0;
+  double worst_edge_fraction_ = 0.0;
+  double worst_edge_time_ = 0.0;
+  double unseen_approach_ = 0.0;     ///< largest approach of a step with no element in contact
+  double unseen_time_ = 0.0;
+  double seen_approach_ = 0.0;       ///< largest approach of a step in contact
+  int episode_steps_ = 0;            ///< steps of the current contact
+  int shortest_episode_ = 0;         ///< of the finished contacts (0: none finished)
+  double shortest_episode_time_ = 0.0;
+};
+
+}  // namespace dc::cli
