@@ -2,7 +2,9 @@
 
 #include <cerrno>
 #include <cmath>
+#include <algorithm>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 #include "errors.hpp"
@@ -46,7 +48,14 @@ std::vector<double> parse_table_range(const std::string& option, const std::stri
     const int n = static_cast<int>(count);
     if (n == 1 && start != stop) throw InputError(option, "'" + text + "': one value needs start = stop");
     std::vector<double> values(n);
-    for (int i = 0; i < n; ++i) values[i] = n == 1 ? start : start + (stop - start) * i / (n - 1);
+    // Weighted from both ends (exact at start and stop, symmetric about a range's middle); a value
+    // within round-off of zero is zero, so a range through 0 holds the zero-creepage point itself.
+    const double scale = std::max(std::abs(start), std::abs(stop));
+    for (int i = 0; i < n; ++i) {
+      const double w = n == 1 ? 0.0 : static_cast<double>(i) / (n - 1);
+      const double v = (1.0 - w) * start + w * stop;
+      values[i] = std::abs(v) <= 64.0 * std::numeric_limits<double>::epsilon() * scale ? 0.0 : v;
+    }
     return values;
   }
   std::vector<double> values;

@@ -142,6 +142,11 @@ TangentialRun run_tangential(const Case& c, bool progress) {
   if (has_history(c)) {
     run.summary["steps"] = steps;
     run.summary["all_steps_converged"] = run.converged();
+    // The history's solver is its worst step's (the first that did not converge, else the last).
+    const SolverReport& worst = run.report();
+    run.summary["solver"] = to_json(worst);
+    for (std::size_t k = 0; k < run.steps.size(); ++k)
+      if (&run.steps[k].report == &worst) run.summary["solver"]["step"] = k;
     run.summary["solver"]["time_s"] = run.total_time_s();  // the whole history; each step's in "steps"
   }
   return run;

@@ -30,7 +30,10 @@ void check_contact_in_grid(const Case& c);
 inline ValueRate read_value_rate(const JsonBlock& parent, const char* k) {
   const JsonBlock v = parent.child(k);
   v.allow({"value", "rate"});
-  return {v.number_or("value", 0.0), v.number_or("rate", 0.0)};
+  // Forces (N) and moments (N m) of real machines lie far inside these bounds.
+  const double value = v.has("value") ? v.bounded("value", -1e15, 1e15, "(N or N m)") : 0.0;
+  const double rate = v.has("rate") ? v.bounded("rate", -1e18, 1e18, "(N/s or N m/s)") : 0.0;
+  return {value, rate};
 }
 
 /// Problem finite (core/case_fe_body.cpp): fe_body, grid (x/y bounds) and normal, all required.

@@ -47,7 +47,11 @@ std::array<int, 3> read_elements(const JsonBlock& b) {
   } else {
     const auto n = b.numbers("elements");
     if (n.size() != 3) throw InputError(b.key("elements"), "needs one number or three [nx, ny, nz]");
-    for (int i = 0; i < 3; ++i) out[i] = static_cast<int>(n[i]);
+    for (int i = 0; i < 3; ++i) {
+      if (n[i] != std::floor(n[i]))
+        throw InputError(b.key("elements") + "[" + std::to_string(i) + "]", "divisions are whole numbers, got " + fmt(n[i]));
+      out[i] = static_cast<int>(std::clamp(n[i], -1.0, 1001.0));
+    }
   }
   for (int n : out)
     if (n < 1 || n > 1000) throw InputError(b.key("elements"), "divisions must lie in 1..1000");
@@ -91,6 +95,10 @@ FeBodySpec read_fe_body(const json& block, const std::string& case_dir) {
     if (b.has(key)) {
       const auto v = b.numbers(key);
       if (v.size() != 2) throw InputError(b.key(key), "needs two numbers [x, y]");
+      // A tilt of the body's face (rad): the half-space model holds for small slopes only.
+      if (std::string(key) == "tilt" && !(std::abs(v[0]) <= 0.1 && std::abs(v[1]) <= 0.1))
+        throw InputError(b.key(key), "each tilt must be at most 0.1 rad in magnitude (the half-space model needs "
+                                     "small slopes), got [" + fmt(v[0]) + ", " + fmt(v[1]) + "]");
       if (std::string(key) == "tilt") s.tilt = {v[0], v[1]};
       else s.load_line = std::array<double, 2>{v[0], v[1]};
     }

@@ -22,6 +22,10 @@ void hertz_semi_axes(const Case& c, bool has_normal, double& ax, double& ay) {
   }
   if (p.type == ProfileType::table)
     throw InputError("grid.extent", "a table profile has no Hertz estimate: give explicit grid.x (and grid.y) bounds");
+  if (!has_normal && c.problem == ProblemKind::dynamic)
+    throw InputError("grid.extent", "a dynamic case's grid is sized by the Hertz contact of a downward load "
+                                    "(loads.force.z < 0) or of an impact (body.initial.velocity z < 0); with neither, "
+                                    "give the grid's bounds grid.x and grid.y");
   if (!has_normal)
     throw InputError("grid.extent", "needs normal.force or normal.approach to size the Hertz contact");
   const double E_star = c.materials.E_star();

@@ -16,6 +16,7 @@
 #include "errors.hpp"
 #include "json_block.hpp"
 #include "json_parse.hpp"
+#include "linear_operator.hpp"
 
 namespace dc {
 namespace {
@@ -65,10 +66,11 @@ FrictionSpec parse_friction(const json& j) {
   if (f.law == "coulomb") {
     o.allow({"law", "mu"});
     f.mu = o.number("mu");
+    if (std::abs(f.mu) > 1e3) throw InputError(o.key("mu"), "must be at most 1000, got " + fmt(f.mu));
     if (f.mu < 0.0) throw InputError("friction.mu", "mu must be non-negative, got " + fmt(f.mu));
   } else if (f.law == "tresca") {
     o.allow({"law", "bound"});
-    f.bound = o.positive("bound");
+    f.bound = o.positive_at_most("bound", 1e15, "Pa");
   } else {
     o.allow({"law", "pressure", "bound"});
     f.pressure = o.numbers("pressure");
@@ -94,8 +96,8 @@ SolverSpec parse_solver(const json& j) {
            "operator"});
   SolverSpec s;
   s.backend = o.choice("backend", s.backend, {"auto", "ipopt", "nlopt", "native"});
-  if (o.has("tol")) s.tol = o.positive("tol");
-  if (o.has("certificate_tol")) s.certificate_tol = o.positive("certificate_tol");
+  if (o.has("tol")) s.tol = o.bounded("tol", 1e-16, 0.1, "(relative)");
+  if (o.has("certificate_tol")) s.certificate_tol = o.bounded("certificate_tol", 1e-16, 0.1, "(relative)");
   s.max_iter = o.integer_or("max_iter", s.max_iter);
   if (s.max_iter < 1) throw InputError("solver.max_iter", "must be at least 1, got " + std::to_string(s.max_iter));
   s.fallback = o.boolean_or("fallback", s.fallback);
@@ -142,10 +144,10 @@ NormalSpec read_normal(const json& j, const std::string& path) {
     throw InputError(o.key("approach"), "give either force or approach, not both");
   if (o.has("force")) {
     n.control = Control::force;
-    n.value = o.positive("force");
+    n.value = o.positive_at_most("force", 1e15, "N (2-D: N/m)");
   } else if (o.has("approach")) {
     n.control = Control::approach;
-    n.value = o.positive("approach");
+    n.value = o.positive_at_most("approach", kMaxLength, "m");
   } else {
     throw InputError(o.key("force"), "missing required key (give force or approach)");
   }
@@ -294,6 +296,23 @@ void reject_unused_blocks(const JsonBlock& top, ProblemKind problem) {
   }
 }
 
+/// solver.operator "dense" holds the whole influence matrix (linear_operator.hpp: at most 4096 x
+/// 4096 entries, 128 MB); a grid beyond it is refused here, not when the solve builds it.
+void check_dense_operator_size(const Case& c) {
+  if (c.solver.operator_kind != "dense") return;
+  const bool two_components = c.dimension == 3 && c.friction.has_value();
+  const double rows = static_cast<double>(c.grid.size()) * (two_components ? 2.0 : 1.0);
+  const double limit = std::sqrt(static_cast<double>(kDenseAutoLimit * 16));
+  if (rows <= limit) return;
+  std::ostringstream why;
+  why << "a dense influence matrix of " << c.grid.size() << " elements" << (two_components ? " (two components)" : "")
+      << " needs " << rows * rows * 8.0 / 1e9 << " GB; dense is for at most " << limit << " rows (" << "e.g. "
+      << static_cast<int>(std::sqrt(limit / (two_components ? 2.0 : 1.0))) << " x "
+      << static_cast<int>(std::sqrt(limit / (two_components ? 2.0 : 1.0)))
+      << " elements): use \"fft\" or \"auto\"";
+  throw InputError("solver.operator", why.str());
+}
+
 }  // namespace
 
 bool Case::has_block(const std::string& block) const {
@@ -352,6 +371,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
     c.grid = read_grid(top.at("grid"), c, has_normal);
     c.allow_edge_contact = JsonBlock(top.at("grid"), "grid").boolean_or("allow_edge_contact", false);
     check_contact_in_grid(c);
+    check_dense_operator_size(c);
   }
   if (top.has("sweep") && top.at("sweep").is_object() &&
       (c.problem == ProblemKind::paper_cylinder || c.problem == ProblemKind::dynamic))

@@ -100,24 +100,24 @@ ProfileSpec read_profile(const json& j, int dimension, const std::string& base_d
     three_d_only("sphere");
     o.allow({"type", "radius"});
     p.type = ProfileType::sphere;
-    p.radius = o.positive("radius");
+    p.radius = o.positive_at_most("radius", kMaxLength, "m");
   } else if (type == "ellipsoid") {
     three_d_only("ellipsoid");
     o.allow({"type", "radius_x", "radius_y"});
     p.type = ProfileType::ellipsoid;
-    p.radius_x = o.positive("radius_x");
-    p.radius_y = o.positive("radius_y");
+    p.radius_x = o.positive_at_most("radius_x", kMaxLength, "m");
+    p.radius_y = o.positive_at_most("radius_y", kMaxLength, "m");
   } else if (type == "cylinder") {
     if (three_d) o.allow({"type", "radius", "length"});
     else o.allow({"type", "radius"});
     p.type = ProfileType::cylinder;
-    p.radius = o.positive("radius");
-    if (three_d) p.length = o.has("length") ? o.positive("length") : 0.0;
+    p.radius = o.positive_at_most("radius", kMaxLength, "m");
+    if (three_d) p.length = o.has("length") ? o.positive_at_most("length", kMaxLength, "m") : 0.0;
   } else if (type == "flat_punch") {
     three_d_only("flat_punch");
     o.allow({"type", "radius"});
     p.type = ProfileType::flat_punch;
-    p.radius = o.positive("radius");
+    p.radius = o.positive_at_most("radius", kMaxLength, "m");
   } else if (type == "quadratic") {
     p.type = ProfileType::quadratic;
     if (three_d) {

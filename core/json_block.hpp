@@ -25,6 +25,9 @@ inline std::string join(const std::string& prefix, const std::string& key) {
 inline std::string describe(const json& j) { return j.type_name(); }
 
 /// A number with six significant digits, for messages.
+/// The largest length a case takes (m): radii, approaches, grid bounds of real bodies are far below.
+inline constexpr double kMaxLength = 1e9;
+
 inline std::string fmt(double v) {
   std::ostringstream s;
   s.precision(6);
@@ -129,6 +132,20 @@ class JsonBlock {
   double positive(const char* k) const {
     const double v = number(k);
     if (!(v > 0.0)) throw InputError(key(k), "must be positive, got " + fmt(v));
+    return v;
+  }
+  /// A number in [lo, hi] (physical ranges: beyond them the program's arithmetic, not the
+  /// physics, decides the answer); `unit` for the message.
+  double bounded(const char* k, double lo, double hi, const char* unit) const {
+    const double v = number(k);
+    if (!(v >= lo && v <= hi))
+      throw InputError(key(k), "must be from " + fmt(lo) + " to " + fmt(hi) + " " + unit + ", got " + fmt(v));
+    return v;
+  }
+  /// Positive and at most `hi`.
+  double positive_at_most(const char* k, double hi, const char* unit) const {
+    const double v = positive(k);
+    if (!(v <= hi)) throw InputError(key(k), "must be at most " + fmt(hi) + " " + unit + ", got " + fmt(v));
     return v;
   }
   double non_negative(const char* k) const {

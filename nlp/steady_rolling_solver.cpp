@@ -230,7 +230,13 @@ SteadyRollingOutcome SteadyRollingNewton::solve() {
     for (std::size_t i = 0; i < n_; ++i) x[i] = p_.tau0[i] / f_ref_;
   project(x);
   residual(x, F);
-  const double tol = std::max(options_.tol, 1e-13);
+  // The tolerance is relative to the largest bound; a small creepage (or resultant) drives a
+  // traction far below it, whose own certificate needs the residual relative to that level: below
+  // a hundredth of the bound the tolerance follows the driving level (scale-free, as the problem
+  // is linear in full stick), so a creepage of 1e-12 is solved as well as one of 1e-3.
+  double level = max_abs(b_hat_);
+  for (std::size_t k = 0; k < m_; ++k) level = std::max(level, std::abs(p_.resultants[k]) / capacity_[k]);
+  const double tol = std::max(options_.tol, 1e-13) * std::clamp(100.0 * level, 1e-200, 1.0);
   // Non-monotone search: full (projected) Newton steps are taken while |(F, G)|_inf stays below
   // kGrowth times the largest of the last kMemory merits (the active set of a cold start moves
   // by many elements per step, which a monotone search would damp to a crawl); otherwise
