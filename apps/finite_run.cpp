@@ -17,6 +17,7 @@
 #include "finite_contact.hpp"
 #include "plot_writer.hpp"
 #include "progress.hpp"
+#include "fe_body_estimate.hpp"
 #include "result_limits.hpp"
 #include "static_fields.hpp"
 #include "summary_writer.hpp"
@@ -154,6 +155,7 @@ double remesh_contact_size(const Case& c, const nlohmann::json& s) {
 /// Solves the case; with the default contact_size, once more on a face remeshed to the contact
 /// found when the first mesh did not resolve it (summary.json's "remeshed").
 FiniteRun solve_finite(const Case& c, bool progress) {
+  check_fe_body_fits(c);  // before meshing: a body the memory cannot hold is bad input
   FiniteRun first = solve_finite_on(c, *c.fe_body, progress);
   const double size = first.run.interrupted ? 0.0 : remesh_contact_size(c, first.run.summary);
   if (size == 0.0) {

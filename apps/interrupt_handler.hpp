@@ -1,10 +1,20 @@
 #pragma once
 // SIGINT/SIGTERM for the command line: the handlers only raise dc's interrupt flag
 // (core/interrupt.hpp); a second signal of the same kind ends the program at once.
+#include <string>
+
 namespace dc::cli {
 
-/// Installs the handlers (once, at start-up).
+/// How long an interrupt may go unnoticed inside a non-polling section (core/interrupt.hpp:
+/// meshing, a sparse factorisation) before the watchdog ends the process (exit 128 + signal).
+inline constexpr double kInterruptGraceSeconds = 0.5;
+
+/// Installs the handlers and starts the watchdog (once, at start-up).
 void install_interrupt_handlers();
+
+/// A file the watchdog writes (whole: a temporary renamed into place) before it ends the process,
+/// e.g. an "interrupted" summary.json; an empty path clears it. Set before the work it covers.
+void set_interrupt_last_file(const std::string& path, const std::string& text);
 
 /// The exit code of an interrupted run: 128 + the signal (130 SIGINT, 143 SIGTERM).
 int interrupted_exit_code();

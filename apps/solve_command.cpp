@@ -12,6 +12,7 @@
 #include "finite_run.hpp"
 #include "paper_cylinder_run.hpp"
 #include "commands.hpp"
+#include "dynamic_limits.hpp"
 #include "dynamic_run.hpp"
 #include "fields_writer.hpp"
 #include "interrupt.hpp"
@@ -76,29 +77,52 @@ void print_tangential(const Case& c, const nlohmann::json& s) {
   }
 }
 
+/// The summary of a run stopped before anything was finished.
+nlohmann::json interrupted_summary(const Case& c) {
+  nlohmann::json header = summary_header(c);
+  header["status"] = "interrupted";
+  header["files"] = {{"summary", "summary.json"}};
+  return header;
+}
+
+/// While a run is under way, the summary the watchdog leaves in `dir` when an interrupt stops a
+/// non-polling section (meshing, a factorisation: nothing finished yet); cleared afterwards.
+class InterruptedSummaryOnWatchdog {
+ public:
+  InterruptedSummaryOnWatchdog(const Case& c, const std::string& dir) {
+    set_interrupt_last_file((std::filesystem::path(dir) / "summary.json").string(),
+                            interrupted_summary(c).dump(2) + "\n");
+  }
+  ~InterruptedSummaryOnWatchdog() { set_interrupt_last_file("", ""); }
+  InterruptedSummaryOnWatchdog(const InterruptedSummaryOnWatchdog&) = delete;
+  InterruptedSummaryOnWatchdog& operator=(const InterruptedSummaryOnWatchdog&) = delete;
+};
+
 int run_solve(const SolveArgs& args) {
   const Case c = load_case(args.case_path, args.sets, args.backend);
   // Under mpirun a sweep's runs are spread over the ranks (rank 0 writes); any other case is
   // solved by rank 0 alone.
   const bool root = launch_rank().root();
+  // What a dynamic run is known to get wrong before it starts (InputError: exit 2, nothing written).
+  if (c.problem == ProblemKind::dynamic && !c.sweep) dynamic_limits_before(c);
   if (c.problem == ProblemKind::paper_cylinder)
     return run_paper_cylinder(c, root ? prepare_output_dir(c, args.out) : std::string(), args.quiet);
   if (c.problem == ProblemKind::dynamic && c.sweep)
     return run_dynamic_sweep(c, root ? prepare_output_dir(c, args.out) : std::string(), args.quiet);
   if (!root) return kExitOk;
-  if (c.problem == ProblemKind::dynamic) return run_dynamic(c, prepare_output_dir(c, args.out), args.quiet);
-  if (c.problem == ProblemKind::finite) return run_finite(c, prepare_output_dir(c, args.out), args.quiet);
-  if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential) not_implemented(c.problem);
+  if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential && c.problem != ProblemKind::dynamic &&
+      c.problem != ProblemKind::finite)
+    not_implemented(c.problem);
   const std::string dir = prepare_output_dir(c, args.out);
+  const InterruptedSummaryOnWatchdog last_words(c, dir);
+  if (c.problem == ProblemKind::dynamic) return run_dynamic(c, dir, args.quiet);
+  if (c.problem == ProblemKind::finite) return run_finite(c, dir, args.quiet);
 
   StaticRun run;
   try {
     run = run_static(c, !args.quiet);
   } catch (const Interrupted&) {  // nothing finished: a summary that says so
-    nlohmann::json header = summary_header(c);
-    header["status"] = "interrupted";
-    header["files"] = {{"summary", "summary.json"}};
-    const std::string path = write_summary(dir, header);
+    const std::string path = write_summary(dir, interrupted_summary(c));
     std::cerr << "interrupted before a result was finished; wrote " << path << '\n';
     return interrupted_exit_code();
   }

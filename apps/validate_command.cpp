@@ -11,6 +11,8 @@
 #include "analytic_reference.hpp"
 #include "errors.hpp"
 #include "resource_estimate.hpp"
+#include "dynamic_limits.hpp"
+#include "fe_body_estimate.hpp"
 #include "result_limits.hpp"
 #include "cli_common.hpp"
 #include "finite_run.hpp"
@@ -108,6 +110,12 @@ int run_validate(const ValidateArgs& args) {
                               ? "; meshed again to the contact found when coarser than a third of its half-width"
                               : "");
     }
+    if (const auto e = estimate_fe_body(c)) {
+      std::printf("  body:     about %.3g tetrahedra, %.3g dofs; about %.3g GB and %.2g s (one thread; a remesh to "
+                  "the contact found can add to it)\n",
+                  e->tetrahedra, e->dofs, e->memory_bytes / 1e9, e->seconds);
+      check_fe_body_fits(c);  // throws naming fe_body.elements or fe_body.contact_size
+    }
   }
   if (static_problem) {
     const ResourceEstimate est = estimate_resources(c);
@@ -154,8 +162,23 @@ int run_validate(const ValidateArgs& args) {
     std::printf("dynamic: %.6g s in steps of %.6g s (%s), normal model %s, contact model %s, %s\n", c.dynamic->t_end,
                 c.dynamic->dt, c.dynamic->bdf2 ? "bdf2" : "bdf1", to_string(c.dynamic->normal_model),
                 to_string(c.dynamic->contact_model), c.friction ? "with friction" : "frictionless");
-    if (c.sweep)  // every run's case read and checked
-      std::printf("sweep: %zu runs over %s\n", sweep_points(c).size(), c.sweep->key.c_str());
+    if (const auto e = estimate_dynamic_contact(c)) {
+      if (e->load > 0.0)
+        std::printf("  largest contact (Hertz, %.4g N): a = %.4g m, b = %.4g m (%.1f x %.1f elements across), "
+                    "approach %.4g m\n",
+                    e->load, e->half_width_x, e->half_width_y, 2.0 * e->half_width_x / g.dx,
+                    2.0 * e->half_width_y / g.dy, e->approach);
+      if (e->contact_time > 0.0)
+        std::printf("  impact:   Hertz contact time %.4g s, %.1f steps of time.dt (at least %.0f needed)\n",
+                    e->contact_time, e->steps_per_contact, kMinStepsPerContact);
+    }
+    for (const ResultLimit& l : dynamic_limits_before(c))  // throws for the errors
+      std::fprintf(stderr, "warning: %s: %s\n", l.key.c_str(), l.message.c_str());
+    if (c.sweep) {  // every run's case read and checked
+      const std::vector<SweepPoint> points = sweep_points(c);
+      for (const SweepPoint& p : points) dynamic_limits_before(p.run);
+      std::printf("sweep: %zu runs over %s\n", points.size(), c.sweep->key.c_str());
+    }
   }
   else if (c.problem == ProblemKind::finite && !finite_supported())
     std::printf("note: this build has no finite-element support (needs libgmsh-dev, libsuitesparse-dev)\n");

@@ -6,6 +6,7 @@ namespace {
 // -1: no request; otherwise the signal number (0 for a request not from a signal).
 std::atomic<int> g_request{-1};
 static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs a lock-free flag");
+std::atomic<const char*> g_section{nullptr};
 
 }  // namespace
 
@@ -23,5 +24,14 @@ void clear_interrupt() noexcept { g_request.store(-1, std::memory_order_relaxed)
 void throw_if_interrupted() {
   if (interrupt_requested()) throw Interrupted{interrupt_signal()};
 }
+
+NonPollingSection::NonPollingSection(const char* what) : previous_(nullptr) {
+  throw_if_interrupted();
+  previous_ = g_section.exchange(what);
+}
+
+NonPollingSection::~NonPollingSection() { g_section.store(previous_); }
+
+const char* open_non_polling_section() noexcept { return g_section.load(); }
 
 }  // namespace dc

@@ -23,4 +23,22 @@ void clear_interrupt() noexcept;
 /// Throws Interrupted when the flag is raised; cheap enough for every solver iteration.
 void throw_if_interrupted();
 
+/// A single call that cannot poll the flag (a mesher's, a sparse factorisation's): while one is
+/// open, the command line's watchdog (apps/interrupt_handler.hpp) ends the process when an
+/// interrupt is not noticed within its grace period. Opening one throws Interrupted when the
+/// flag is already raised. Not nested across threads: the innermost description is kept.
+class NonPollingSection {
+ public:
+  explicit NonPollingSection(const char* what);
+  ~NonPollingSection();
+  NonPollingSection(const NonPollingSection&) = delete;
+  NonPollingSection& operator=(const NonPollingSection&) = delete;
+
+ private:
+  const char* previous_;
+};
+
+/// The description of the open non-polling section ("meshing the body", ...), null when none.
+const char* open_non_polling_section() noexcept;
+
 }  // namespace dc

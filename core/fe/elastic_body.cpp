@@ -6,6 +6,7 @@
 #include <Eigen/CholmodSupport>
 
 #include "errors.hpp"
+#include "interrupt.hpp"
 #include "tet10.hpp"
 
 namespace dc::fe {
@@ -120,7 +121,10 @@ void ElasticBody::factorise() {
       if (held[it.row()] || held[it.col()]) it.valueRef() = it.row() == it.col() ? diag_scale : 0.0;
   const auto start = std::chrono::steady_clock::now();
   factor_ = std::make_unique<Factor>();
-  factor_->llt.compute(Ks);
+  {
+    const NonPollingSection section("factorising the body's stiffness (CHOLMOD)");
+    factor_->llt.compute(Ks);
+  }
   factor_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (factor_->llt.info() != Eigen::Success)
     throw InputError("fe_body", "the stiffness is singular: the mesh is not one connected solid");

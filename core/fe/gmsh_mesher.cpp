@@ -11,6 +11,7 @@
 
 #include "errors.hpp"
 #include "gmsh_tetrahedra.hpp"
+#include "interrupt.hpp"
 
 namespace dc::fe {
 
@@ -80,8 +81,12 @@ BodyMesh mesh_body(const FeBodySpec& spec) {
     throw InputError("fe_body.mesh", "file '" + spec.mesh_file + "' not found");
   GmshTetrahedra gmsh;
   std::string error;
-  if (!gmsh_tetrahedra_function()(spec, gmsh, error))
-    throw InputError(key, "Gmsh could not read or mesh the body: " + error);
+  bool meshed = false;
+  {
+    const NonPollingSection section("meshing the body (Gmsh)");
+    meshed = gmsh_tetrahedra_function()(spec, gmsh, error);
+  }
+  if (!meshed) throw InputError(key, "Gmsh could not read or mesh the body: " + error);
   const auto& tets = gmsh.tets;
   if (tets.empty()) throw InputError(key, "the mesh has no tetrahedra (a volume mesh is needed)");
   BodyMesh mesh = quadratic_mesh_from_linear(gmsh.vertices, tets, key, gmsh.curved.empty() ? nullptr : &gmsh.curved);

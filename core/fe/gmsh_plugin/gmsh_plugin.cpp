@@ -2,6 +2,8 @@
 // Gmsh's C++ API and hands back its vertices and tetrahedra. It is a module of its own, loaded
 // by gmsh_mesher.cpp the first time a body is meshed, so that runs which never mesh a body do
 // not pay Gmsh's start-up (OpenCASCADE, FLTK: about 0.2 s per process).
+#include <csignal>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -23,23 +25,40 @@ std::mutex& gmsh_mutex() {  // Gmsh keeps one global model
   return m;
 }
 
+/// The program's signal handlers, kept across Gmsh's start and end: Gmsh installs its own (for
+/// SIGINT and SIGTERM among others), which would swallow an interrupt of the program's for the
+/// rest of the run.
+class SignalHandlersKept {
+ public:
+  SignalHandlersKept() {
+    for (int s = 1; s < kSignals; ++s) sigaction(s, nullptr, &saved_[s]);
+  }
+  void restore() const {
+    for (int s = 1; s < kSignals; ++s)
+      if (s != SIGKILL && s != SIGSTOP) sigaction(s, &saved_[s], nullptr);
+  }
+
+ private:
+  static constexpr int kSignals = 32;
+  struct sigaction saved_[kSignals] {};
+};
+
 /// Initialises Gmsh quietly for one mesh and finalises it on every path.
 struct GmshSession {
   GmshSession() {
     gmsh::initialize();
+    handlers_.restore();
     gmsh::option::setNumber("General.Terminal", 0);
     gmsh::option::setNumber("General.Verbosity", 1);
   }
-  ~GmshSession() { gmsh::finalize(); }
+  ~GmshSession() {
+    gmsh::finalize();
+    handlers_.restore();
+  }
+  SignalHandlersKept handlers_;
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
 };
-
-double coarse_size(const FeBodySpec& s, const std::array<double, 3>& extent) {
-  double h = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 3; ++i) h = std::min(h, extent[i] / std::max(1, s.elements[i]));
-  return h;
-}
 
 void build_geometry(const FeBodySpec& s) {
   switch (s.shape) {
@@ -58,23 +77,9 @@ void build_geometry(const FeBodySpec& s) {
   gmsh::model::occ::synchronize();
 }
 
-std::array<double, 3> extent_of(const FeBodySpec& s) {
-  switch (s.shape) {
-    case FeShape::block: return s.size;
-    case FeShape::cylinder: return {2.0 * s.radius, 2.0 * s.radius, s.height};
-    case FeShape::hemisphere: return {2.0 * s.radius, 2.0 * s.radius, s.radius};
-    case FeShape::mesh: break;
-  }
-  return {0.0, 0.0, 0.0};
-}
-
-/// Element size `contact_size` over the disk of `refine_radius` about the lowest point (where
-/// the contact grid lies: the face resolves the grid's fields there), growing from it at
-/// kSizeGrowth per unit distance up to the coarse size. Measured on a steel hemisphere under a
-/// shift (R / a = 54, tractions against Cattaneo-Mindlin, L2): the lowest point alone refined at
-/// a growth of 0.3 gave 27 % (11k dofs) and 15 % at 4 x the elements (27k dofs; the contact's
-/// edge kept 0.3 a); the grid's disk at 0.6 gives 15 % with 12k dofs and 8 % with 20k.
-constexpr double kSizeGrowth = 0.6;
+/// Element size fe_contact_element_size over the disk of `refine_radius` about the lowest point
+/// (where the contact grid lies: the face resolves the grid's fields there), growing from it at
+/// kFaceSizeGrowth per unit distance up to the coarse size (core/case_fe_body.hpp).
 
 /// A length for Gmsh's expression in full precision (std::to_string keeps six decimals: 0 for a
 /// micrometre body).
@@ -85,10 +90,7 @@ std::string expression_number(double v) {
 }
 
 void set_size_field(const FeBodySpec& s) {
-  const double h = coarse_size(s, extent_of(s));
-  double h0 = 0.25 * h;
-  if (s.contact_size > 0.0) h0 = std::min(s.contact_size, h);
-  else if (s.default_contact_size_bound > 0.0) h0 = std::min(h0, s.default_contact_size_bound);
+  const double h = fe_coarse_size(s), h0 = fe_contact_element_size(s);
   const double r0 = s.refine_radius.value_or(0.0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
@@ -99,7 +101,7 @@ void set_size_field(const FeBodySpec& s) {
   // The distance from the disk r <= r0 in the plane z = 0 of the lowest point.
   const std::string distance = "Sqrt(Max(0, Sqrt(x*x + y*y) - " + expression_number(r0) + ")^2 + z*z)";
   const std::string expr = "Min(" + expression_number(h) + ", " + expression_number(h0) + " + " +
-                           expression_number(kSizeGrowth) + " * " + distance + ")";
+                           expression_number(kFaceSizeGrowth) + " * " + distance + ")";
   gmsh::model::mesh::field::setString(field, "F", expr);
   gmsh::model::mesh::field::setAsBackgroundMesh(field);
 }
