@@ -15,9 +15,15 @@
 #include "dynamic_sweep.hpp"
 #include "module_common.hpp"
 #include "paper_cylinder_run.hpp"
+#include "python_limits.hpp"
 #include "python_runs.hpp"
 
 namespace dc::python {
+namespace {
+
+constexpr const char* kRunAdvice = "; the run is in this exception's .result";
+
+}  // namespace
 
 py::dict csv_columns(const std::string& text) {
   std::istringstream in(text);
@@ -68,7 +74,9 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
       py::gil_scoped_release release;
       out = cli::simulate_dynamic_sweep(c, !progress);
     }
-    return with_series(out.summary, out.files, out.texts);
+    py::dict result = with_series(out.summary, out.files, out.texts);
+    enforce_summary_limits(out.summary, result, kRunAdvice);
+    return result;
   }
   cli::DynamicOutcome out;
   {
@@ -77,6 +85,7 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
   }
   py::dict result = to_python(out.summary);
   result["timeseries"] = csv_columns(out.timeseries);
+  enforce_summary_limits(out.summary, result, kRunAdvice);
   return result;
 }
 
@@ -86,7 +95,9 @@ py::dict run_paper_cylinder_case(const Case& c, bool progress) {
     py::gil_scoped_release release;
     out = cli::simulate_paper_cylinder(c, !progress);
   }
-  return with_series(out.summary, out.files, out.texts);
+  py::dict result = with_series(out.summary, out.files, out.texts);
+  enforce_summary_limits(out.summary, result, kRunAdvice);
+  return result;
 }
 
 namespace {
