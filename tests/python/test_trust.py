@@ -126,6 +126,7 @@ def test_problems_refuse_a_contact_filling_the_grid():
         (lambda c: c["grid"].update(x=np.zeros((2, 2, 2))), "grid.x"),          # three dimensions
         (lambda c: c["grid"].update({1: 2}), "grid"),                           # a key not a string
     ],
+    ids=["nan", "numpy-inf", "minus-inf", "inf-in-list", "nan-in-array", "set", "complex", "3d-array", "int-key"],
 )
 def test_bad_values_in_a_case_dict_are_input_errors_naming_the_key(change, key):
     case = hertz_case(dict(RESOLVED))
