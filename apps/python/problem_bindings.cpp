@@ -115,9 +115,9 @@ struct PyTangentialProblem {
 /// The end of a ResultLimitError's message from a problem class (its error limits are a
 /// contact cut by the grid's edge: contact_limits).
 std::string edge_advice(const char* cls) {
-  return std::string("; give ") + cls +
-         " a larger grid, or allow_edge_contact=True to accept a truncated contact; the solution is in this "
-         "exception's .result";
+  return std::string("; for ") + cls +
+         ": a grid wider than the contact, or allow_edge_contact=True (its grid.allow_edge_contact); the solution is "
+         "in this exception's .result";
 }
 
 const std::vector<double>& pressure_of(const NormalResult& r) { return r.s.pressure; }

@@ -9,10 +9,18 @@
 namespace dc::python {
 namespace {
 
-std::string member_path(const std::string& key, const std::string& name) { return key.empty() ? name : key + "." + name; }
+/// A key path one level deeper; a path past 160 characters ends in "..." (as parse_json_checked's).
+std::string deeper(const std::string& key, const std::string& step) {
+  if (key.size() > 160) return key.ends_with("...") ? key : key + "...";
+  return key + step;
+}
+
+std::string member_path(const std::string& key, const std::string& name) {
+  return key.empty() ? name : deeper(key, "." + name);
+}
 
 std::string element_path(const std::string& key, std::size_t index) {
-  return (key.empty() ? std::string("case") : key) + "[" + std::to_string(index) + "]";
+  return deeper(key.empty() ? std::string("case") : key, "[" + std::to_string(index) + "]");
 }
 
 std::string where(const std::string& key) { return key.empty() ? "case" : key; }

@@ -179,3 +179,13 @@ def test_normal_problem_refuses_nan_and_minus_inf_heights():
     heights[0, 0] = np.inf
     s = dyncontact.NormalProblem(grid, STEEL, heights).solve(force=P)
     assert s.converged and s.pressure[0, 0] == 0.0
+
+
+def test_a_list_holding_itself_is_an_input_error_not_a_crash():
+    case = hertz_case(dict(RESOLVED))
+    loop = []
+    loop.append(loop)
+    case["grid"]["x"] = loop
+    with pytest.raises(dyncontact.InputError) as e:
+        dyncontact.solve(case)
+    assert e.value.key.startswith("grid.x[0]") and "nested more than" in str(e.value)
