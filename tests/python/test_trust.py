@@ -189,3 +189,13 @@ def test_a_list_holding_itself_is_an_input_error_not_a_crash():
     with pytest.raises(dyncontact.InputError) as e:
         dyncontact.solve(case)
     assert e.value.key.startswith("grid.x[0]") and "nested more than" in str(e.value)
+
+
+@pytest.mark.parametrize("name", ["cattaneo-sphere", "spence-sphere"])  # a shift; a loading history
+def test_tangential_cases_on_a_truncated_grid_raise_result_limit_error(name):
+    case = example(name)
+    case["grid"] = dict(TRUNCATED, nx=12, ny=12)
+    with pytest.raises(dyncontact.ResultLimitError) as e:
+        dyncontact.solve(case)
+    assert e.value.key == "grid"
+    assert "tangential_force" in e.value.result and e.value.result["limits"] == e.value.limits
