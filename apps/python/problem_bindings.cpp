@@ -25,7 +25,7 @@ using HeightArray = py::array_t<double, py::array::c_style | py::array::forcecas
 std::vector<double> heights_of(const Grid& g, const HeightArray& a) {
   std::vector<double> h = grid_values(g, a, "heights");
   for (std::size_t k = 0; k < h.size(); ++k)
-    if (std::isnan(h[k]) || h[k] == -INFINITY)
+    if (std::isnan(h[k]) || (std::isinf(h[k]) && h[k] < 0.0))
       throw InputError("heights", "element " + std::to_string(k) + " (in the grid's order) is " +
                                       (std::isnan(h[k]) ? "NaN" : "-inf") +
                                       "; give a finite height (m), or np.inf where the body cannot touch");
