@@ -201,8 +201,7 @@ int run_finite(const Case& c, const std::string& dir, bool quiet) {
     files["plots"] = plots;
   }
   s["files"] = files;
-  const std::vector<ResultLimit> limits = result_limits(c, measured_contact_size(c, s));
-  s["limits"] = limits_json(limits);
+  const std::vector<ResultLimit> limits = attach_result_limits(c, s);
   const std::string summary_path = write_summary(dir, s);
   if (!quiet) {
     std::printf("%s: %s (%s, %d iterations, %.3g s; certificate %.2e)\n", c.name.c_str(), to_string(report.status),

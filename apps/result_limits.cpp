@@ -153,4 +153,10 @@ nlohmann::json limits_json(const std::vector<ResultLimit>& limits) {
   return out;
 }
 
+std::vector<ResultLimit> attach_result_limits(const Case& c, nlohmann::json& summary) {
+  std::vector<ResultLimit> limits = result_limits(c, measured_contact_size(c, summary));
+  summary["limits"] = limits_json(limits);
+  return limits;
+}
+
 }  // namespace dc::cli

@@ -40,4 +40,9 @@ bool report_limits(const std::vector<ResultLimit>& limits, const std::string& di
 /// accepted only when a key of the case accepted it (grid.allow_edge_contact, ...).
 nlohmann::json limits_json(const std::vector<ResultLimit>& limits);
 
+/// The limits of a solved static case (normal, tangential, finite; a history: its last step)
+/// from its summary's contact measures, added to the summary as "limits" (limits_json) and
+/// returned: one function for `solve` and Python's solve().
+std::vector<ResultLimit> attach_result_limits(const Case& c, nlohmann::json& summary);
+
 }  // namespace dc::cli

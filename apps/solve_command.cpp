@@ -152,8 +152,7 @@ int run_solve(const SolveArgs& args) {
     files["plots"] = plots;
   }
   s["files"] = files;
-  const std::vector<ResultLimit> limits = result_limits(c, measured_contact_size(c, s));
-  s["limits"] = limits_json(limits);
+  const std::vector<ResultLimit> limits = attach_result_limits(c, s);
   const std::string summary_path = write_summary(dir, s);
 
   const SolverReport& r = run.report;

@@ -20,7 +20,9 @@
 #include "fields_writer.hpp"
 #include "linear_operator.hpp"
 #include "module_common.hpp"
+#include "python_limits.hpp"
 #include "python_runs.hpp"
+#include "result_limits.hpp"
 #include "summary_writer.hpp"
 #include "tangential_run.hpp"
 
@@ -80,14 +82,18 @@ py::dict solve(const py::object& case_arg, const py::object& out, bool progress)
     run = dc::cli::run_static(c, progress);
   }
   nlohmann::json summary = run.summary;
+  dc::cli::attach_result_limits(c, summary);  // as `dyncontact solve` writes them
+  std::string advice = "; the result is in this exception's .result";
   if (!out.is_none()) {
     const std::string dir = dc::cli::prepare_output_dir(c, py::str(py::module_::import("os").attr("fspath")(out)));
     dc::cli::write_fields(dir, c.grid, run.fields.back());
     summary["files"] = {{"summary", "summary.json"}, {"fields", "fields.csv"}};
     dc::cli::write_summary(dir, summary);
+    advice = "; the results are written to " + dir + " and are in this exception's .result";
   }
   py::dict result = to_python(summary);
   result["fields"] = fields_dict(c.grid, run.fields.back());
+  enforce_summary_limits(summary, result, advice);
   return result;
 }
 
@@ -171,7 +177,11 @@ PYBIND11_MODULE(dyncontact, m) {
       "  TangentialProblem              (3.25)/(4.8) with memory: step(...) (shift, torsion), steady_rolling(...),\n"
       "                                 roll(distance, ...) -> TangentialSolution\n"
       "  DynamicSimulation              a dynamic case run in time: DynamicSimulation(case).run()\n"
-      "  InputError                     bad input (a ValueError); .key names the key (e.g. 'grid.nx', 'force_x')\n\n"
+      "  InputError                     bad input (a ValueError); .key names the key (e.g. 'grid.nx', 'force_x',\n"
+      "                                 'grid.x[1]' for a NaN there)\n"
+      "  ResultLimitError               a result known to be wrong (an InputError), e.g. a contact cut by the\n"
+      "                                 grid: .key, .limits, .result (the result, for inspection)\n"
+      "  ResultLimitWarning             a limit that is only a warning (a UserWarning); results list all in 'limits'\n\n"
       "Example:\n"
       "  import dyncontact, json\n"
       "  r = dyncontact.solve(json.load(open('examples/hertz-sphere.json')))\n"
@@ -182,16 +192,7 @@ PYBIND11_MODULE(dyncontact, m) {
       "                                    (x**2 + y**2) / 0.02, mu=0.3)\n"
       "  s = tp.step(force=100.0, force_x=15.0)   # Cattaneo: s.amplitudes[0] is the shift, s.stick_area";
 
-  static py::exception<dc::InputError> input_error(m, "InputError", PyExc_ValueError);
-  py::register_exception_translator([](std::exception_ptr p) {
-    try {
-      if (p) std::rethrow_exception(p);
-    } catch (const dc::InputError& e) {
-      py::object err = py::handle(input_error.ptr())(e.what());
-      err.attr("key") = e.key();
-      PyErr_SetObject(input_error.ptr(), err.ptr());
-    }
-  });
+  bind_errors(m);
 
   m.def("solve", &solve, py::arg("case"), py::arg("out") = py::none(), py::arg("progress") = false,
         "solve(case, out=None, progress=False) -> dict\n\n"
@@ -202,8 +203,15 @@ PYBIND11_MODULE(dyncontact, m) {
         "tx, ty, sx, sy, state of shape (ny, nx) (2-D: (nx,)). No files are written unless `out`\n"
         "names a folder (summary.json and fields.csv). A dynamic or paper_cylinder case returns its\n"
         "summary with 'timeseries': {column: NumPy array} (the columns of timeseries.csv); a sweep's\n"
-        "runs each carry theirs under 'runs'. Raises InputError (a ValueError whose .key names the\n"
-        "case key) for bad input.");
+        "runs each carry theirs under 'runs'.\n\n"
+        "A dict may hold Python or NumPy numbers (np.int64, np.float64, np.bool_) and NumPy arrays\n"
+        "of one or two dimensions where the format has lists. Raises InputError (a ValueError whose\n"
+        ".key names the case key, e.g. 'normal.force' or 'grid.x[1]') for bad input: NaN or an\n"
+        "infinity anywhere, a value of another type, what the case format refuses. The summary's\n"
+        "'limits' are those of summary.json (a contact at the grid's edge, too few elements across\n"
+        "it, a/R too large): one that is an error (the command line's exit 2) raises\n"
+        "ResultLimitError (an InputError; .key, .limits, and .result: this summary with its fields),\n"
+        "after writing the files when `out` is given; the others are ResultLimitWarning warnings.");
 
   bind_problems(m);
   bind_runs(m);

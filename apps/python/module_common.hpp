@@ -1,26 +1,19 @@
 #pragma once
-// Helpers shared by the binding files of the Python module: JSON <-> Python, grid fields as
-// NumPy arrays, and the module's parts registered one file each.
+// Helpers shared by the binding files of the Python module: JSON <-> Python (python_values.hpp),
+// grid fields as NumPy arrays, and the module's parts registered one file each.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "errors.hpp"
 #include "grid.hpp"
+#include "python_values.hpp"  // from_python, to_python
 
 namespace dc::python {
 
 namespace py = pybind11;
-
-/// JSON <-> Python through the json module (exact for numbers: both sides round-trip doubles).
-inline py::object to_python(const nlohmann::json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
-inline nlohmann::json from_python(const py::handle& o) {
-  return nlohmann::json::parse(py::module_::import("json").attr("dumps")(o).cast<std::string>());
-}
 
 /// A field on the grid as a NumPy array of shape (ny, nx) (3-D) or (nx,) (2-D); zeros when empty.
 template <typename T>

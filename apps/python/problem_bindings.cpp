@@ -10,12 +10,27 @@
 #include "friction_law.hpp"
 #include "module_common.hpp"
 #include "normal_problem.hpp"
+#include "python_limits.hpp"
 #include "tangential_problem.hpp"
 
 namespace dc::python {
 namespace {
 
 using Opt = std::optional<double>;
+
+using HeightArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+/// The undeformed gap per element (m): finite, or +inf where the body cannot touch; NaN and -inf
+/// are InputError("heights").
+std::vector<double> heights_of(const Grid& g, const HeightArray& a) {
+  std::vector<double> h = grid_values(g, a, "heights");
+  for (std::size_t k = 0; k < h.size(); ++k)
+    if (std::isnan(h[k]) || (std::isinf(h[k]) && h[k] < 0.0))
+      throw InputError("heights", "element " + std::to_string(k) + " (in the grid's order) is " +
+                                      (std::isnan(h[k]) ? "NaN" : "-inf") +
+                                      "; give a finite height (m), or np.inf where the body cannot touch");
+  return h;
+}
 
 double finite_value(double v, const std::string& key) {
   if (!std::isfinite(v)) throw InputError(key, "must be a finite number");
@@ -77,17 +92,47 @@ OperatorKind operator_kind(const std::string& kind) {
 struct NormalResult {
   Grid grid;
   NormalSolution s;
+  nlohmann::json limits;  ///< contact_limits of the solution
 };
 struct TangentialResult {
   Grid grid;
   TangentialSolution s;
+  nlohmann::json limits;
 };
 
-/// A problem with the grid it was set up on (the C++ classes keep theirs private or by value).
+/// A problem with the grid it was set up on (the C++ classes keep theirs private or by value)
+/// and whether a contact reaching the grid's edge is accepted.
 struct PyNormalProblem {
   Grid grid;
   NormalProblem problem;
+  bool allow_edge_contact = false;
 };
+struct PyTangentialProblem {
+  TangentialProblem problem;
+  bool allow_edge_contact = false;
+};
+
+/// The end of a ResultLimitError's message from a problem class (its error limits are a
+/// contact cut by the grid's edge: contact_limits).
+std::string edge_advice(const char* cls) {
+  return std::string("; for ") + cls +
+         ": a grid wider than the contact, or allow_edge_contact=True (its grid.allow_edge_contact); the solution is "
+         "in this exception's .result";
+}
+
+const std::vector<double>& pressure_of(const NormalResult& r) { return r.s.pressure; }
+const std::vector<double>& pressure_of(const TangentialResult& r) { return r.s.normal.pressure; }
+
+/// A solution with its limits (from its contact) as a Python object; ResultLimitError when one
+/// is an error (a result known to be wrong is not returned as if it were right).
+template <typename Result>
+py::object checked(Result r, double certificate_tol, bool allow_edge_contact, const char* cls) {
+  r.limits = contact_limits(r.grid, pressure_of(r), certificate_tol, allow_edge_contact);
+  const nlohmann::json limits = r.limits;
+  py::object result = py::cast(std::move(r));
+  enforce_limits(limits, result, edge_advice(cls));
+  return result;
+}
 
 FrictionLaw friction_of(const Opt& mu, const Opt& tresca) {
   if (mu && tresca) throw InputError("tresca", "give mu (Coulomb) or tresca (a bound in Pa), not both");
@@ -103,7 +148,18 @@ FrictionLaw friction_of(const Opt& mu, const Opt& tresca) {
 constexpr const char* kSolverArgs =
     "Solver options (keywords): backend='auto' (auto, ipopt, nlopt, native), tol=1e-9,\n"
     "certificate_tol=1e-6 (the largest accepted certificate residual), max_iter=1000.\n"
-    "Non-convergence is not an exception: the solution's .converged and .report say so.";
+    "Non-convergence is not an exception: the solution's .converged and .report say so.\n"
+    "A contact reaching the grid's edge (the pressure truncated: a wrong result) raises\n"
+    "ResultLimitError (key 'grid', .result the solution) unless allow_edge_contact is True; fewer\n"
+    "than 4 elements across the contact is a ResultLimitWarning. Both are in the solution's .limits.";
+
+constexpr const char* kAllowEdgeContact =
+    "whether a contact reaching the grid's edge is accepted (a warning and an accepted entry in .limits)\n"
+    "instead of raising ResultLimitError (the case key grid.allow_edge_contact)";
+
+constexpr const char* kLimitsDoc =
+    "the limits of the result, as summary.json's 'limits': a list of {'key', 'message', 'accepted'}\n"
+    "(contact at the grid's edge, fewer than 4 elements across the contact); empty when none";
 
 }  // namespace
 
@@ -132,28 +188,35 @@ void bind_problems(py::module_& m) {
       .def_property_readonly("force", [](const NormalResult& r) { return r.s.force; }, "sum p A (N; 2-D N/m)")
       .def_property_readonly("converged", [](const NormalResult& r) { return r.s.report.status == SolveStatus::converged; })
       .def_property_readonly("report", [](const NormalResult& r) { return to_python(to_json(r.s.report)); },
-                             "the solver's report: backend, status, iterations, time_s, certificate, ...");
+                             "the solver's report: backend, status, iterations, time_s, certificate, ...")
+      .def_property_readonly("limits", [](const NormalResult& r) { return to_python(r.limits); }, kLimitsDoc);
 
   py::class_<PyNormalProblem>(
       m, "NormalProblem",
-      "NormalProblem(grid, materials, heights, kind='auto'): the normal contact problem (4.7),\n"
-      "min 1/2 p'Cp + (h - delta)'p over p >= 0, set up once (operator, FFT plans) and solved many\n"
-      "times (each solve starts from the last pressure). heights: the undeformed gap h (m) per\n"
-      "element, any shape with grid.size() values (np.inf where the body can never touch).")
-      .def(py::init([](const Grid& g, const MaterialPair& mat,
-                       const py::array_t<double, py::array::c_style | py::array::forcecast>& heights,
-                       const std::string& kind) {
-             return PyNormalProblem{g, NormalProblem(g, mat, grid_values(g, heights, "heights"), operator_kind(kind))};
+      "NormalProblem(grid, materials, heights, kind='auto', allow_edge_contact=False): the normal contact\n"
+      "problem (4.7), min 1/2 p'Cp + (h - delta)'p over p >= 0, set up once (operator, FFT plans) and\n"
+      "solved many times (each solve starts from the last pressure). heights: the undeformed gap h (m)\n"
+      "per element, any shape with grid.size() values (np.inf where the body can never touch; NaN and\n"
+      "-inf are an InputError). A solution whose contact reaches the grid's edge raises\n"
+      "ResultLimitError unless allow_edge_contact=True (see solve()).")
+      .def(py::init([](const Grid& g, const MaterialPair& mat, const HeightArray& heights, const std::string& kind,
+                       bool allow_edge_contact) {
+             return PyNormalProblem{g, NormalProblem(g, mat, heights_of(g, heights), operator_kind(kind)),
+                                    allow_edge_contact};
            }),
-           py::arg("grid"), py::arg("materials"), py::arg("heights"), py::arg("kind") = "auto")
+           py::arg("grid"), py::arg("materials"), py::arg("heights"), py::arg("kind") = "auto",
+           py::arg("allow_edge_contact") = false)
       .def(
           "solve",
           [](PyNormalProblem& self, const Opt& force, const Opt& approach, const std::string& backend, double tol,
              double certificate_tol, int max_iter) {
             const NormalSpec load = normal_load(force, approach);
             const SolverSpec solver = solver_spec(backend, tol, certificate_tol, max_iter);
-            py::gil_scoped_release release;
-            return NormalResult{self.grid, self.problem.solve(load, solver)};
+            NormalResult r = [&] {
+              py::gil_scoped_release release;
+              return NormalResult{self.grid, self.problem.solve(load, solver), {}};
+            }();
+            return checked(std::move(r), solver.certificate_tol, self.allow_edge_contact, "NormalProblem");
           },
           py::kw_only(), py::arg("force") = py::none(), py::arg("approach") = py::none(), py::arg("backend") = "auto",
           py::arg("tol") = 1e-9, py::arg("certificate_tol") = 1e-6, py::arg("max_iter") = 1000,
@@ -164,10 +227,9 @@ void bind_problems(py::module_& m) {
               .c_str())
       .def(
           "set_heights",
-          [](PyNormalProblem& self, const py::array_t<double, py::array::c_style | py::array::forcecast>& h) {
-            self.problem.set_heights(grid_values(self.grid, h, "heights"));
-          },
+          [](PyNormalProblem& self, const HeightArray& h) { self.problem.set_heights(heights_of(self.grid, h)); },
           py::arg("heights"), "set_heights(heights): move the body (a new undeformed gap, m)")
+      .def_readwrite("allow_edge_contact", &PyNormalProblem::allow_edge_contact, kAllowEdgeContact)
       .def_property_readonly("grid", [](const PyNormalProblem& self) { return self.grid; });
 
   py::class_<TangentialResult>(m, "TangentialSolution",
@@ -203,29 +265,33 @@ void bind_problems(py::module_& m) {
                r.s.outer.converged;
       })
       .def_property_readonly("report", [](const TangentialResult& r) { return to_python(to_json(r.s.report)); },
-                             "the tangential solver's report (its certificate holds the normal residuals too)");
+                             "the tangential solver's report (its certificate holds the normal residuals too)")
+      .def_property_readonly("limits", [](const TangentialResult& r) { return to_python(r.limits); }, kLimitsDoc);
 
-  py::class_<TangentialProblem>(
+  py::class_<PyTangentialProblem>(
       m, "TangentialProblem",
-      "TangentialProblem(grid, materials, heights, mu=None, tresca=None, kind='auto'): the tangential\n"
-      "problem (3.25)/(4.8) on top of the normal one, with Coulomb (mu) or Tresca (a bound, Pa)\n"
-      "friction. It keeps its loading history: successive step() calls are a history with memory\n"
+      "TangentialProblem(grid, materials, heights, mu=None, tresca=None, kind='auto',\n"
+      "allow_edge_contact=False): the tangential problem (3.25)/(4.8) on top of the normal one, with\n"
+      "Coulomb (mu) or Tresca (a bound, Pa) friction; heights as for NormalProblem. A solution whose\n"
+      "contact reaches the grid's edge raises ResultLimitError unless allow_edge_contact=True (the\n"
+      "step is taken all the same: the history goes on from it).\n"
+      "It keeps its loading history: successive step() calls are a history with memory\n"
       "(Cattaneo-Mindlin), roll() marches from the current state; reset() forgets it.\n"
       "Each rigid mode is given by its amplitude or by its resultant (then solved for):\n"
       "  step:           shift_x | force_x (m | N), shift_y | force_y, angle | moment_z (rad | N m)\n"
       "  steady_rolling: creepage_x | force_x, creepage_y | force_y, spin | moment_z (1/m | N m)\n"
       "Forces are on the body (a shift in +x gives Fx < 0).")
-      .def(py::init([](const Grid& g, const MaterialPair& mat,
-                       const py::array_t<double, py::array::c_style | py::array::forcecast>& heights, const Opt& mu,
-                       const Opt& tresca, const std::string& kind) {
-             return TangentialProblem(g, mat, grid_values(g, heights, "heights"), friction_of(mu, tresca),
-                                      operator_kind(kind));
+      .def(py::init([](const Grid& g, const MaterialPair& mat, const HeightArray& heights, const Opt& mu,
+                       const Opt& tresca, const std::string& kind, bool allow_edge_contact) {
+             return PyTangentialProblem{
+                 TangentialProblem(g, mat, heights_of(g, heights), friction_of(mu, tresca), operator_kind(kind)),
+                 allow_edge_contact};
            }),
            py::arg("grid"), py::arg("materials"), py::arg("heights"), py::arg("mu") = py::none(),
-           py::arg("tresca") = py::none(), py::arg("kind") = "auto")
+           py::arg("tresca") = py::none(), py::arg("kind") = "auto", py::arg("allow_edge_contact") = false)
       .def(
           "step",
-          [](TangentialProblem& self, const Opt& force, const Opt& approach, const Opt& shift_x, const Opt& force_x,
+          [](PyTangentialProblem& self, const Opt& force, const Opt& approach, const Opt& shift_x, const Opt& force_x,
              const Opt& shift_y, const Opt& force_y, const Opt& angle, const Opt& moment_z, const std::string& backend,
              double tol, double certificate_tol, int max_iter) {
             TangentialLoad load;
@@ -233,8 +299,11 @@ void bind_problems(py::module_& m) {
             load.modes = {mode(shift_x, "shift_x", force_x, "force_x"), mode(shift_y, "shift_y", force_y, "force_y"),
                           mode(angle, "angle", moment_z, "moment_z")};
             const SolverSpec solver = solver_spec(backend, tol, certificate_tol, max_iter);
-            py::gil_scoped_release release;
-            return TangentialResult{self.grid(), self.step(load, solver)};
+            TangentialResult r = [&] {
+              py::gil_scoped_release release;
+              return TangentialResult{self.problem.grid(), self.problem.step(load, solver), {}};
+            }();
+            return checked(std::move(r), solver.certificate_tol, self.allow_edge_contact, "TangentialProblem");
           },
           py::kw_only(), py::arg("force") = py::none(), py::arg("approach") = py::none(),
           py::arg("shift_x") = py::none(), py::arg("force_x") = py::none(), py::arg("shift_y") = py::none(),
@@ -249,14 +318,17 @@ void bind_problems(py::module_& m) {
               .c_str())
       .def(
           "steady_rolling",
-          [](TangentialProblem& self, const Opt& force, const Opt& approach, const Opt& creepage_x, const Opt& force_x,
+          [](PyTangentialProblem& self, const Opt& force, const Opt& approach, const Opt& creepage_x, const Opt& force_x,
              const Opt& creepage_y, const Opt& force_y, const Opt& spin, const Opt& moment_z, double velocity,
              const std::string& backend, double tol, double certificate_tol, int max_iter) {
             const RollingLoad load =
                 rolling_load(force, approach, creepage_x, force_x, creepage_y, force_y, spin, moment_z, velocity);
             const SolverSpec solver = solver_spec(backend, tol, certificate_tol, max_iter);
-            py::gil_scoped_release release;
-            return TangentialResult{self.grid(), self.steady_rolling(load, solver)};
+            TangentialResult r = [&] {
+              py::gil_scoped_release release;
+              return TangentialResult{self.problem.grid(), self.problem.steady_rolling(load, solver), {}};
+            }();
+            return checked(std::move(r), solver.certificate_tol, self.allow_edge_contact, "TangentialProblem");
           },
           py::kw_only(), py::arg("force") = py::none(), py::arg("approach") = py::none(),
           py::arg("creepage_x") = py::none(), py::arg("force_x") = py::none(), py::arg("creepage_y") = py::none(),
@@ -271,14 +343,17 @@ void bind_problems(py::module_& m) {
               .c_str())
       .def(
           "roll",
-          [](TangentialProblem& self, double distance, const Opt& force, const Opt& approach, const Opt& creepage_x,
+          [](PyTangentialProblem& self, double distance, const Opt& force, const Opt& approach, const Opt& creepage_x,
              const Opt& force_x, const Opt& creepage_y, const Opt& force_y, const Opt& spin, const Opt& moment_z,
              double velocity, const std::string& backend, double tol, double certificate_tol, int max_iter) {
             const RollingLoad load =
                 rolling_load(force, approach, creepage_x, force_x, creepage_y, force_y, spin, moment_z, velocity);
             const SolverSpec solver = solver_spec(backend, tol, certificate_tol, max_iter);
-            py::gil_scoped_release release;
-            return TangentialResult{self.grid(), self.roll(load, distance, solver)};
+            TangentialResult r = [&] {
+              py::gil_scoped_release release;
+              return TangentialResult{self.problem.grid(), self.problem.roll(load, distance, solver), {}};
+            }();
+            return checked(std::move(r), solver.certificate_tol, self.allow_edge_contact, "TangentialProblem");
           },
           py::arg("distance"), py::kw_only(), py::arg("force") = py::none(), py::arg("approach") = py::none(),
           py::arg("creepage_x") = py::none(), py::arg("force_x") = py::none(), py::arg("creepage_y") = py::none(),
@@ -290,8 +365,11 @@ void bind_problems(py::module_& m) {
                        "e.g. Cattaneo's state rolling into Carter's. ") +
            kSolverArgs)
               .c_str())
-      .def("reset", &TangentialProblem::reset, "reset(): forget the loading history (back to the unloaded state)")
-      .def_property_readonly("grid", &TangentialProblem::grid);
+      .def(
+          "reset", [](PyTangentialProblem& self) { self.problem.reset(); },
+          "reset(): forget the loading history (back to the unloaded state)")
+      .def_readwrite("allow_edge_contact", &PyTangentialProblem::allow_edge_contact, kAllowEdgeContact)
+      .def_property_readonly("grid", [](const PyTangentialProblem& self) { return self.problem.grid(); });
 }
 
 }  // namespace dc::python

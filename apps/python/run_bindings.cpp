@@ -15,9 +15,15 @@
 #include "dynamic_sweep.hpp"
 #include "module_common.hpp"
 #include "paper_cylinder_run.hpp"
+#include "python_limits.hpp"
 #include "python_runs.hpp"
 
 namespace dc::python {
+namespace {
+
+constexpr const char* kRunAdvice = "; the run is in this exception's .result";
+
+}  // namespace
 
 py::dict csv_columns(const std::string& text) {
   std::istringstream in(text);
@@ -68,7 +74,9 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
       py::gil_scoped_release release;
       out = cli::simulate_dynamic_sweep(c, !progress);
     }
-    return with_series(out.summary, out.files, out.texts);
+    py::dict result = with_series(out.summary, out.files, out.texts);
+    enforce_summary_limits(out.summary, result, kRunAdvice);
+    return result;
   }
   cli::DynamicOutcome out;
   {
@@ -77,6 +85,7 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
   }
   py::dict result = to_python(out.summary);
   result["timeseries"] = csv_columns(out.timeseries);
+  enforce_summary_limits(out.summary, result, kRunAdvice);
   return result;
 }
 
@@ -86,7 +95,9 @@ py::dict run_paper_cylinder_case(const Case& c, bool progress) {
     py::gil_scoped_release release;
     out = cli::simulate_paper_cylinder(c, !progress);
   }
-  return with_series(out.summary, out.files, out.texts);
+  py::dict result = with_series(out.summary, out.files, out.texts);
+  enforce_summary_limits(out.summary, result, kRunAdvice);
+  return result;
 }
 
 namespace {
@@ -118,7 +129,8 @@ void bind_runs(py::module_& m) {
       "the columns of timeseries.csv (t, x, y, z, vx, ..., Fx, Fy, Fz, Mx, My, Mz, creepage,\n"
       "stick_fraction, approach, contact_area, n_contact, n_stick, n_slip, kinetic_energy,\n"
       "certificate, newton_iterations). A run that stops early is not an exception: its status\n"
-      "says 'stopped' and its message why.")
+      "says 'stopped' and its message why. A limit in the summary's 'limits' that is an error (not\n"
+      "accepted by the case) raises ResultLimitError with the run as .result, as solve() does.")
       .def(py::init([](const py::object& c) { return PyDynamicSimulation(case_from(c)); }), py::arg("case"))
       .def("run", &PyDynamicSimulation::run, py::arg("progress") = false,
            "run(progress=False) -> dict: runs to time.t_end (progress on stderr when asked)")

@@ -1,0 +1,96 @@
+#include "python_limits.hpp"
+
+#include <algorithm>
+
+#include "case_model.hpp"
+#include "errors.hpp"
+#include "python_values.hpp"
+#include "result_limits.hpp"
+#include "static_fields.hpp"
+
+namespace dc::python {
+namespace {
+
+// The module's exception types (owned by the module, which lives to the interpreter's end).
+PyObject* g_input_error = nullptr;
+PyObject* g_result_limit_error = nullptr;
+PyObject* g_result_limit_warning = nullptr;
+
+struct ResultLimitTag {};    // py::exception's C++ type: none is thrown (enforce_limits raises)
+struct ResultLimitWarningTag {};
+
+/// An exception instance of `type` with `message` and .key.
+py::object error_with_key(PyObject* type, const std::string& message, const std::string& key) {
+  py::object err = py::handle(type)(message);
+  err.attr("key") = key;
+  return err;
+}
+
+}  // namespace
+
+void bind_errors(py::module_& m) {
+  static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
+  static py::exception<ResultLimitTag> result_limit_error(m, "ResultLimitError", input_error);
+  static py::exception<ResultLimitWarningTag> result_limit_warning(m, "ResultLimitWarning", PyExc_UserWarning);
+  g_input_error = input_error.ptr();
+  g_result_limit_error = result_limit_error.ptr();
+  g_result_limit_warning = result_limit_warning.ptr();
+  input_error.attr("__doc__") =
+      "Bad input (a ValueError): .key names the case key (e.g. 'grid.nx', 'normal.force', 'grid.x[1]') or the\n"
+      "argument (e.g. 'force_x', 'heights'); the message says why.";
+  result_limit_error.attr("__doc__") =
+      "A result the program knows to be wrong (an InputError: the input must change, as `dyncontact solve`\n"
+      "exits 2), e.g. a contact cut by the grid's edge. .key names the case key to change (e.g. 'grid'),\n"
+      ".limits lists every limit of the result ({'key', 'message', 'accepted'}, as summary.json's\n"
+      "'limits'), .result holds the result for inspection (solve(): the summary dict with its fields;\n"
+      "NormalProblem, TangentialProblem: the solution). solve(..., out=DIR) has written its files first.";
+  result_limit_warning.attr("__doc__") =
+      "A limit of a result that is not an error (a UserWarning), e.g. a contact resolved by fewer than\n"
+      "4 elements, or one the case accepts (grid.allow_edge_contact): the result's 'limits' list it too.";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InputError& e) {
+      const py::object err = error_with_key(g_input_error, e.what(), e.key());
+      PyErr_SetObject(g_input_error, err.ptr());
+    }
+  });
+}
+
+void enforce_limits(const nlohmann::json& limits, const py::object& result, const std::string& advice) {
+  if (!limits.is_array()) return;
+  for (const nlohmann::json& l : limits) {
+    if (l.value("accepted", true)) continue;
+    const std::string key = l.value("key", "");
+    py::object err = error_with_key(g_result_limit_error, key + ": " + l.value("message", "") + advice, key);
+    err.attr("limits") = to_python(limits);
+    err.attr("result") = result;
+    PyErr_SetObject(g_result_limit_error, err.ptr());
+    throw py::error_already_set();
+  }
+  for (const nlohmann::json& l : limits) {
+    const std::string text = l.value("key", "") + ": " + l.value("message", "");
+    if (PyErr_WarnEx(g_result_limit_warning, text.c_str(), 1) != 0) throw py::error_already_set();  // an error filter
+  }
+}
+
+void enforce_summary_limits(const nlohmann::json& summary, const py::object& result, const std::string& advice) {
+  if (summary.contains("limits")) enforce_limits(summary["limits"], result, advice);
+  if (summary.contains("runs") && summary["runs"].is_array())
+    for (const nlohmann::json& run : summary["runs"])
+      if (run.is_object() && run.contains("limits")) enforce_limits(run["limits"], result, advice);
+}
+
+nlohmann::json contact_limits(const Grid& grid, const std::vector<double>& pressure, double certificate_tol,
+                              bool allow_edge_contact) {
+  Case c;  // the grid's part of a case: what result_limits reads
+  c.dimension = grid.dimension;
+  c.grid = grid;
+  c.allow_edge_contact = allow_edge_contact;
+  c.profile.type = ProfileType::table;  // heights given as values: no radius of curvature
+  nlohmann::json measures;
+  cli::add_contact_measures(measures, grid, cli::normal_fields(pressure, std::max(certificate_tol, 1e-12)));
+  return cli::limits_json(cli::result_limits(c, cli::measured_contact_size(c, measures)));
+}
+
+}  // namespace dc::python
