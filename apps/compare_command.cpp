@@ -15,6 +15,7 @@
 #include "result_limits.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
+#include "output_files.hpp"
 #include "solver_report.hpp"
 #include "summary_writer.hpp"
 #include "tangential_run.hpp"
@@ -181,7 +182,7 @@ int run_compare(const CompareArgs& args) {
   }
   if (first) std::printf("(d_*: largest relative difference from %s)\n", first->backend.c_str());
   const std::string path = (std::filesystem::path(dir) / "compare.json").string();
-  write_text_file(path, list.dump(2) + "\n");
+  write_file_whole(path, list.dump(2) + "\n");
   std::printf("wrote %s\n", path.c_str());
   std::fflush(stdout);
   if (report_limits(limits, dir)) return kExitBadInput;
