@@ -20,6 +20,7 @@
 #include "fields_writer.hpp"
 #include "linear_operator.hpp"
 #include "module_common.hpp"
+#include "output_files.hpp"
 #include "python_runs.hpp"
 #include "summary_writer.hpp"
 #include "tangential_run.hpp"
@@ -74,17 +75,19 @@ py::dict solve(const py::object& case_arg, const py::object& out, bool progress)
     throw dc::InputError("problem", std::string("'") + dc::to_string(c.problem) +
                                         "' is run by the command line (dyncontact solve); solve() takes normal, "
                                         "tangential, dynamic and paper_cylinder cases");
+  // The folder is locked for the call (another run into it is refused before this one solves).
+  dc::cli::OutputFolder folder;
+  if (!out.is_none()) folder = dc::cli::open_output_folder(c, py::str(py::module_::import("os").attr("fspath")(out)));
   dc::cli::StaticRun run;
   {
     py::gil_scoped_release release;
     run = dc::cli::run_static(c, progress);
   }
   nlohmann::json summary = run.summary;
-  if (!out.is_none()) {
-    const std::string dir = dc::cli::prepare_output_dir(c, py::str(py::module_::import("os").attr("fspath")(out)));
-    dc::cli::write_fields(dir, c.grid, run.fields.back());
+  if (folder.lock) {  // summary.json last: complete or absent
+    dc::cli::write_fields(folder.dir, c.grid, run.fields.back());
     summary["files"] = {{"summary", "summary.json"}, {"fields", "fields.csv"}};
-    dc::cli::write_summary(dir, summary);
+    dc::cli::write_summary(folder.dir, summary);
   }
   py::dict result = to_python(summary);
   result["fields"] = fields_dict(c.grid, run.fields.back());
@@ -171,7 +174,8 @@ PYBIND11_MODULE(dyncontact, m) {
       "  TangentialProblem              (3.25)/(4.8) with memory: step(...) (shift, torsion), steady_rolling(...),\n"
       "                                 roll(distance, ...) -> TangentialSolution\n"
       "  DynamicSimulation              a dynamic case run in time: DynamicSimulation(case).run()\n"
-      "  InputError                     bad input (a ValueError); .key names the key (e.g. 'grid.nx', 'force_x')\n\n"
+      "  InputError                     bad input (a ValueError); .key names the key (e.g. 'grid.nx', 'force_x')\n"
+      "  OutputError                    a file of solve(out=...) could not be written (an OSError; .filename)\n\n"
       "Example:\n"
       "  import dyncontact, json\n"
       "  r = dyncontact.solve(json.load(open('examples/hertz-sphere.json')))\n"
@@ -183,6 +187,7 @@ PYBIND11_MODULE(dyncontact, m) {
       "  s = tp.step(force=100.0, force_x=15.0)   # Cattaneo: s.amplitudes[0] is the shift, s.stick_area";
 
   static py::exception<dc::InputError> input_error(m, "InputError", PyExc_ValueError);
+  static py::exception<dc::OutputError> output_error(m, "OutputError", PyExc_OSError);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -190,6 +195,11 @@ PYBIND11_MODULE(dyncontact, m) {
       py::object err = py::handle(input_error.ptr())(e.what());
       err.attr("key") = e.key();
       PyErr_SetObject(input_error.ptr(), err.ptr());
+    } catch (const dc::OutputError& e) {  // OSError(errno, strerror, filename) when a system call failed
+      py::object err = e.error_number() != 0 ? py::handle(output_error.ptr())(e.error_number(), e.reason(), e.path())
+                                             : py::handle(output_error.ptr())(e.what());
+      if (e.error_number() == 0) err.attr("filename") = e.path();
+      PyErr_SetObject(output_error.ptr(), err.ptr());
     }
   });
 
@@ -203,7 +213,8 @@ PYBIND11_MODULE(dyncontact, m) {
         "names a folder (summary.json and fields.csv). A dynamic or paper_cylinder case returns its\n"
         "summary with 'timeseries': {column: NumPy array} (the columns of timeseries.csv); a sweep's\n"
         "runs each carry theirs under 'runs'. Raises InputError (a ValueError whose .key names the\n"
-        "case key) for bad input.");
+        "case key) for bad input, also when another run is writing into `out` (the folder is locked\n"
+        "for the call), and OutputError (an OSError) when a file cannot be written.");
 
   bind_problems(m);
   bind_runs(m);
