@@ -64,14 +64,14 @@ bool is_result_file(const std::string& name) {
   return numbered(name, "fields_", ".csv") || numbered(name, "timeseries_", ".csv") || numbered(name, "body_", ".vtu");
 }
 
-OutputFolder open_output_folder(const Case& c, const std::string& cli_out) {
+OutputFolder open_output_folder(const Case& c, const std::string& cli_out, const std::string& out_key) {
   namespace fs = std::filesystem;
   OutputFolder folder;
   std::string& dir = folder.dir;
   dir = cli_out;
   if (dir.empty()) dir = c.output.dir;
   if (dir.empty()) dir = (fs::path("out") / c.name).string();
-  const std::string key = cli_out.empty() ? (c.output.dir.empty() ? "name" : "output.dir") : "--out";
+  const std::string key = cli_out.empty() ? (c.output.dir.empty() ? "name" : "output.dir") : out_key;
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))

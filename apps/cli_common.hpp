@@ -41,8 +41,8 @@ struct OutputFolder {
 /// (output_lock.hpp: a folder another run holds is refused at once). Throws InputError naming
 /// the key (--out, output.dir, name) when it cannot be created, locked or written into, before
 /// anything is solved; removes the temporaries of a killed run (output_files.hpp) and the
-/// result files of an earlier run (only those).
-OutputFolder open_output_folder(const Case& c, const std::string& cli_out);
+/// result files of an earlier run (only those). `out_key` names the folder given (Python: out).
+OutputFolder open_output_folder(const Case& c, const std::string& cli_out, const std::string& out_key = "--out");
 
 /// open_output_folder for the command line: the folder stays locked until the process ends.
 std::string prepare_output_dir(const Case& c, const std::string& cli_out);

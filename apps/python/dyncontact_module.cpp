@@ -77,7 +77,8 @@ py::dict solve(const py::object& case_arg, const py::object& out, bool progress)
                                         "tangential, dynamic and paper_cylinder cases");
   // The folder is locked for the call (another run into it is refused before this one solves).
   dc::cli::OutputFolder folder;
-  if (!out.is_none()) folder = dc::cli::open_output_folder(c, py::str(py::module_::import("os").attr("fspath")(out)));
+  if (!out.is_none())
+    folder = dc::cli::open_output_folder(c, py::str(py::module_::import("os").attr("fspath")(out)), "out");
   dc::cli::StaticRun run;
   {
     py::gil_scoped_release release;
