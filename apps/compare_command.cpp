@@ -207,7 +207,7 @@ void add_compare_command(CLI::App& app, int& exit_code) {
       "Use it to check that the backends agree on a new kind of case or to pick the fastest. A finite case "
       "(problem finite) solves the condensed program with each backend; 'ipopt-sparse' adds Ipopt on the sparse "
       "saddle form (docs/finite.md), certified on the condensed program (normal and tangential cases). "
-      "Exit code 0 when every backend converged, 3 otherwise, 2 for bad input.");
+      "Exit code 0 when every backend converged, 3 otherwise, 2 for bad input, 5 when compare.json cannot be written.");
   sub->add_option("case", args->case_path, "case file (JSON)")->required();
   sub->add_option("--backends", args->backends, "comma-separated backends (default ipopt,nlopt,native)")
       ->delimiter(',');

@@ -116,7 +116,8 @@ void add_table_command(CLI::App& app, int& exit_code) {
       "(the case, the ranges, the points that failed) and the plots table_Fx / table_Fy. Forces act on the body; "
       "F/(mu P) is over the friction capacity sum f(p) A. The points run on the cores with threads "
       "(DYNCONTACT_THREADS), or over the ranks of `mpirun -n N dyncontact table ...` (same files). "
-      "Exit code 0 when every point converged, 3 otherwise (the others are kept), 2 for bad input.");
+      "Exit code 0 when every point converged, 3 otherwise (the others are kept), 2 for bad input, 5 when a file "
+      "cannot be written.");
   sub->add_option("case", args->case_path, "case file (JSON), a rolling tangential case")->required();
   sub->add_option("--creepage", args->creepage, "longitudinal creepage xi: start:stop:count or a,b,c");
   sub->add_option("--lateral", args->lateral, "lateral creepage eta (3-D): start:stop:count or a,b,c");
