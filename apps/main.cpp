@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   } catch (const dc::OutputError& e) {
     std::cout.flush();
-    std::cerr << "error: output file " << e.what() << '\n';
+    std::cerr << "error: " << e.what() << '\n';  // the file, then why
     return kExitOutput;
   } catch (const std::bad_alloc&) {
     std::cout.flush();

@@ -254,4 +254,16 @@ TEST_F(CliOutputFolder, ARunKilledWhileWritingLeavesNoTemporariesAfterTheNextRun
   EXPECT_TRUE(json::accept(slurp(out / "summary.json")));
 }
 
+TEST_F(CliOutputFolder, AnExampleThatCannotBeWrittenIsExit5) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  const fs::path err = dir_ / "stderr.txt";
+  const int status = std::system((shell_quote(DYNCONTACT_BINARY) + " example hertz-sphere >/dev/full 2>" +
+                                  shell_quote(err.string()))
+                                     .c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 5) << slurp(err);
+  EXPECT_NE(slurp(err).find("standard output"), std::string::npos) << slurp(err);
+  EXPECT_NE(slurp(err).find("No space left on device"), std::string::npos) << slurp(err);
+}
+
 }  // namespace
