@@ -3,10 +3,10 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
 #include "elastic_body.hpp"
-#include "errors.hpp"
+#include "output_files.hpp"
 #include "vtu_writer.hpp"
 
 namespace dc::cli {
@@ -22,14 +22,13 @@ std::string BodySnapshots::write(const dynamics::FiniteBody& body, const dynamic
   write_body_vtu((folder / name).string(), placed, body.displacement(), elastic.element_stress(body.displacement()));
   files_.emplace_back(state.time, name);
   const std::string pvd = (folder / collection()).string();
-  std::ofstream out(pvd, std::ios::trunc);
-  if (!out) throw InputError(pvd, "cannot write");
+  std::ostringstream out;
   out.precision(12);
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       << "<Collection>\n";
   for (const auto& [t, file] : files_) out << "<DataSet timestep=\"" << t << "\" group=\"\" part=\"0\" file=\"" << file << "\"/>\n";
   out << "</Collection>\n</VTKFile>\n";
-  if (!out) throw InputError(pvd, "write failed");
+  write_file_whole(pvd, out.str());
   return name;
 }
 

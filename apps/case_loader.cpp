@@ -13,6 +13,7 @@
 
 #include "cli_common.hpp"
 #include "errors.hpp"
+#include "output_files.hpp"
 
 namespace dc::cli {
 
@@ -50,7 +51,7 @@ bool is_result_file(const std::string& name) {
   static const std::set<std::string> fixed = {
       "summary.json", "compare.json", "fields.csv", "timeseries.csv", "plots.gp", "plots.log",
       "line_x.dat", "line_y.dat", "map.dat", "reference_x.dat", "reference_y.dat",
-      "table.csv", "table.json", "table_Fx.dat", "table_Fy.dat", "body.vtu"};
+      "table.csv", "table.json", "table_Fx.dat", "table_Fy.dat", "body.vtu", "body.pvd"};
   static const char* figures[] = {"pressure_x", "pressure_y", "traction_x", "traction_y", "pressure_map",
                                   "contact_map", "F_bar", "l_bar", "v_bar",
                                   // dynamic
@@ -60,19 +61,23 @@ bool is_result_file(const std::string& name) {
   for (const char* f : figures)
     for (const char* ext : {".svg", ".png"})
       if (name == std::string(f) + ext) return true;
-  return numbered(name, "fields_", ".csv") || numbered(name, "timeseries_", ".csv");
+  return numbered(name, "fields_", ".csv") || numbered(name, "timeseries_", ".csv") || numbered(name, "body_", ".vtu");
 }
 
-std::string prepare_output_dir(const Case& c, const std::string& cli_out) {
+OutputFolder open_output_folder(const Case& c, const std::string& cli_out, const std::string& out_key) {
   namespace fs = std::filesystem;
-  std::string dir = cli_out;
+  OutputFolder folder;
+  std::string& dir = folder.dir;
+  dir = cli_out;
   if (dir.empty()) dir = c.output.dir;
   if (dir.empty()) dir = (fs::path("out") / c.name).string();
-  const std::string key = cli_out.empty() ? (c.output.dir.empty() ? "name" : "output.dir") : "--out";
+  const std::string key = cli_out.empty() ? (c.output.dir.empty() ? "name" : "output.dir") : out_key;
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
     throw InputError(key, "cannot create the output folder '" + dir + "'" + (ec ? ": " + ec.message() : ""));
+  // One run at a time: locked before anything in the folder is removed or solved.
+  folder.lock = std::make_unique<OutputFolderLock>(dir, key);
   // Writable? Found now, not after the solve.
   const fs::path probe = fs::path(dir) / ".dyncontact-write-test";
   {
@@ -83,25 +88,28 @@ std::string prepare_output_dir(const Case& c, const std::string& cli_out) {
     }
   }
   fs::remove(probe, ec);
-  // The run owns its folder's result files: those of an earlier run go (only our own names).
+  // The run owns its folder's result files: those of an earlier run go (only our own names), and
+  // so do the temporaries of a run killed while writing (no run can be writing them now: the
+  // folder is locked).
   std::vector<fs::path> stale;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
     std::error_code e2;
-    if (entry.is_regular_file(e2) && is_result_file(entry.path().filename().string())) stale.push_back(entry.path());
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file(e2) && (is_result_file(name) || name.rfind(kPartialPrefix, 0) == 0))
+      stale.push_back(entry.path());
   }
   for (const fs::path& file : stale) {
     fs::remove(file, ec);
     if (ec) throw InputError(key, "cannot remove the earlier result '" + file.string() + "': " + ec.message());
   }
-  return dir;
+  return folder;
 }
 
-void write_text_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError(path, "cannot write");
-  out << text;
-  out.close();
-  if (!out) throw InputError(path, "write failed");
+std::string prepare_output_dir(const Case& c, const std::string& cli_out) {
+  OutputFolder folder = open_output_folder(c, cli_out);
+  static std::vector<std::unique_ptr<OutputFolderLock>> held;  // released when the process ends
+  held.push_back(std::move(folder.lock));
+  return folder.dir;
 }
 
 const CLI::Validator& non_empty_folder() {

@@ -15,6 +15,7 @@
 #include "result_limits.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
+#include "output_files.hpp"
 #include "solver_report.hpp"
 #include "summary_writer.hpp"
 #include "tangential_run.hpp"
@@ -181,7 +182,7 @@ int run_compare(const CompareArgs& args) {
   }
   if (first) std::printf("(d_*: largest relative difference from %s)\n", first->backend.c_str());
   const std::string path = (std::filesystem::path(dir) / "compare.json").string();
-  write_text_file(path, list.dump(2) + "\n");
+  write_file_whole(path, list.dump(2) + "\n");
   std::printf("wrote %s\n", path.c_str());
   std::fflush(stdout);
   if (report_limits(limits, dir)) return kExitBadInput;
@@ -206,7 +207,7 @@ void add_compare_command(CLI::App& app, int& exit_code) {
       "Use it to check that the backends agree on a new kind of case or to pick the fastest. A finite case "
       "(problem finite) solves the condensed program with each backend; 'ipopt-sparse' adds Ipopt on the sparse "
       "saddle form (docs/finite.md), certified on the condensed program (normal and tangential cases). "
-      "Exit code 0 when every backend converged, 3 otherwise, 2 for bad input.");
+      "Exit code 0 when every backend converged, 3 otherwise, 2 for bad input, 5 when compare.json cannot be written.");
   sub->add_option("case", args->case_path, "case file (JSON)")->required();
   sub->add_option("--backends", args->backends, "comma-separated backends (default ipopt,nlopt,native)")
       ->delimiter(',');

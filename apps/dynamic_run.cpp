@@ -12,6 +12,7 @@
 #include "fields_writer.hpp"
 #include "gnuplot_figures.hpp"
 #include "interrupt_handler.hpp"
+#include "output_files.hpp"
 #include "result_limits.hpp"
 #include "summary_writer.hpp"
 #ifdef DYNCONTACT_WITH_FE
@@ -78,7 +79,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   });
   const dynamics::DynamicResult& r = out.result;
   const double elapsed = out.elapsed;
-  write_text_file((fs::path(dir) / "timeseries.csv").string(), out.timeseries);
+  write_file_whole((fs::path(dir) / "timeseries.csv").string(), out.timeseries);
   json summary = out.summary;
   json files = {{"summary", "summary.json"}, {"timeseries", "timeseries.csv"}};
   if (!snapshots.empty()) files["snapshots"] = snapshots;
@@ -127,7 +128,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
 int run_dynamic_sweep(const Case& c, const std::string& dir, bool quiet) {
   DynamicSweepOutcome out = simulate_dynamic_sweep(c, quiet);
   if (!out.root) return kExitOk;
-  for (std::size_t k = 0; k < out.files.size(); ++k) write_text_file((fs::path(dir) / out.files[k]).string(), out.texts[k]);
+  for (std::size_t k = 0; k < out.files.size(); ++k) write_file_whole((fs::path(dir) / out.files[k]).string(), out.texts[k]);
   json& summary = out.summary;
   json files = {{"summary", "summary.json"}, {"timeseries", out.files}};
   if (c.output.plots && !out.interrupted) {  // an interrupted sweep writes its data, not figures

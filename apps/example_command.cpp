@@ -1,5 +1,7 @@
 // dyncontact example [NAME] [--list]
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <string>
 
@@ -9,6 +11,7 @@
 #include "commands.hpp"
 #include "errors.hpp"
 #include "examples.hpp"
+#include "output_files.hpp"
 
 namespace dc::cli {
 namespace {
@@ -25,8 +28,11 @@ int run_example(const ExampleArgs& args) {
   }
   const BundledExample* e = find_example(args.name);
   if (!e) throw InputError("example", "unknown example '" + args.name + "' (see `dyncontact example --list`)");
-  std::fputs(e->text, stdout);
-  std::fflush(stdout);
+  // Usually redirected into a file (`> case.json`): a full disk is an output error, not a success.
+  if (std::fputs(e->text, stdout) < 0 || std::fflush(stdout) != 0) {
+    const int err = errno;
+    throw OutputError("standard output", std::string("cannot write the example: ") + std::strerror(err), err);
+  }
   return kExitOk;
 }
 

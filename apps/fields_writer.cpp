@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli_common.hpp"
+#include "output_files.hpp"
 
 namespace dc::cli {
 
@@ -31,7 +32,7 @@ std::string write_fields(const std::string& dir, const Grid& grid, const StaticF
       *at++ = '\n';
       text.append(line, at);
     }
-  write_text_file(path, text);
+  write_file_whole(path, text);
   return path;
 }
 

@@ -1,29 +1,40 @@
 #include "gnuplot_figures.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
-#include "cli_common.hpp"
+#include "output_files.hpp"
 
 namespace dc::cli {
 namespace {
 
 bool g_warned_missing = false;
 
-/// Starts `gnuplot -e "terminal_set='<set>'" plots.gp` in `dir` (the script draws that set of
-/// images only), its output appended to dir/plots.log. Returns the child's pid (-1: no fork).
+/// Starts `gnuplot -e "terminal_set='<set>'; output_prefix='<prefix>'" plots.gp` in `dir` (the
+/// script draws that set of images only, each to its temporary name), its output appended to
+/// dir/plots.log. Returns the child's pid (-1: no fork).
 pid_t start_gnuplot(const std::string& dir, const std::string& set) {
   std::cout.flush();
   std::cerr.flush();
-  const std::string select = "terminal_set='" + set + "'";
+  const std::string select = "terminal_set='" + set + "'; output_prefix='" + partial_name_prefix() + "'";
   const pid_t pid = fork();
   if (pid != 0) return pid;
+#ifdef __linux__
+  prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed run leaves no gnuplot drawing into its folder
+#endif
   if (chdir(dir.c_str()) != 0) _exit(126);
   const int fd = open("plots.log", O_WRONLY | O_CREAT | O_APPEND, 0644);
   if (fd >= 0) {
@@ -46,6 +57,32 @@ int wait_gnuplot(pid_t pid) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
 }
 
+/// What is wrong with the image gnuplot left at `file` ("" when it is whole): missing, empty, or
+/// cut before its end (an SVG ends with </svg>, a PNG with its IEND chunk) - a full disk or a
+/// file-size limit leaves such files while gnuplot still exits 0.
+std::string image_defect(const std::string& file, const std::string& ext) {
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  if (!in) return "gnuplot drew no image";
+  const std::streamoff size = in.tellg();
+  if (size <= 0) return "gnuplot left an empty image";
+  const std::streamoff tail_size = std::min<std::streamoff>(size, 64);
+  std::string tail(static_cast<std::size_t>(tail_size), '\0');
+  in.seekg(size - tail_size);
+  in.read(tail.data(), tail_size);
+  if (!in) return "cannot read the image gnuplot drew";
+  if (ext == "svg") {
+    const auto last = tail.find_last_not_of(" \t\r\n");
+    const std::string end = "</svg>";
+    if (last == std::string::npos || last + 1 < end.size() || tail.compare(last + 1 - end.size(), end.size(), end) != 0)
+      return "gnuplot left an incomplete SVG (it does not end with </svg>)";
+  } else {
+    static const std::string iend("IEND\xAE\x42\x60\x82", 8);
+    if (tail.size() < iend.size() || tail.compare(tail.size() - iend.size(), iend.size(), iend) != 0)
+      return "gnuplot left an incomplete PNG (no IEND chunk at its end)";
+  }
+  return "";
+}
+
 }  // namespace
 
 std::vector<std::string> render_gnuplot(const std::string& dir, const std::string& case_name,
@@ -59,39 +96,50 @@ std::vector<std::string> render_gnuplot(const std::string& dir, const std::strin
   std::vector<std::string> images;
   // Both sets by default; the program draws them in two gnuplot processes at once (gnuplot -e
   // "terminal_set='svg'" plots.gp), which halves the plots' wall time on two cores.
-  gp << "if (!exists(\"terminal_set\")) terminal_set = \"all\"\n";
+  // The program has gnuplot draw each image to its temporary name (output_prefix), checks it and
+  // renames it into place (output_files.hpp); run by hand, the script draws the final names.
+  gp << "if (!exists(\"terminal_set\")) terminal_set = \"all\"\n"
+     << "if (!exists(\"output_prefix\")) output_prefix = \"\"\n";
   for (const std::string ext : {"svg", "png"}) {
     gp << "\n# ---- " << ext << "\n"
        << "if (terminal_set eq \"all\" || terminal_set eq \"" << ext << "\") {\n"
        << (ext == "svg" ? "set terminal svg size 900,650 enhanced\n" : "eval \"set terminal \".png_term\n");
     for (const auto& fig : figures) {
-      gp << "reset\nset datafile missing \"?\"\nset output \"" << fig.stem << "." << ext << "\"\n"
+      gp << "reset\nset datafile missing \"?\"\nset output output_prefix.\"" << fig.stem << "." << ext << "\"\n"
          << fig.body << "unset output\n";
       images.push_back(path(fig.stem + "." + ext));
     }
     gp << "}\n";
   }
-  write_text_file(path("plots.gp"), gp.str());
-  write_text_file(path("plots.log"), "");
+  write_file_whole(path("plots.gp"), gp.str());
+  write_file_whole(path("plots.log"), "");
 
   const pid_t svg = start_gnuplot(dir, "svg"), png = start_gnuplot(dir, "png");
   const int svg_status = wait_gnuplot(svg), png_status = wait_gnuplot(png);
+  auto remove_partials = [&] {
+    for (const auto& img : images) std::remove(partial_path(img).c_str());
+  };
   // 127 (no gnuplot) only when neither could start; one failed fork is a failure of its set.
-  const int status = svg_status == 127 && png_status == 127 ? 127 : svg_status != 0 ? svg_status : png_status;
-  if (status == 127) {
+  if (svg_status == 127 && png_status == 127) {
+    remove_partials();
     if (!g_warned_missing)
       std::cerr << "warning: gnuplot not found: no plots (the script and data are in " << dir << "/plots.gp)\n";
     g_warned_missing = true;
     return {};
   }
-  if (status != 0) {
-    std::cerr << "warning: gnuplot failed (exit " << status << "); see " << path("plots.log") << "\n";
-    return {};
+  // Every image checked before any is reported: gnuplot's status, then the file itself.
+  for (const auto& img : images) {
+    const std::string ext = fs::path(img).extension() == ".svg" ? "svg" : "png";
+    const int status = ext == "svg" ? svg_status : png_status;
+    const std::string defect =
+        status != 0 ? "gnuplot failed (exit " + std::to_string(status) + ")" : image_defect(partial_path(img), ext);
+    if (!defect.empty()) {
+      remove_partials();
+      throw OutputError(img, defect + "; see " + path("plots.log"));
+    }
   }
-  std::vector<std::string> produced;
-  for (const auto& img : images)
-    if (fs::exists(img)) produced.push_back(img);
-  return produced;
+  for (const auto& img : images) commit_partial(partial_path(img), img);
+  return images;
 }
 
 }  // namespace dc::cli

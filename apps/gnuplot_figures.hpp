@@ -1,7 +1,9 @@
 #pragma once
 // Figures drawn by gnuplot: each figure is a gnuplot block (after `reset`) written once per
 // terminal (SVG, then PNG with pngcairo when available) into dir/plots.gp, which is then run
-// in `dir`. Without gnuplot: one warning per process, no images, no failure.
+// in `dir`. Without gnuplot: one warning per process, no images, no failure. Each image is drawn
+// to a temporary name, checked (gnuplot's exit status; not empty; an SVG ends with </svg>, a
+// PNG with its IEND chunk) and only then renamed into place (output_files.hpp).
 #include <string>
 #include <vector>
 
@@ -12,7 +14,8 @@ struct GnuplotFigure {
   std::string body;  ///< gnuplot commands (title, axes, plot ...)
 };
 
-/// Writes plots.gp for `figures` and runs gnuplot in `dir`; returns the images produced.
+/// Writes plots.gp for `figures` and runs gnuplot in `dir`; returns the images produced (none
+/// without gnuplot). Throws OutputError naming the image when one fails.
 std::vector<std::string> render_gnuplot(const std::string& dir, const std::string& case_name,
                                         const std::vector<GnuplotFigure>& figures);
 

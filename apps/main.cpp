@@ -1,8 +1,10 @@
 // dyncontact: the command line. Subcommand wiring and error handling only; each subcommand
 // lives in its own file (solve_command.cpp, compare_command.cpp, validate_command.cpp,
 // example_command.cpp, table_command.cpp).
+#include <csignal>
 #include <exception>
 #include <iostream>
+#include <new>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -13,6 +15,7 @@
 #include "errors.hpp"
 #include "interrupt.hpp"
 #include "interrupt_handler.hpp"
+#include "output_files.hpp"
 
 #ifndef DYNCONTACT_VERSION
 #define DYNCONTACT_VERSION "unknown"
@@ -22,6 +25,9 @@ int main(int argc, char** argv) {
   using namespace dc::cli;
   int exit_code = kExitOk;
   install_interrupt_handlers();
+  // A file-size limit (ulimit -f) makes a write fail with EFBIG, an OutputError like a full disk,
+  // instead of killing the program mid-file.
+  std::signal(SIGXFSZ, SIG_IGN);
   dc::use_one_blas_thread();
   try {
     CLI::App app{
@@ -32,7 +38,10 @@ int main(int argc, char** argv) {
         "dyncontact"};
     app.set_version_flag("--version", std::string("dyncontact ") + DYNCONTACT_VERSION);
     app.require_subcommand(1);
-    app.footer("Exit codes: 0 success, 2 bad input, 3 solver did not converge, 4 internal error.");
+    app.footer(
+        "Exit codes: 0 success, 2 bad input (also: the output folder is in use by another run, or the case needs "
+        "more memory than the machine has), 3 solver did not converge, 4 internal error, 5 an output file could "
+        "not be written (disk full, permissions; the message names the file).");
     add_solve_command(app, exit_code);
     add_compare_command(app, exit_code);
     add_validate_command(app, exit_code);
@@ -66,6 +75,15 @@ int main(int argc, char** argv) {
   } catch (const dc::InputError& e) {
     std::cout.flush();
     std::cerr << "error: " << e.what() << '\n';
+    return kExitBadInput;
+  } catch (const dc::OutputError& e) {
+    std::cout.flush();
+    std::cerr << "error: " << e.what() << '\n';  // the file, then why
+    return kExitOutput;
+  } catch (const std::bad_alloc&) {
+    std::cout.flush();
+    std::cerr << "error: the case needs more memory than this machine has: reduce grid.nx and grid.ny (or "
+                 "fe_body.elements, or a coarser fe_body.contact_size, for a finite-element body)\n";
     return kExitBadInput;
   } catch (const dc::SolverFailure& e) {
     std::cout.flush();

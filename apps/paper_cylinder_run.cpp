@@ -18,6 +18,7 @@
 #include "hertz.hpp"
 #include "interrupt.hpp"
 #include "interrupt_handler.hpp"
+#include "output_files.hpp"
 #include "paper_cylinder.hpp"
 #include "profile.hpp"
 #include "progress.hpp"
@@ -365,7 +366,7 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
   PaperCylinderOutcome out = simulate_paper_cylinder(c, quiet);
   if (!out.root) return kExitOk;
   namespace fs = std::filesystem;
-  for (std::size_t k = 0; k < out.files.size(); ++k) write_text_file((fs::path(dir) / out.files[k]).string(), out.texts[k]);
+  for (std::size_t k = 0; k < out.files.size(); ++k) write_file_whole((fs::path(dir) / out.files[k]).string(), out.texts[k]);
   json& summary = out.summary;
   const bool interrupted = out.interrupted, all_ok = out.all_ok;
   json out_files = {{"summary", "summary.json"}, {"timeseries", out.files}};

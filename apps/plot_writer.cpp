@@ -12,6 +12,7 @@
 #include "analytic_reference.hpp"
 #include "cli_common.hpp"
 #include "gnuplot_figures.hpp"
+#include "output_files.hpp"
 
 namespace dc::cli {
 namespace {
@@ -59,7 +60,7 @@ std::vector<std::string> write_static_plots(const std::string& dir, const Case& 
       s << num(g.xc(i)) << ' ' << num(field(f.p, e)) << ' ' << num(field(f.tx, e)) << ' ' << num(field(f.ty, e))
         << ' ' << num(field(f.bound, e)) << '\n';
     }
-    write_text_file(path("line_x.dat"), s.str());
+    write_file_whole(path("line_x.dat"), s.str());
   }
   if (g.dimension == 3) {
     std::ostringstream s;
@@ -69,7 +70,7 @@ std::vector<std::string> write_static_plots(const std::string& dir, const Case& 
       s << num(g.yc(j)) << ' ' << num(field(f.p, e)) << ' ' << num(field(f.tx, e)) << ' ' << num(field(f.ty, e))
         << ' ' << num(field(f.bound, e)) << '\n';
     }
-    write_text_file(path("line_y.dat"), s.str());
+    write_file_whole(path("line_y.dat"), s.str());
     // The maps are images of at most kMapCells x kMapCells: on finer grids every k-th element
     // (the middle of each k x k block) - a 900 x 650 figure shows no more, and gnuplot spent
     // seconds reading 512^2 rows; fields.csv holds every element.
@@ -86,7 +87,7 @@ std::vector<std::string> write_static_plots(const std::string& dir, const Case& 
       }
       m << '\n';
     }
-    write_text_file(path("map.dat"), m.str());
+    write_file_whole(path("map.dat"), m.str());
   }
   if (ref) {  // the closed form, finely sampled along both centre lines
     const int n = 801;
@@ -103,8 +104,8 @@ std::vector<std::string> write_static_plots(const std::string& dir, const Case& 
         sy << num(y) << ' ' << (in_y ? num(ref->pressure(xl, y)) : std::string("?")) << '\n';
       }
     }
-    write_text_file(path("reference_x.dat"), sx.str());
-    if (g.dimension == 3) write_text_file(path("reference_y.dat"), sy.str());
+    write_file_whole(path("reference_x.dat"), sx.str());
+    if (g.dimension == 3) write_file_whole(path("reference_y.dat"), sy.str());
   }
 
   // Lengths in mm, stresses in MPa. Each figure is a block emitted once per terminal

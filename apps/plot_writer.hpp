@@ -12,7 +12,8 @@
 
 namespace dc::cli {
 
-/// Returns the image files produced (empty when gnuplot is missing or failed).
+/// Returns the image files produced (empty when gnuplot is missing); throws OutputError when
+/// one fails (gnuplot_figures.hpp).
 std::vector<std::string> write_static_plots(const std::string& dir, const Case& c, const StaticFields& fields);
 
 }  // namespace dc::cli

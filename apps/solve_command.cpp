@@ -207,7 +207,8 @@ void add_solve_command(CLI::App& app, int& exit_code) {
       "tractions between -f(p) and f(p); with a loading history (tangential.history; rolling: steps that roll a "
       "distance from the state the last one left) summary.json lists the steps and fields_<k>.csv holds each step (fields.csv the last). Any key can be "
       "changed without editing the file: --set grid.nx=128 --set normal.force=200. Exit code 0 converged, "
-      "2 bad input, 3 not converged (results are still written), 4 internal error.");
+      "2 bad input (also: the output folder is in use by another run), 3 not converged (results are still written), "
+      "4 internal error, 5 an output file could not be written (the message names it).");
   sub->add_option("case", args->case_path, "case file (JSON)")->required();
   sub->add_option("-o,--out", args->out, "output folder (default: output.dir of the case, else out/<name>)")
       ->check(non_empty_folder());

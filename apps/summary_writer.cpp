@@ -5,6 +5,7 @@
 
 #include "analytic_reference.hpp"
 #include "cli_common.hpp"
+#include "output_files.hpp"
 
 #ifndef DYNCONTACT_VERSION
 #define DYNCONTACT_VERSION "unknown"
@@ -78,7 +79,7 @@ nlohmann::json normal_summary(const Case& c, const NormalSolution& solution, con
 
 std::string write_summary(const std::string& dir, const nlohmann::json& summary) {
   const std::string path = (std::filesystem::path(dir) / "summary.json").string();
-  write_text_file(path, summary.dump(2) + "\n");
+  write_file_whole(path, summary.dump(2) + "\n");
   return path;
 }
 

@@ -15,6 +15,7 @@
 #include "errors.hpp"
 #include "interrupt.hpp"
 #include "interrupt_handler.hpp"
+#include "output_files.hpp"
 #include "progress.hpp"
 #include "table_output.hpp"
 #include "table_points.hpp"
@@ -67,16 +68,19 @@ int run_table(const TableArgs& args, bool root) {
   }
   namespace fs = std::filesystem;
   const std::string csv = (fs::path(dir) / "table.csv").string();
-  write_text_file(csv, table_csv(rows));
+  write_file_whole(csv, table_csv(rows));
+  // The figures (none when interrupted: the data so far), then table.json last: a table.json
+  // is there only when everything before it was written.
+  const std::vector<std::string> images =
+      c.output.plots && !interrupted ? table_plots(dir, c, axes, rows) : std::vector<std::string>{};
   nlohmann::json meta = table_json(c, axes, rows);
   meta["status"] = interrupted ? "interrupted" : "completed";
-  write_text_file((fs::path(dir) / "table.json").string(), meta.dump(2) + "\n");
-  if (interrupted) {  // the data so far, no figures
+  write_file_whole((fs::path(dir) / "table.json").string(), meta.dump(2) + "\n");
+  if (interrupted) {
     std::cerr << "interrupted after " << rows.size() << " of " << axes.size() << " points; wrote " << csv
               << ", table.json\n";
     return interrupted_exit_code();
   }
-  const std::vector<std::string> images = c.output.plots ? table_plots(dir, c, axes, rows) : std::vector<std::string>{};
 
   std::size_t bad = 0;
   for (const TableRow& r : rows) bad += r.status != "converged";
@@ -112,7 +116,8 @@ void add_table_command(CLI::App& app, int& exit_code) {
       "(the case, the ranges, the points that failed) and the plots table_Fx / table_Fy. Forces act on the body; "
       "F/(mu P) is over the friction capacity sum f(p) A. The points run on the cores with threads "
       "(DYNCONTACT_THREADS), or over the ranks of `mpirun -n N dyncontact table ...` (same files). "
-      "Exit code 0 when every point converged, 3 otherwise (the others are kept), 2 for bad input.");
+      "Exit code 0 when every point converged, 3 otherwise (the others are kept), 2 for bad input, 5 when a file "
+      "cannot be written.");
   sub->add_option("case", args->case_path, "case file (JSON), a rolling tangential case")->required();
   sub->add_option("--creepage", args->creepage, "longitudinal creepage xi: start:stop:count or a,b,c");
   sub->add_option("--lateral", args->lateral, "lateral creepage eta (3-D): start:stop:count or a,b,c");

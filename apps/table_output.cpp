@@ -8,6 +8,7 @@
 
 #include "cli_common.hpp"
 #include "gnuplot_figures.hpp"
+#include "output_files.hpp"
 
 namespace dc::cli {
 namespace {
@@ -119,7 +120,7 @@ std::vector<std::string> table_plots(const std::string& dir, const Case& c, cons
       curves.add(label(other_name, other[io]) + (ns > 1 ? ", " + label("phi", axes.spin[is]) : ""), pts);
     }
     const std::string file = stem + ".dat";
-    write_text_file((std::filesystem::path(dir) / file).string(), curves.data.str());
+    write_file_whole((std::filesystem::path(dir) / file).string(), curves.data.str());
     return GnuplotFigure{stem, curves.body(file, title, xlabel, ylabel)};
   };
   std::vector<GnuplotFigure> figures;

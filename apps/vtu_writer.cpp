@@ -2,9 +2,9 @@
 #include "vtu_writer.hpp"
 
 #include <cmath>
-#include <fstream>
+#include <sstream>
 
-#include "errors.hpp"
+#include "output_files.hpp"
 
 namespace dc::cli {
 
@@ -15,8 +15,7 @@ double von_mises(const Eigen::Matrix<double, 6, 1>& s) {
 
 void write_body_vtu(const std::string& path, const fe::BodyMesh& mesh, const Eigen::VectorXd& displacement,
                     const std::vector<Eigen::Matrix<double, 6, 1>>& stress) {
-  std::ofstream out(path, std::ios::trunc);
-  if (!out) throw InputError(path, "cannot write");
+  std::ostringstream out;  // written whole at the end (output_files.hpp)
   out.precision(10);
   const std::size_t np = mesh.nodes.size(), nc = mesh.elements.size();
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
@@ -44,7 +43,7 @@ void write_body_vtu(const std::string& path, const fe::BodyMesh& mesh, const Eig
   out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"region\" format=\"ascii\">\n";
   for (int r : mesh.region) out << r << '\n';
   out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-  if (!out) throw InputError(path, "write failed");
+  write_file_whole(path, out.str());
 }
 
 }  // namespace dc::cli

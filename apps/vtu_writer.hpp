@@ -14,7 +14,7 @@ namespace dc::cli {
 /// Von Mises equivalent stress of a Voigt stress (11, 22, 33, 23, 13, 12).
 double von_mises(const Eigen::Matrix<double, 6, 1>& s);
 
-/// Writes `path`; throws InputError(path) when it cannot be written.
+/// Writes `path` whole; throws OutputError (output_files.hpp) when it cannot be written.
 void write_body_vtu(const std::string& path, const fe::BodyMesh& mesh, const Eigen::VectorXd& displacement,
                     const std::vector<Eigen::Matrix<double, 6, 1>>& stress);
 

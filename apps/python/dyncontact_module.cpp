@@ -20,6 +20,7 @@
 #include "fields_writer.hpp"
 #include "linear_operator.hpp"
 #include "module_common.hpp"
+#include "output_files.hpp"
 #include "python_limits.hpp"
 #include "python_runs.hpp"
 #include "result_limits.hpp"
@@ -76,6 +77,10 @@ py::dict solve(const py::object& case_arg, const py::object& out, bool progress)
     throw dc::InputError("problem", std::string("'") + dc::to_string(c.problem) +
                                         "' is run by the command line (dyncontact solve); solve() takes normal, "
                                         "tangential, dynamic and paper_cylinder cases");
+  // The folder is locked for the call (another run into it is refused before this one solves).
+  dc::cli::OutputFolder folder;
+  if (!out.is_none())
+    folder = dc::cli::open_output_folder(c, py::str(py::module_::import("os").attr("fspath")(out)), "out");
   dc::cli::StaticRun run;
   {
     py::gil_scoped_release release;
@@ -84,12 +89,11 @@ py::dict solve(const py::object& case_arg, const py::object& out, bool progress)
   nlohmann::json summary = run.summary;
   dc::cli::attach_result_limits(c, summary);  // as `dyncontact solve` writes them
   std::string advice = "; the result is in this exception's .result";
-  if (!out.is_none()) {
-    const std::string dir = dc::cli::prepare_output_dir(c, py::str(py::module_::import("os").attr("fspath")(out)));
-    dc::cli::write_fields(dir, c.grid, run.fields.back());
+  if (folder.lock) {  // summary.json last: complete or absent
+    dc::cli::write_fields(folder.dir, c.grid, run.fields.back());
     summary["files"] = {{"summary", "summary.json"}, {"fields", "fields.csv"}};
-    dc::cli::write_summary(dir, summary);
-    advice = "; the results are written to " + dir + " and are in this exception's .result";
+    dc::cli::write_summary(folder.dir, summary);
+    advice = "; the results are written to " + folder.dir + " and are in this exception's .result";
   }
   py::dict result = to_python(summary);
   result["fields"] = fields_dict(c.grid, run.fields.back());
@@ -181,7 +185,8 @@ PYBIND11_MODULE(dyncontact, m) {
       "                                 'grid.x[1]' for a NaN there)\n"
       "  ResultLimitError               a result known to be wrong (an InputError), e.g. a contact cut by the\n"
       "                                 grid: .key, .limits, .result (the result, for inspection)\n"
-      "  ResultLimitWarning             a limit that is only a warning (a UserWarning); results list all in 'limits'\n\n"
+      "  ResultLimitWarning             a limit that is only a warning (a UserWarning); results list all in 'limits'\n"
+      "  OutputError                    a file of solve(out=...) could not be written (an OSError; .filename)\n\n"
       "Example:\n"
       "  import dyncontact, json\n"
       "  r = dyncontact.solve(json.load(open('examples/hertz-sphere.json')))\n"
@@ -207,11 +212,13 @@ PYBIND11_MODULE(dyncontact, m) {
         "A dict may hold Python or NumPy numbers (np.int64, np.float64, np.bool_) and NumPy arrays\n"
         "of one or two dimensions where the format has lists. Raises InputError (a ValueError whose\n"
         ".key names the case key, e.g. 'normal.force' or 'grid.x[1]') for bad input: NaN or an\n"
-        "infinity anywhere, a value of another type, what the case format refuses. The summary's\n"
-        "'limits' are those of summary.json (a contact at the grid's edge, too few elements across\n"
-        "it, a/R too large): one that is an error (the command line's exit 2) raises\n"
-        "ResultLimitError (an InputError; .key, .limits, and .result: this summary with its fields),\n"
-        "after writing the files when `out` is given; the others are ResultLimitWarning warnings.");
+        "infinity anywhere, a value of another type, what the case format refuses, and another run\n"
+        "writing into `out` (the folder is locked for the call). The summary's 'limits' are those of\n"
+        "summary.json (a contact at the grid's edge, too few elements across it, a/R too large): one\n"
+        "that is an error (the command line's exit 2) raises ResultLimitError (an InputError; .key,\n"
+        ".limits, and .result: this summary with its fields), after writing the files when `out` is\n"
+        "given; the others are ResultLimitWarning warnings. OutputError (an OSError) when a file\n"
+        "cannot be written.");
 
   bind_problems(m);
   bind_runs(m);

@@ -4,6 +4,7 @@
 
 #include "case_model.hpp"
 #include "errors.hpp"
+#include "output_files.hpp"
 #include "python_values.hpp"
 #include "result_limits.hpp"
 #include "static_fields.hpp"
@@ -47,12 +48,21 @@ void bind_errors(py::module_& m) {
   result_limit_warning.attr("__doc__") =
       "A limit of a result that is not an error (a UserWarning), e.g. a contact resolved by fewer than\n"
       "4 elements, or one the case accepts (grid.allow_edge_contact): the result's 'limits' list it too.";
+  static py::exception<dc::cli::OutputError> output_error(m, "OutputError", PyExc_OSError);
+  output_error.attr("__doc__") =
+      "A file of solve(out=...) could not be written (an OSError: errno, strerror and filename when a\n"
+      "system call failed, e.g. a full disk).";
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const InputError& e) {
       const py::object err = error_with_key(g_input_error, e.what(), e.key());
       PyErr_SetObject(g_input_error, err.ptr());
+    } catch (const dc::cli::OutputError& e) {  // OSError(errno, strerror, filename) when a system call failed
+      py::object err = e.error_number() != 0 ? py::handle(output_error.ptr())(e.error_number(), e.reason(), e.path())
+                                             : py::handle(output_error.ptr())(e.what());
+      if (e.error_number() == 0) err.attr("filename") = e.path();
+      PyErr_SetObject(output_error.ptr(), err.ptr());
     }
   });
 }
@@ -60,7 +70,7 @@ void bind_errors(py::module_& m) {
 void enforce_limits(const nlohmann::json& limits, const py::object& result, const std::string& advice) {
   if (!limits.is_array()) return;
   for (const nlohmann::json& l : limits) {
-    if (l.value("accepted", true)) continue;
+    if (l.value("level", std::string("warning")) != "error") continue;
     const std::string key = l.value("key", "");
     py::object err = error_with_key(g_result_limit_error, key + ": " + l.value("message", "") + advice, key);
     err.attr("limits") = to_python(limits);
