@@ -48,7 +48,7 @@ void bind_errors(py::module_& m) {
   result_limit_warning.attr("__doc__") =
       "A limit of a result that is not an error (a UserWarning), e.g. a contact resolved by fewer than\n"
       "4 elements, or one the case accepts (grid.allow_edge_contact): the result's 'limits' list it too.";
-  static py::exception<dc::cli::OutputError> output_error(m, "OutputError", PyExc_OSError);
+  static py::exception<dc::OutputError> output_error(m, "OutputError", PyExc_OSError);
   output_error.attr("__doc__") =
       "A file of solve(out=...) could not be written (an OSError: errno, strerror and filename when a\n"
       "system call failed, e.g. a full disk).";
@@ -58,7 +58,7 @@ void bind_errors(py::module_& m) {
     } catch (const InputError& e) {
       const py::object err = error_with_key(g_input_error, e.what(), e.key());
       PyErr_SetObject(g_input_error, err.ptr());
-    } catch (const dc::cli::OutputError& e) {  // OSError(errno, strerror, filename) when a system call failed
+    } catch (const dc::OutputError& e) {  // OSError(errno, strerror, filename) when a system call failed
       py::object err = e.error_number() != 0 ? py::handle(output_error.ptr())(e.error_number(), e.reason(), e.path())
                                              : py::handle(output_error.ptr())(e.what());
       if (e.error_number() == 0) err.attr("filename") = e.path();
