@@ -16,6 +16,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "interrupt_handler.hpp"
 #include "output_files.hpp"
 
 namespace dc::cli {
@@ -32,6 +33,7 @@ pid_t start_gnuplot(const std::string& dir, const std::string& set) {
   const std::string select = "terminal_set='" + set + "'; output_prefix='" + partial_name_prefix() + "'";
   const pid_t pid = fork();
   if (pid != 0) return pid;
+  unblock_interrupt_signals();  // gnuplot stops on a signal as any program
 #ifdef __linux__
   prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed run leaves no gnuplot drawing into its folder
 #endif

@@ -1,61 +1,70 @@
 #include "interrupt_handler.hpp"
 
-#include <fcntl.h>
-#include <semaphore.h>
+#include <pthread.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <ctime>
 #include <cstdio>
+#include <exception>
 #include <mutex>
 #include <thread>
 
 #include "interrupt.hpp"
+#include "output_files.hpp"
 
 namespace dc::cli {
 namespace {
 
-sem_t g_signalled;  // posted by the handler (sem_post is async-signal-safe)
 std::mutex g_last_file_mutex;
 std::string g_last_path, g_last_text;
 
-extern "C" void on_interrupt_signal(int signal) {
-  dc::request_interrupt(signal);
-  std::signal(signal, SIG_DFL);  // a second Ctrl-C ends the program without waiting
-  sem_post(&g_signalled);
+/// SIGINT and SIGTERM: blocked in the main thread and every thread it starts, and taken by the
+/// watchdog with sigtimedwait, so no library's handler (Gmsh's, METIS's: GKlib takes SIGTERM for
+/// its own errors) can swallow them.
+sigset_t interrupt_signals() {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  return set;
 }
 
-/// Writes the last file whole (temporary + rename); nothing on failure.
+/// For a signal delivered to a thread started before main (a library's, with every signal open):
+/// the flag only (async-signal-safe); the watchdog sees it.
+extern "C" void on_interrupt_signal(int signal) { dc::request_interrupt(signal); }
+
+/// Writes the last file whole (output_files.hpp); nothing on failure.
 void write_last_file() {
   std::lock_guard<std::mutex> lock(g_last_file_mutex);
   if (g_last_path.empty()) return;
-  const std::string temporary = g_last_path + ".partial-watchdog";
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (fd < 0) return;
-  std::size_t done = 0;
-  while (done < g_last_text.size()) {
-    const ssize_t n = ::write(fd, g_last_text.data() + done, g_last_text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    done += static_cast<std::size_t>(n);
+  try {
+    write_file_whole(g_last_path, g_last_text);
+  } catch (const std::exception&) {  // the process ends now either way
   }
-  const bool whole = ::close(fd) == 0 && done == g_last_text.size();
-  if (!whole || std::rename(temporary.c_str(), g_last_path.c_str()) != 0) ::unlink(temporary.c_str());
 }
 
-/// After a signal: the main thread polls the flag and unwinds on its own, unless it sits in a
-/// non-polling section (meshing, a factorisation) past the grace period; then the process ends
-/// here, with the last file written.
+/// Waits for a signal and raises the interrupt flag: the main thread polls it and unwinds on its
+/// own, unless it sits in a non-polling section (meshing, a factorisation) past the grace period;
+/// then the process ends here, with the last file written. A second signal ends it at once.
 void watchdog() {
-  while (sem_wait(&g_signalled) != 0) {
+  const sigset_t set = interrupt_signals();
+  const timespec poll{0, 50'000'000};
+  while (!interrupt_requested()) {
+    const int signal = sigtimedwait(&set, nullptr, &poll);
+    if (signal > 0) dc::request_interrupt(signal);
   }
   using clock = std::chrono::steady_clock;
   const auto grace = std::chrono::duration<double>(kInterruptGraceSeconds);
   const char* section = nullptr;
   auto since = clock::now();
   for (;;) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    const int again = sigtimedwait(&set, nullptr, &poll);
+    if (again > 0) {
+      std::fprintf(stderr, "interrupted again: stopped at once\n");
+      _exit(128 + again);
+    }
     const char* now = open_non_polling_section();
     if (now == nullptr || now != section) {  // polling, or another section: the grace starts again
       section = now;
@@ -75,15 +84,21 @@ void watchdog() {
 void install_interrupt_handlers() {
   static std::once_flag once;
   std::call_once(once, [] {
-    sem_init(&g_signalled, 0, 0);
-    std::thread(watchdog).detach();
+    const sigset_t set = interrupt_signals();
+    pthread_sigmask(SIG_BLOCK, &set, nullptr);  // this thread and every thread started from it
     struct sigaction action {};
     action.sa_handler = on_interrupt_signal;
     sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESTART;  // reads and writes in progress complete
+    action.sa_flags = SA_RESTART;
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
+    std::thread(watchdog).detach();
   });
+}
+
+void unblock_interrupt_signals() {
+  const sigset_t set = interrupt_signals();
+  pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
 }
 
 void set_interrupt_last_file(const std::string& path, const std::string& text) {

@@ -1,6 +1,6 @@
 #pragma once
-// SIGINT/SIGTERM for the command line: the handlers only raise dc's interrupt flag
-// (core/interrupt.hpp); a second signal of the same kind ends the program at once.
+// SIGINT/SIGTERM for the command line: a watchdog thread takes them (sigwait) and raises dc's
+// interrupt flag (core/interrupt.hpp); a second signal ends the program at once.
 #include <string>
 
 namespace dc::cli {
@@ -9,8 +9,12 @@ namespace dc::cli {
 /// meshing, a sparse factorisation) before the watchdog ends the process (exit 128 + signal).
 inline constexpr double kInterruptGraceSeconds = 0.5;
 
-/// Installs the handlers and starts the watchdog (once, at start-up).
+/// Blocks SIGINT and SIGTERM in the calling thread (and so in every thread it starts) and starts
+/// the watchdog that takes them (once, at start-up, before any other thread).
 void install_interrupt_handlers();
+
+/// For a child process between fork and exec: SIGINT and SIGTERM delivered again (async-signal-safe).
+void unblock_interrupt_signals();
 
 /// A file the watchdog writes (whole: a temporary renamed into place) before it ends the process,
 /// e.g. an "interrupted" summary.json; an empty path clears it. Set before the work it covers.

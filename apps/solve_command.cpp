@@ -115,8 +115,15 @@ int run_solve(const SolveArgs& args) {
     not_implemented(c.problem);
   const std::string dir = prepare_output_dir(c, args.out);
   const InterruptedSummaryOnWatchdog last_words(c, dir);
-  if (c.problem == ProblemKind::dynamic) return run_dynamic(c, dir, args.quiet);
-  if (c.problem == ProblemKind::finite) return run_finite(c, dir, args.quiet);
+  if (c.problem == ProblemKind::dynamic || c.problem == ProblemKind::finite) {
+    try {
+      return c.problem == ProblemKind::dynamic ? run_dynamic(c, dir, args.quiet) : run_finite(c, dir, args.quiet);
+    } catch (const Interrupted&) {  // before anything was finished (e.g. while meshing the body)
+      const std::string path = write_summary(dir, interrupted_summary(c));
+      std::cerr << "interrupted before a result was finished; wrote " << path << '\n';
+      return interrupted_exit_code();
+    }
+  }
 
   StaticRun run;
   try {

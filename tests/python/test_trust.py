@@ -38,7 +38,7 @@ def test_readme_truncated_grid_raises_result_limit_error():
     assert isinstance(err, dyncontact.InputError) and isinstance(err, ValueError)
     assert err.key == "grid"
     assert "edge of the grid" in str(err) and "allow_edge_contact" in str(err)
-    assert [l for l in err.limits if l["key"] == "grid" and not l["accepted"]]
+    assert [l for l in err.limits if l["key"] == "grid" and l["level"] == "error" and not l["accepted"]]
     # The result is there to inspect: the summary with its limits and fields, the pressure
     # truncated (the force carried inside the square: the peak well above Hertz's).
     r = err.result
@@ -86,12 +86,15 @@ def test_normal_problem_on_a_one_element_grid_is_not_returned_as_right():
     s = e.value.result
     assert isinstance(s, dyncontact.NormalSolution)
     assert s.limits == e.value.limits
-    assert any("1 element(s) across" in l["message"] and l["accepted"] for l in s.limits)
+    assert any("1 element(s) across" in l["message"] and l["level"] == "warning" for l in s.limits)
     # Accepted: returned, the coarse contact a warning in .limits.
     with pytest.warns(dyncontact.ResultLimitWarning, match="element"):
         s = dyncontact.NormalProblem(grid, STEEL, h, allow_edge_contact=True).solve(force=P)
     assert s.converged
-    assert all(l["accepted"] for l in s.limits) and len(s.limits) == 2
+    # Both warnings; the edge one accepted by allow_edge_contact, the resolution one by nothing.
+    assert all(l["level"] == "warning" for l in s.limits) and len(s.limits) == 2
+    assert [l["accepted"] for l in s.limits if "edge" in l["message"]] == [True]
+    assert [l["accepted"] for l in s.limits if "across" in l["message"]] == [False]
 
 
 def test_problems_refuse_a_contact_filling_the_grid():
