@@ -202,3 +202,28 @@ def test_tangential_cases_on_a_truncated_grid_raise_result_limit_error(name):
         dyncontact.solve(case)
     assert e.value.key == "grid"
     assert "tangential_force" in e.value.result and e.value.result["limits"] == e.value.limits
+
+
+def ball_impact(**time):
+    """The ball-impact example (Hertz contact time 69 us) on 12 x 12 elements, its time block edited."""
+    case = example("ball-impact")
+    case["grid"]["nx"] = case["grid"]["ny"] = 12
+    case["time"].update({"dt": 2e-6, **time})
+    case["output"] = {"plots": False}
+    return case
+
+
+def test_dynamic_runs_keep_the_command_lines_limits():
+    # Resolved: no limits, the energy balanced.
+    r = dyncontact.solve(ball_impact())
+    assert r["limits"] == [] and r["balances"]["energy"] < 0.05
+    # 1.4 steps per contact: refused before the run, naming time.dt.
+    with pytest.raises(dyncontact.InputError) as e:
+        dyncontact.solve(ball_impact(dt=5e-5))
+    assert e.value.key == "time.dt"
+    # Accepted coarse step: the energy balance (0.2) above the tolerance is a result known wrong.
+    with pytest.raises(dyncontact.ResultLimitError) as e:
+        dyncontact.DynamicSimulation(ball_impact(dt=1e-5, allow_coarse_dt=True)).run()
+    assert e.value.key == "time.dt"
+    assert any(l["level"] == "error" and "energy balance" in l["message"] for l in e.value.limits)
+    assert e.value.result["balances"]["energy"] > 0.05
