@@ -66,11 +66,12 @@ void watchdog() {
       _exit(128 + again);
     }
     const char* now = open_non_polling_section();
-    if (now == nullptr || now != section) {  // polling, or another section: the grace starts again
+    if (now == nullptr || section == nullptr) {  // polling, or a section just opened: the grace starts
       section = now;
       since = clock::now();
       continue;
     }
+    section = now;  // the innermost of nested sections, for the message
     if (clock::now() - since < grace) continue;
     write_last_file();
     std::fprintf(stderr, "interrupted while %s (which cannot stop midway): stopped there\n", section);

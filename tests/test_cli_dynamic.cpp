@@ -23,10 +23,7 @@ class CliDynamic : public CliTest {
  protected:
   /// The ball-impact example, coarse and short, with `edit` applied; returns the file name.
   std::string case_file(const std::function<void(json&)>& edit = {}) const {
-    json doc = example_json("ball-impact");
-    doc["grid"]["nx"] = doc["grid"]["ny"] = 12;
-    doc["time"]["dt"] = 2e-6;
-    doc["output"] = {{"plots", false}};
+    json doc = coarse_ball_impact();
     if (edit) edit(doc);
     return write_case(doc);
   }

@@ -17,13 +17,10 @@ using nlohmann::json;
 
 class CliDynamicLimits : public CliTest {
  protected:
-  /// The ball-impact example (R = 10 mm steel ball at 1 m/s: Hertz contact time 69 us, peak
-  /// force 1.74 kN) on 12 x 12 elements, plots off, with `edit` applied.
+  /// coarse_ball_impact (R = 10 mm steel ball at 1 m/s: Hertz contact time 69 us, peak force
+  /// 1.74 kN) with `edit` applied.
   std::string ball(const std::function<void(json&)>& edit = {}) const {
-    json doc = example_json("ball-impact");
-    doc["grid"]["nx"] = doc["grid"]["ny"] = 12;
-    doc["time"]["dt"] = 2e-6;
-    doc["output"] = {{"plots", false}};
+    json doc = coarse_ball_impact();
     if (edit) edit(doc);
     return write_case(doc);
   }

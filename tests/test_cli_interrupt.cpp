@@ -49,19 +49,7 @@ class CliInterrupt : public dc::test::CliTest {
   template <class Ready>
   Stopped interrupt(const std::vector<std::string>& args, int signal, Ready ready) const {
     const fs::path err = dir_ / "stderr.txt";
-    const pid_t pid = fork();
-    if (pid == 0) {
-      if (chdir(dir_.c_str()) != 0) _exit(127);
-      const int out_fd = open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      const int err_fd = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      dup2(out_fd, 1);
-      dup2(err_fd, 2);
-      std::vector<char*> argv{const_cast<char*>(DYNCONTACT_BINARY)};
-      for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-      argv.push_back(nullptr);
-      execv(DYNCONTACT_BINARY, argv.data());
-      _exit(127);
-    }
+    const pid_t pid = start(args, "stdout.txt", "stderr.txt");
     Stopped s;
     const auto start = Clock::now();
     int status = 0;

@@ -40,28 +40,9 @@ class CliOutputFolder : public dc::test::CliTest {
     return write_case(doc, name);
   }
 
-  /// Starts `dyncontact ARGS` in the test folder (output to run_<tag>.txt); returns its pid.
+  /// Starts `dyncontact ARGS` in the test folder (output to run_<tag>.out/.err); returns its pid.
   pid_t start(const std::vector<std::string>& args, const std::string& tag) const {
-    const pid_t pid = fork();
-    if (pid == 0) {
-      if (chdir(dir_.c_str()) != 0) _exit(127);
-      const int out_fd = open(("run_" + tag + ".out").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      const int err_fd = open(("run_" + tag + ".err").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      dup2(out_fd, 1);
-      dup2(err_fd, 2);
-      std::vector<char*> argv{const_cast<char*>(DYNCONTACT_BINARY)};
-      for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-      argv.push_back(nullptr);
-      execv(DYNCONTACT_BINARY, argv.data());
-      _exit(127);
-    }
-    return pid;
-  }
-
-  static int wait_exit(pid_t pid) {
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return CliTest::start(args, "run_" + tag + ".out", "run_" + tag + ".err");
   }
 
   /// Waits (at most 60 s) until `pid` holds the lock of `folder` (it writes its pid into the lock

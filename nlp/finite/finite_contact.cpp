@@ -8,11 +8,15 @@
 #include "errors.hpp"
 #include "saddle_form.hpp"
 #include "gmsh_mesher.hpp"
+#include "interrupt.hpp"
 
 namespace dc {
 
 FiniteContact::FiniteContact(const FeBodySpec& spec, const Grid& grid, const Elastic& halfspace, OperatorKind kind)
     : grid_(grid), program_(spec.program), load_line_(spec.load_line), tilt_(spec.tilt) {
+  // Meshing, assembly, factorisation and the condensed compliance: nothing is finished before
+  // the body is ready, so an interrupt may end the process anywhere in here (core/interrupt.hpp).
+  const NonPollingSection preparing("preparing the finite-element body");
   const auto start = std::chrono::steady_clock::now();
   FeBodySpec meshed = spec;  // the face refined over the grid unless the case says otherwise
   if (!meshed.refine_radius) meshed.refine_radius = grid_refine_radius(grid);

@@ -3,15 +3,11 @@
 // grace is half a second), exit 143, with summary.json saying "interrupted"; and the size of a
 // body beyond the machine's memory is refused before anything is meshed.
 #include <gtest/gtest.h>
-#include <fcntl.h>
 #include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <string>
 #include <thread>
-#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -33,23 +29,13 @@ TEST_F(FiniteInterrupt, MeshingOrFactorisingStopsWithinASecondOfSigterm) {
   const std::string file = write_case(example_json("finite-hemisphere"));
   for (const double after : {0.3, 1.5}) {
     SCOPED_TRACE(after);
-    const pid_t pid = fork();
-    if (pid == 0) {
-      if (chdir(dir_.c_str()) != 0) _exit(127);
-      const int err_fd = open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      dup2(err_fd, 2);
-      const std::vector<const char*> argv{DYNCONTACT_BINARY, "solve", file.c_str(), "-q", "--out", "intr",
-                                          "--set", "fe_body.elements=[24,24,12]", nullptr};
-      execv(DYNCONTACT_BINARY, const_cast<char* const*>(argv.data()));
-      _exit(127);
-    }
+    const pid_t pid = start({"solve", file, "-q", "--out", "intr", "--set", "fe_body.elements=[24,24,12]"},
+                            "stdout.txt", "stderr.txt");
     std::this_thread::sleep_for(std::chrono::duration<double>(after));
     const auto sent = Clock::now();
     kill(pid, SIGTERM);
-    int status = 0;
-    waitpid(pid, &status, 0);
+    const int code = wait_exit(pid);
     const double seconds = std::chrono::duration<double>(Clock::now() - sent).count();
-    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     EXPECT_EQ(code, 143) << slurp(dir_ / "stderr.txt");
     EXPECT_LT(seconds, kStopSeconds + 0.1) << slurp(dir_ / "stderr.txt");
     const json s = json::parse(slurp(dir_ / "intr" / "summary.json"));

@@ -1,5 +1,6 @@
 #include "cli_runner.hpp"
 
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -24,10 +25,41 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
+nlohmann::json coarse_ball_impact() {
+  nlohmann::json doc = example_json("ball-impact");
+  doc["grid"]["nx"] = doc["grid"]["ny"] = 12;
+  doc["time"]["dt"] = 2e-6;
+  doc["output"] = {{"plots", false}};
+  return doc;
+}
+
 std::string shell_quote(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
+}
+
+pid_t CliTest::start(const std::vector<std::string>& args, const std::string& out, const std::string& err) const {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (chdir(dir_.c_str()) != 0) _exit(127);
+    const int out_fd = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err_fd = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(out_fd, 1);
+    dup2(err_fd, 2);
+    std::vector<char*> argv{const_cast<char*>(DYNCONTACT_BINARY)};
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(DYNCONTACT_BINARY, argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+int CliTest::wait_exit(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
 void CliTest::SetUp() {

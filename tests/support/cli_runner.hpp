@@ -2,9 +2,11 @@
 // Runs the built `dyncontact` program from tests: a fresh folder per test, exit code and
 // captured output.
 #include <gtest/gtest.h>
+#include <sys/types.h>
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +23,9 @@ std::string slurp(const std::filesystem::path& p);
 nlohmann::json example_json(const std::string& name);
 /// Its path.
 std::string example_path(const std::string& name);
+/// The ball-impact example on 12 x 12 elements with dt 2e-6 s (40 steps, 34 per Hertz contact
+/// time), plots off: a dynamic run of a fraction of a second.
+nlohmann::json coarse_ball_impact();
 /// Single-quoted for the shell.
 std::string shell_quote(const std::string& s);
 
@@ -38,6 +43,11 @@ class CliTest : public ::testing::Test {
   std::string write_case(const nlohmann::json& doc, const std::string& name = "case.json") const;
   /// COMMAND (e.g. "validate case.json") exits 2 and says "error: KEY:" on stderr.
   void expect_input_error(const std::string& command, const std::string& key) const;
+  /// Starts `dyncontact ARGS` in the test folder without waiting, stdout and stderr into the
+  /// files `out` and `err` there; returns its pid.
+  pid_t start(const std::vector<std::string>& args, const std::string& out, const std::string& err) const;
+  /// Waits for `pid`; its exit code, 128 + the signal when a signal ended it.
+  static int wait_exit(pid_t pid);
   /// `mpirun -n 2 --oversubscribe dyncontact ARGS` (allowed as root too).
   CliResult run_mpi2(const std::string& args) const;
   /// Whether `mpirun` is on PATH.
