@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <sstream>
 
-#include "dynamic_limits.hpp"
 #include "fe_body_estimate.hpp"
 #include "progress.hpp"
 #include "summary_writer.hpp"
@@ -59,9 +58,7 @@ std::vector<DynamicPlotSeries> dynamic_plot_series(int dimension) {
 DynamicOutcome simulate_dynamic(const Case& c, bool progress,
                                 const std::function<void(const dynamics::DynamicSample&)>& on_step) {
   DynamicOutcome out;
-  out.limits = dynamic_limits_before(c);  // throws for what is known wrong before the run
   check_fe_body_fits(c);
-  DynamicLimitTracker tracker(c);
 #ifdef DYNCONTACT_WITH_FE
   dynamics::DynamicSimulation sim(c, dynamics::make_finite_body(c));
 #else
@@ -74,7 +71,6 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
   const double t_end = c.dynamic->t_end;
   out.result = sim.run([&](const dynamics::DynamicSample& s) {
     append_row(series, s);
-    tracker.add(s);
     if (on_step) on_step(s);
     if (progress) line.time(s.state.time, t_end);
   });
@@ -106,7 +102,7 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
                        {"time_s", out.elapsed},
                        {"certificate", {{"worst", r.worst_certificate}, {"last", r.last_certificate}}}};
   summary["balances"] = {{"momentum", r.momentum_imbalance}, {"energy", r.energy_imbalance}};
-  for (ResultLimit& l : tracker.limits(r)) out.limits.push_back(std::move(l));
+  out.limits = r.limits;
   summary["limits"] = limits_json(out.limits);
 #ifdef DYNCONTACT_WITH_FE
   if (const dynamics::FiniteBody* body = sim.finite_body()) {  // as for problem "finite"

@@ -14,7 +14,7 @@ DynamicSweepOutcome simulate_dynamic_sweep(const Case& c, bool quiet) {
   const std::vector<SweepPoint> points = sweep_points(c);
   for (const SweepPoint& p : points) {  // what is known wrong before any run
     try {
-      dynamic_limits_before(p.run);
+      dynamics::dynamic_limits_before(p.run);
     } catch (const InputError& e) {
       throw InputError(e.key(), std::string(e.what()).substr(e.key().size() + 2) + " (sweep run " + p.label + ")");
     }

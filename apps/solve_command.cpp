@@ -104,7 +104,7 @@ int run_solve(const SolveArgs& args) {
   // solved by rank 0 alone.
   const bool root = launch_rank().root();
   // What a dynamic run is known to get wrong before it starts (InputError: exit 2, nothing written).
-  if (c.problem == ProblemKind::dynamic && !c.sweep) dynamic_limits_before(c);
+  if (c.problem == ProblemKind::dynamic && !c.sweep) dynamics::dynamic_limits_before(c);
   if (c.problem == ProblemKind::paper_cylinder)
     return run_paper_cylinder(c, root ? prepare_output_dir(c, args.out) : std::string(), args.quiet);
   if (c.problem == ProblemKind::dynamic && c.sweep)

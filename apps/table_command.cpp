@@ -1,6 +1,7 @@
 // dyncontact table CASE.json --creepage A:B:N [--lateral ...] [--spin ...] [--out DIR]
 // A creep-force table: steady rolling at every combination of the values, spread over the
 // cores (threads) or, under mpirun, over the ranks (table_ranks.hpp).
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -15,8 +16,10 @@
 #include "errors.hpp"
 #include "interrupt.hpp"
 #include "interrupt_handler.hpp"
+#include "normal_run.hpp"
 #include "output_files.hpp"
 #include "progress.hpp"
+#include "result_limits.hpp"
 #include "table_output.hpp"
 #include "table_points.hpp"
 #include "table_ranges.hpp"
@@ -46,8 +49,20 @@ int run_table(const TableArgs& args, bool root) {
   axes.creepage_y = axis("--lateral", args.lateral, c.dimension == 2 ? 0.0 : modes[1].value);
   axes.spin = axis("--spin", args.spin, c.dimension == 2 ? 0.0 : modes[2].value);
   check_table_case(c, axes);
+  // The contact every point shares (the same load): its result limits (grid edge, a/R,
+  // resolution) before the table; an error refuses the table (exit 2, nothing written).
+  NormalRun contact = run_normal(c, false);
+  const std::vector<ResultLimit> limits = attach_result_limits(c, contact.summary);
+  if (std::any_of(limits.begin(), limits.end(), [](const ResultLimit& l) { return l.error; })) {
+    if (root)
+      for (const ResultLimit& l : limits)
+        std::cerr << (l.error ? "error: " : "warning: ") << l.key << ": the contact of the table's load: "
+                  << l.message << '\n';
+    return kExitBadInput;
+  }
   // Only rank 0 writes; the folder is checked before anything is solved.
   const std::string dir = root ? prepare_output_dir(c, args.out) : std::string();
+  if (root) report_limits(limits, dir);  // warnings only
 
   Progress progress("table of " + std::to_string(axes.size()) + " points", root && !args.quiet);
   const std::size_t per_line = axes.creepage_x.size();
@@ -75,6 +90,7 @@ int run_table(const TableArgs& args, bool root) {
       c.output.plots && !interrupted ? table_plots(dir, c, axes, rows) : std::vector<std::string>{};
   nlohmann::json meta = table_json(c, axes, rows);
   meta["status"] = interrupted ? "interrupted" : "completed";
+  meta["limits"] = limits_json(limits);
   write_file_whole((fs::path(dir) / "table.json").string(), meta.dump(2) + "\n");
   if (interrupted) {
     std::cerr << "interrupted after " << rows.size() << " of " << axes.size() << " points; wrote " << csv

@@ -162,7 +162,7 @@ int run_validate(const ValidateArgs& args) {
     std::printf("dynamic: %.6g s in steps of %.6g s (%s), normal model %s, contact model %s, %s\n", c.dynamic->t_end,
                 c.dynamic->dt, c.dynamic->bdf2 ? "bdf2" : "bdf1", to_string(c.dynamic->normal_model),
                 to_string(c.dynamic->contact_model), c.friction ? "with friction" : "frictionless");
-    if (const auto e = estimate_dynamic_contact(c)) {
+    if (const auto e = dynamics::estimate_dynamic_contact(c)) {
       if (e->load > 0.0)
         std::printf("  largest contact (Hertz, %.4g N): a = %.4g m, b = %.4g m (%.1f x %.1f elements across), "
                     "approach %.4g m\n",
@@ -170,13 +170,13 @@ int run_validate(const ValidateArgs& args) {
                     2.0 * e->half_width_y / g.dy, e->approach);
       if (e->contact_time > 0.0)
         std::printf("  impact:   Hertz contact time %.4g s, %.1f steps of time.dt (at least %.0f needed)\n",
-                    e->contact_time, e->steps_per_contact, kMinStepsPerContact);
+                    e->contact_time, e->steps_per_contact, dynamics::kMinStepsPerContact);
     }
-    for (const ResultLimit& l : dynamic_limits_before(c))  // throws for the errors
+    for (const ResultLimit& l : dynamics::dynamic_limits_before(c))  // throws for the errors
       std::fprintf(stderr, "warning: %s: %s\n", l.key.c_str(), l.message.c_str());
     if (c.sweep) {  // every run's case read and checked
       const std::vector<SweepPoint> points = sweep_points(c);
-      for (const SweepPoint& p : points) dynamic_limits_before(p.run);
+      for (const SweepPoint& p : points) dynamics::dynamic_limits_before(p.run);
       std::printf("sweep: %zu runs over %s\n", points.size(), c.sweep->key.c_str());
     }
   }

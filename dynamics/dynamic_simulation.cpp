@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dynamic_limits.hpp"
 #include "errors.hpp"
 #include "interrupt.hpp"
 
@@ -59,7 +60,8 @@ DynamicSpec resolve_finite_body(const DynamicSpec& spec, const FiniteBody* finit
 }
 
 DynamicSimulation::DynamicSimulation(const Case& c, std::unique_ptr<FiniteBody> finite)
-    : case_(c),
+    : before_limits_(dynamic_limits_before(c)),
+      case_(c),
       spec_(resolve_finite_body(*c.dynamic, finite.get())),
       stepper_(make_body(spec_, finite.get()), stepper_options(c)),
       contact_(c, std::move(finite)) {}
@@ -75,6 +77,7 @@ Wrench DynamicSimulation::external(double t) const {
 
 DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSample&)>& on_step) {
   DynamicResult result;
+  DynamicLimitTracker limits(case_);
   RigidBodyState state = initial_state(spec_);
   result.initial = state;
   const RigidBody& body = stepper_.body();
@@ -193,6 +196,7 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
     sample.contact_work = contact_work;
     sample.step = step;
     sample.finite_body = contact_.finite_body();
+    limits.add(sample);
     if (on_step) on_step(sample);
   }
   result.contact_model = contact_.model_used();
@@ -204,6 +208,8 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
   const double ke = kinetic_energy(body, state);
   result.energy_imbalance = std::abs(ke - ke0 - external_work - contact_work) /
                             std::max({ke0, ke, std::abs(external_work), std::abs(contact_work), 1e-300});
+  result.limits = before_limits_;
+  for (ResultLimit& l : limits.limits(result)) result.limits.push_back(std::move(l));
   return result;
 }
 

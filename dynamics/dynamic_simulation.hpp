@@ -9,6 +9,7 @@
 #include <string>
 
 #include "case_model.hpp"
+#include "contact_limits.hpp"
 #include "contact_wrench.hpp"
 #include "rigid_body.hpp"
 #include "time_stepper.hpp"
@@ -45,16 +46,20 @@ struct DynamicResult {
   double momentum_imbalance = 0.0;  ///< |m dV - sum dt F| / max(sum dt |F|, m |V|) over the run (bdf1: round-off)
   double energy_imbalance = 0.0;    ///< |KE_end - KE_0 - W_external - W_contact| / max(KE, |W|)
   RigidBodyState initial, final;
+  /// What is known wrong or outside the model (dynamic_limits.hpp): the warnings found before the
+  /// run (its errors are InputErrors of the constructor), then the limits of the steps run.
+  std::vector<ResultLimit> limits;
 };
 
 class DynamicSimulation {
  public:
   /// `finite`: the body of a case with an fe_body (finite/finite_body_contact.hpp's
-  /// make_finite_body); its mass, inertia and centre height are the mesh's.
+  /// make_finite_body); its mass, inertia and centre height are the mesh's. Throws InputError for
+  /// what is known wrong before the run (dynamic_limits_before).
   explicit DynamicSimulation(const Case& c, std::unique_ptr<FiniteBody> finite = nullptr);
   /// Runs to t_end; `on_step` after every accepted step (output, progress). Never throws for
   /// non-convergence, an interrupt or input a step cannot take: the result says where and why
-  /// it stopped, with the steps before it.
+  /// it stopped, with the steps before it, and its result limits (DynamicResult::limits).
   DynamicResult run(const std::function<void(const DynamicSample&)>& on_step);
 
   const RigidBody& body() const { return stepper_.body(); }
@@ -64,6 +69,7 @@ class DynamicSimulation {
   const FiniteBody* finite_body() const { return contact_.finite_body(); }
 
  private:
+  std::vector<ResultLimit> before_limits_;  ///< the warnings of dynamic_limits_before
   const Case& case_;
   DynamicSpec spec_;  ///< the case's, with an fe_body's mass, inertia and radius from its mesh
   RigidBodyStepper stepper_;

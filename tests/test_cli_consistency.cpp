@@ -97,6 +97,21 @@ TEST_F(CliConsistency, TheReadmeTableThroughZeroCreepageConverges) {
   EXPECT_TRUE(t["failed"].empty()) << t["failed"].dump();
 }
 
+TEST_F(CliConsistency, ATableOnAContactCutByTheGridIsRefused) {
+  // The contact every point shares reaches the grid's edge: no table (exit 2 naming grid).
+  const CliResult r = run("table " + example_path("rolling-sphere") +
+                          " --creepage 0:0.002:3 -q --set grid.nx=16 --set grid.ny=16 --set grid.extent=0.6 "
+                          "--set output.plots=false --out cut");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("error: grid: the contact of the table's load"), std::string::npos) << r.err;
+  // A resolved one: its (empty) limits in table.json.
+  const CliResult ok = run("table " + example_path("rolling-sphere") +
+                           " --creepage 0:0.002:3 -q --set grid.nx=16 --set grid.ny=16 --set output.plots=false "
+                           "--out ok");
+  ASSERT_EQ(ok.code, 0) << ok.err;
+  EXPECT_TRUE(json::parse(slurp(dir_ / "ok" / "table.json"))["limits"].empty());
+}
+
 TEST_F(CliConsistency, CreepagesAtRoundOffAreSolvedAndLinear) {
   // In full stick the creep force is linear in the creepage (Kalker's C11): the force per unit
   // creepage at 1e-12 and 1e-6 agree, both certified.

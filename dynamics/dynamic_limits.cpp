@@ -8,7 +8,7 @@
 #include "errors.hpp"
 #include "hertz.hpp"
 
-namespace dc::cli {
+namespace dc::dynamics {
 namespace {
 
 std::string format(const char* f, double a, double b = 0.0, double c = 0.0) {
@@ -18,7 +18,7 @@ std::string format(const char* f, double a, double b = 0.0, double c = 0.0) {
 }
 
 /// The pressure field of a step (null without contact).
-const std::vector<double>* step_pressure(const dynamics::ContactState& cs) {
+const std::vector<double>* step_pressure(const ContactState& cs) {
   if (cs.fields) return &cs.fields->normal.pressure;
   return cs.pressure;
 }
@@ -137,8 +137,8 @@ DynamicLimitTracker::DynamicLimitTracker(const Case& c) : case_(c) {
   if (const auto e = estimate_dynamic_contact(c)) reference_approach_ = e->approach;
 }
 
-void DynamicLimitTracker::add(const dynamics::DynamicSample& s) {
-  const dynamics::ContactState& cs = s.contact_state;
+void DynamicLimitTracker::add(const DynamicSample& s) {
+  const ContactState& cs = s.contact_state;
   const std::vector<double>* p = step_pressure(cs);
   int n = 0;
   const ContactSize size = p ? measure(case_.grid, *p, n) : ContactSize{};
@@ -170,7 +170,7 @@ void DynamicLimitTracker::add(const dynamics::DynamicSample& s) {
   }
 }
 
-std::vector<ResultLimit> DynamicLimitTracker::limits(const dynamics::DynamicResult& r) const {
+std::vector<ResultLimit> DynamicLimitTracker::limits(const DynamicResult& r) const {
   const Case& c = case_;
   const DynamicSpec& s = *c.dynamic;
   ContactSize size = largest_;
@@ -217,4 +217,4 @@ std::vector<ResultLimit> DynamicLimitTracker::limits(const dynamics::DynamicResu
   return out;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::dynamics

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "case_model.hpp"
+#include "contact_limits.hpp"
 #include "dynamic_simulation.hpp"
-#include "result_limits.hpp"
 
-namespace dc::cli {
+namespace dc::dynamics {
 
 /// Fewer steps than this in a Hertz contact time and the impact's peak force and rebound are
 /// off by several per cent (ball-impact, bdf2: 14 steps 8 %, 7 steps 19 %, 2 steps 70 %).
@@ -44,10 +44,10 @@ std::vector<ResultLimit> dynamic_limits_before(const Case& c);
 class DynamicLimitTracker {
  public:
   explicit DynamicLimitTracker(const Case& c);
-  void add(const dynamics::DynamicSample& s);
+  void add(const DynamicSample& s);
   /// The limits of the run so far (grid edge at any step, a/R and resolution at the largest
   /// contact, penetration no element saw, short contacts, the energy balance of `r`).
-  std::vector<ResultLimit> limits(const dynamics::DynamicResult& r) const;
+  std::vector<ResultLimit> limits(const DynamicResult& r) const;
 
  private:
   const Case& case_;
@@ -64,4 +64,4 @@ class DynamicLimitTracker {
   double shortest_episode_time_ = 0.0;
 };
 
-}  // namespace dc::cli
+}  // namespace dc::dynamics
