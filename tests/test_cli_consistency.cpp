@@ -112,6 +112,17 @@ TEST_F(CliConsistency, ATableOnAContactCutByTheGridIsRefused) {
   EXPECT_TRUE(json::parse(slurp(dir_ / "ok" / "table.json"))["limits"].empty());
 }
 
+TEST_F(CliConsistency, RunningOutOfMemoryNamesWhatToReduce) {
+  // 2048 x 2048 elements under a 600 MB address-space limit (was: exit 4 "internal:
+  // std::bad_alloc"). AddressSanitizer reserves terabytes of address space: not under it.
+  if (DYNCONTACT_SANITIZED) GTEST_SKIP() << "an address-space limit is not for a sanitizer build";
+  const CliResult r = run_prefixed("ulimit -v 600000;", "solve " + example_path("hertz-sphere") +
+                                                            " -q --out oom --set grid.nx=2048 --set grid.ny=2048");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("more memory than this machine has"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("grid.nx"), std::string::npos) << r.err;
+}
+
 TEST_F(CliConsistency, CreepagesAtRoundOffAreSolvedAndLinear) {
   // In full stick the creep force is linear in the creepage (Kalker's C11): the force per unit
   // creepage at 1e-12 and 1e-6 agree, both certified.

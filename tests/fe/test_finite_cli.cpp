@@ -68,6 +68,8 @@ TEST_F(FiniteCli, CoarseContactFaceIsAWarningNamingContactSize) {
   const json s = json::parse(dc::test::slurp(dir_ / "coarse" / "summary.json"));
   ASSERT_EQ(s["limits"].size(), 1u) << s["limits"].dump();
   EXPECT_EQ(s["limits"][0]["key"], "fe_body.contact_size");
+  EXPECT_EQ(s["limits"][0]["level"], "warning");
+  EXPECT_FALSE(s["limits"][0]["accepted"].get<bool>());  // no key of the case accepted it
   EXPECT_GT(s["contact_face_element_size"].get<double>(), 2e-4);
   EXPECT_FALSE(s["remeshed"].get<bool>());  // a given contact_size is the case's choice
 
