@@ -49,7 +49,8 @@ TEST(DynamicLimits, RefusedBeforeTheRun) {
 }
 
 TEST(DynamicLimits, TheRunsLimitsAreInItsResult) {
-  DynamicSimulation fine(build_case(test::coarse_ball_impact()));
+  const Case resolved = build_case(test::coarse_ball_impact());  // outlives the simulation, which refers to it
+  DynamicSimulation fine(resolved);
   const DynamicResult good = fine.run({});
   EXPECT_TRUE(good.completed);
   EXPECT_TRUE(good.limits.empty());
