@@ -158,10 +158,8 @@ bool dynamic_sizing_load(const DynamicSpec& s, const Case& c, NormalSpec& load) 
     double A = 0.0, B = 0.0;
     c.profile.quadratic_coefficients(A, B);
     if (A > 0.0 && B > 0.0) {
-      const double R = 0.5 / std::sqrt(A * B), E = c.materials.E_star();
-      const double v = s.velocity[2];
-      const double delta = std::pow(15.0 * s.mass * v * v / (16.0 * E * std::sqrt(R)), 0.4);
-      P = std::max(P, 4.0 / 3.0 * E * std::sqrt(R) * std::pow(delta, 1.5));
+      const double R = 0.5 / std::sqrt(A * B);
+      P = std::max(P, hertz::sphere_impact(R, s.mass, s.velocity[2], c.materials.E_star()).force);
     }
   }
   if (!(P > 0.0) || !std::isfinite(P)) return false;

@@ -55,6 +55,11 @@ SphereSolution sphere(double R, double P, double E_star) {
   return {a, a * a / R, 3.0 * P / (2.0 * kPi * a * a)};
 }
 
+ImpactSolution sphere_impact(double R, double m, double v, double E_star) {
+  const double delta = std::pow(15.0 * m * v * v / (16.0 * E_star * std::sqrt(R)), 0.4);
+  return {delta, 4.0 / 3.0 * E_star * std::sqrt(R) * std::pow(delta, 1.5), 2.94 * delta / std::abs(v)};
+}
+
 EllipticSolution elliptic(double A, double B, double P, double E_star) {
   if (!(A > 0.0 && B > 0.0)) throw std::domain_error("hertz::elliptic: curvatures must be positive");
   const bool swapped = A > B;  // the major semi-axis lies along the smaller curvature

@@ -15,6 +15,12 @@ EllipticSolution elliptic(double A, double B, double P, double E_star);
 struct CylinderSolution { double a, p0; };
 CylinderSolution cylinder2d(double R, double P, double E_star);
 
+/// Elastic impact of a sphere (radius R, mass m) at normal speed v (Johnson, Contact Mechanics,
+/// 11.4): deepest approach (15 m v^2 / (16 E* sqrt R))^(2/5), peak force 4/3 E* sqrt(R)
+/// approach^(3/2), contact time 2.94 approach / v.
+struct ImpactSolution { double approach, force, duration; };
+ImpactSolution sphere_impact(double R, double m, double v, double E_star);
+
 /// Rigid flat circular punch of radius a on an elastic half-space (Boussinesq):
 /// force for approach d, P = 2 a E* d, and the pressure p(r) = P / (2 pi a sqrt(a^2 - r^2)).
 double flat_punch_force(double a, double approach, double E_star);

@@ -74,11 +74,8 @@ std::optional<DynamicContactEstimate> estimate_dynamic_contact(const Case& c) {
   }
   const double v0 = -s.velocity[2];
   if (s.normal_model == NormalModel::dynamic && v0 > 0.0) {
-    // Hertz impact (Johnson 11.4): delta_max = (15 m v0^2 / (16 E* sqrt(R)))^(2/5), contact time
-    // 2.94 delta_max / v0 (R: the equivalent radius of the elliptic gap).
-    const double R = 0.5 / std::sqrt(A * B), E = c.materials.E_star();
-    const double delta_max = std::pow(15.0 * s.mass * v0 * v0 / (16.0 * E * std::sqrt(R)), 0.4);
-    e.contact_time = 2.94 * delta_max / v0;
+    // Hertz impact (R: the equivalent radius of the elliptic gap).
+    e.contact_time = hertz::sphere_impact(0.5 / std::sqrt(A * B), s.mass, v0, c.materials.E_star()).duration;
     e.steps_per_contact = e.contact_time / s.dt;
   }
   if (s.normal_model == NormalModel::dynamic) e.start_inside = std::max(0.0, s.radius - s.position[2]);

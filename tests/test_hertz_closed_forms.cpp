@@ -68,5 +68,17 @@ TEST(HertzClosedForms, CylinderAndPunch) {
   EXPECT_NEAR(flat_punch_pressure(1e-3, 10, 0.0), 10 / (2 * std::numbers::pi * 1e-6), 1e-3);
 }
 
+TEST(HertzClosedForms, SphereImpact) {
+  // Johnson 11.4: the kinetic energy is the elastic energy at the deepest approach,
+  // 1/2 m v^2 = 8/15 E* sqrt(R) delta^(5/2); the 10 mm steel ball (32.7 g) at 1 m/s on steel:
+  // peak force 1.74 kN, contact time 69 us (examples/ball-impact.json).
+  const double E = 2.1e11 / (2.0 * (1.0 - 0.09)), R = 0.01, m = 0.032673, v = 1.0;
+  const ImpactSolution s = sphere_impact(R, m, v, E);
+  EXPECT_NEAR(8.0 / 15.0 * E * std::sqrt(R) * std::pow(s.approach, 2.5) / (0.5 * m * v * v), 1.0, 1e-12);
+  EXPECT_NEAR(s.force, 1744.0, 2.0);
+  EXPECT_NEAR(s.duration, 6.89e-5, 0.01e-5);
+  EXPECT_EQ(sphere_impact(R, m, -v, E).duration, s.duration);  // a downward speed as an upward one
+}
+
 }  // namespace
 }  // namespace dc::hertz
