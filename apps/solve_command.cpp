@@ -179,6 +179,8 @@ int run_solve(const SolveArgs& args) {
     std::printf("wrote %s\n", summary_path.c_str());
     std::fflush(stdout);
   }
+  if (const std::string fell_back = fallback_warning(r); !fell_back.empty())
+    std::cerr << "warning: solver: " << fell_back << '\n';
   if (run.interrupted) {
     std::cerr << "interrupted after " << run.fields.size() << " finished step(s); results written to " << dir
               << '\n';

@@ -7,17 +7,16 @@
 
 namespace dc {
 
-/// Polonsky & Keer (Wear 231, 1999) projected conjugate gradient for the normal problem
-/// (4.7) in QP form: bounds 0 <= x <= upper (upper is +inf or 0 for elements that cannot
-/// touch), at most one equality sum a x = b with equal weights a on the free elements
-/// (force control). Stops when the relative change of x falls below options.tol.
-SolveOutcome solve_normal_native(const QuadraticProgram& qp, const SolveOptions& options);
-
-/// The same program solved by preconditioned projected conjugate gradients
-/// (nlp/preconditioned_normal.cpp): the preconditioner is built for the unscaled compliance C,
-/// and Q = C / scale. Iterations nearly independent of the grid; same stopping rule.
-SolveOutcome solve_normal_preconditioned(const QuadraticProgram& qp, const SolveOptions& options,
-                                         const NormalPreconditioner& preconditioner, double scale);
+/// The normal problem (4.7) in QP form (bounds 0 <= x <= upper, upper +inf or 0 for elements that
+/// cannot touch; at most one equality sum a x = b with equal weights a on the free elements: force
+/// control), solved by bound-constrained conjugate gradients on the contact set
+/// (nlp/native_normal.cpp): Polonsky & Keer's active-set CG with Vollebregt's NormCG safeguards
+/// (no restart when the set changes, elements enter with pressure 0). With a preconditioner (built
+/// for the unscaled compliance C, Q = C / scale) the iteration counts barely grow with the grid.
+/// Stops when the relative change of x falls below options.tol and the contact set is settled;
+/// SolveOutcome::history holds the iterations' change and contact-set counts.
+SolveOutcome solve_normal_native(const QuadraticProgram& qp, const SolveOptions& options,
+                                 const NormalPreconditioner* preconditioner = nullptr, double scale = 1.0);
 
 /// The normal program's structure, checked: which elements may carry load, force control and
 /// its total sum x (the equality's weights a0 are equal on the free elements).
@@ -29,7 +28,10 @@ struct NormalQpForm {
 };
 NormalQpForm read_normal_qp(const QuadraticProgram& qp);
 /// Starting point: qp.x0 projected on the bounds (or 0); under force control scaled to the
-/// total, uniform on the free elements when it carries nothing.
+/// total, or (when it carries nothing) spread evenly over the lowest tenth of the gap's range.
 std::vector<double> normal_start(const QuadraticProgram& qp, const NormalQpForm& form);
+/// x = the total of force control spread evenly over the free elements in the lowest tenth of
+/// the gap's range (c), 0 elsewhere.
+void load_lowest_elements(const QuadraticProgram& qp, const NormalQpForm& form, std::vector<double>& x);
 
 }  // namespace dc

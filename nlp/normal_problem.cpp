@@ -141,6 +141,8 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
   best.report.requested = solver.backend;
   best.report.operator_kind = compliance_->kind();
   bool have_result = false;
+  std::vector<FailedAttempt> tried;  // every attempt, for the report of those not kept
+  std::size_t best_index = 0;
   std::string attempts;  // every backend tried, for the report
   // A point x of the scaled program as pressure, approach, gap and energy, certified.
   const auto fill_solution = [&](const std::vector<double>& x, NormalSolution& sol) {
@@ -208,7 +210,7 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
     if (backend == "native" && !preconditioner_)
       preconditioner_ = std::make_shared<NormalPreconditioner>(*compliance_, grid_);
     const TimedOutcome run = run_backend(backend, qp, options, [&](const QuadraticProgram& q, const SolveOptions& o) {
-      return solve_normal_preconditioned(q, o, *preconditioner_, s.c0);
+      return solve_normal_native(q, o, preconditioner_.get(), s.c0);
     });
     const SolveOutcome& outcome = run.outcome;
     const double elapsed = run.time_s;
@@ -248,14 +250,19 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
       sol.report.status = SolveStatus::failed;
     }
     attempts += (attempts.empty() ? "" : "; ") + backend + ": " + to_string(sol.report.status);
+    tried.push_back({backend, sol.report.status, sol.report.message, sol.report.iterations, sol.report.time_s,
+                     outcome.x.size() == n ? sol.report.certificate.worst() : kInf, outcome.history});
     const bool better = !have_result || (sol.report.status == SolveStatus::converged) ||
                         (best.report.status == SolveStatus::failed && sol.report.status != SolveStatus::failed);
     if (better) {
       best = std::move(sol);
+      best_index = k;
       have_result = true;
     }
     if (best.report.status == SolveStatus::converged) break;
   }
+  for (std::size_t k = 0; k < tried.size(); ++k)
+    if (k != best_index) best.report.failed_attempts.push_back(std::move(tried[k]));
   if (best.report.fallback_used || best.report.status != SolveStatus::converged)
     best.report.message += " [tried " + attempts + "]";
   if (best.report.status == SolveStatus::converged) warm_start_ = best.pressure;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "iteration_record.hpp"
 #include "linear_operator.hpp"
 
 namespace dc {
@@ -89,6 +90,7 @@ struct SolveOutcome {
   double objective = 0.0;
   bool polished = false;      ///< finished by the active-set polish (active_set_polish.hpp)
   std::vector<double> block_x;  ///< the program's sparse block's unknowns y (when it has one)
+  std::vector<IterationRecord> history;  ///< native solvers: a bounded iteration history
 };
 
 SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& options);

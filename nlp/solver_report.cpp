@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <cstdio>
+#include <string>
 
 namespace dc {
 
@@ -48,8 +49,42 @@ nlohmann::json to_json(const Certificate& c) {
           {"friction_law", c.friction_law},     {"gap_function", c.gap_function}};
 }
 
+namespace {
+nlohmann::json to_json(const FailedAttempt& a) {
+  nlohmann::json history = nlohmann::json::array();
+  for (const IterationRecord& h : a.history)
+    history.push_back({{"iteration", h.iteration},
+                       {"change", h.change},
+                       {"active", h.active},
+                       {"entered", h.entered},
+                       {"left", h.left}});
+  nlohmann::json j = {{"backend", a.backend},       {"status", to_string(a.status)}, {"message", a.message},
+                      {"iterations", a.iterations}, {"time_s", a.time_s}};
+  j["certificate"] = std::isfinite(a.certificate) ? nlohmann::json(a.certificate) : nlohmann::json(nullptr);
+  if (!history.empty()) j["history"] = history;
+  return j;
+}
+}  // namespace
+
+std::string fallback_warning(const SolverReport& r) {
+  if (r.failed_attempts.empty() || (!r.fallback_used && r.status == SolveStatus::converged)) return "";
+  std::string text;
+  for (const FailedAttempt& a : r.failed_attempts) {
+    text += (text.empty() ? "" : "; ") + a.backend + ": " + to_string(a.status) + " after " +
+            std::to_string(a.iterations) + " iterations (" + a.message;
+    if (!a.history.empty()) {
+      const IterationRecord& h = a.history.back();
+      text += "; relative change " + format_number(h.change) + " at the end, contact set " + std::to_string(h.active) +
+              " (+" + std::to_string(h.entered) + " -" + std::to_string(h.left) + ")";
+    }
+    text += ")";
+  }
+  if (r.status == SolveStatus::converged) text += "; " + r.backend + " took over";
+  return text;
+}
+
 nlohmann::json to_json(const SolverReport& r) {
-  return {{"backend", r.backend},
+  nlohmann::json j = {{"backend", r.backend},
           {"requested", r.requested},
           {"status", to_string(r.status)},
           {"message", r.message},
@@ -60,6 +95,12 @@ nlohmann::json to_json(const SolverReport& r) {
           {"polished", r.polished},
           {"operator", r.operator_kind},
           {"certificate", to_json(r.certificate)}};
+  if (!r.failed_attempts.empty()) {
+    nlohmann::json attempts = nlohmann::json::array();
+    for (const FailedAttempt& a : r.failed_attempts) attempts.push_back(to_json(a));
+    j["failed_attempts"] = attempts;
+  }
+  return j;
 }
 
 }  // namespace dc

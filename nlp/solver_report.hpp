@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "iteration_record.hpp"
+
 namespace dc {
 
 /// Residuals measured by us after a solve (never the backend's own claim).
@@ -25,6 +27,18 @@ bool all_finite(const std::vector<double>& values);
 
 enum class SolveStatus { converged, not_converged, failed };
 
+/// A backend that was tried and did not give the reported answer (`auto` moved on): what it
+/// said, its effort, our certificate of its point and, for a native solver, its iterations.
+struct FailedAttempt {
+  std::string backend;
+  SolveStatus status = SolveStatus::failed;
+  std::string message;
+  int iterations = 0;
+  double time_s = 0.0;
+  double certificate = 0.0;  ///< Certificate::worst() of its point (infinity: no point)
+  std::vector<IterationRecord> history;
+};
+
 struct SolverReport {
   std::string backend;          ///< backend that produced the result
   std::string requested;        ///< backend the user asked for
@@ -37,12 +51,17 @@ struct SolverReport {
   bool polished = false;        ///< the backend's point was finished by the active-set polish
   std::string operator_kind;    ///< dense | fft
   Certificate certificate;
+  std::vector<FailedAttempt> failed_attempts;  ///< the backends tried before (or instead of) this one
 };
 
 const char* to_string(SolveStatus status);
 /// A number for messages: %.3g (never %f, which prints small residuals as 0.000001).
 std::string format_number(double value);
 nlohmann::json to_json(const Certificate& certificate);
+/// One line for stderr per failed attempt of a report whose answer came from a fallback (or that
+/// did not converge at all): "native: not_converged after 1000 iterations (iteration limit reached;
+/// relative change 3e-4 at the end, contact set 5321 (+12 -9)); ipopt took over". Empty otherwise.
+std::string fallback_warning(const SolverReport& report);
 /// The `solver` object of summary.json.
 nlohmann::json to_json(const SolverReport& report);
 

@@ -342,6 +342,8 @@ struct TangentialProblem::Impl {
     best.report.operator_kind = sparse ? "sparse+" + sparse->halfspace->kind() : Ct->kind();
     bool have_result = false;
     std::string attempts;
+    std::vector<FailedAttempt> tried;  // every attempt, for the report of those not kept
+    std::size_t best_index = 0;
     // The condensed program: the same program with the body's rows eliminated (Q the condensed
     // compliance, no block); the program itself when it has no block (no copy).
     ScaledOperator condensed_q(*Ct, 1.0 / ct0);
@@ -437,12 +439,15 @@ struct TangentialProblem::Impl {
                          format_number(rep.certificate.worst()) + " exceeds the tolerance)";
       }
       attempts += (attempts.empty() ? "" : "; ") + label + ": " + to_string(rep.status);
+      tried.push_back({label, rep.status, rep.message, rep.iterations, rep.time_s,
+                       out.x.size() == nw ? rep.certificate.worst() : kInf, out.history});
       const bool better = !have_result || rep.status == SolveStatus::converged ||
                           (best.report.status == SolveStatus::failed && rep.status != SolveStatus::failed) ||
                           (rep.status == SolveStatus::not_converged &&
                            rep.certificate.worst() < best.report.certificate.worst());
       if (better) {
         best = std::move(trial);
+        best_index = tried.size() - 1;
         have_result = true;
       }
     };
@@ -462,6 +467,8 @@ struct TangentialProblem::Impl {
       }
     }
     if (best.tau.empty()) best.tau.assign(n, 0.0);  // every backend failed: nothing to keep
+    for (std::size_t k = 0; k < tried.size(); ++k)
+      if (k != best_index) best.report.failed_attempts.push_back(std::move(tried[k]));
     if (best.report.fallback_used || best.report.status != SolveStatus::converged)
       best.report.message += " [tried " + attempts + "]";
     return best;

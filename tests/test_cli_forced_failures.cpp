@@ -76,6 +76,37 @@ TEST_F(CliForcedFailures, AutoFallsBackAndSaysSo) {
   EXPECT_EQ(s["solver"]["status"], "converged");
   EXPECT_NE(s["solver"]["message"].get<std::string>().find("tried native: failed"), std::string::npos)
       << s["solver"]["message"];
+  // The failed attempt is listed, and stderr says so (auto never hides a failing fast path).
+  ASSERT_EQ(s["solver"]["failed_attempts"].size(), 1u) << s["solver"];
+  EXPECT_EQ(s["solver"]["failed_attempts"][0]["backend"], "native");
+  EXPECT_EQ(s["solver"]["failed_attempts"][0]["status"], "failed");
+  EXPECT_NE(r.err.find("warning: solver: native: failed"), std::string::npos) << r.err;
+}
+
+TEST_F(CliForcedFailures, NativeSolverThatRunsOutOfIterationsReportsItsHistory) {
+  // Three iterations are not enough on 20^2 (nor for Ipopt): auto moves on until NLopt answers,
+  // and the summary keeps the native solver's iterations (change, contact set) for the user to
+  // see why.
+  const Result r = run("solve " + case_file("hertz-sphere", 20) + " --set solver.max_iter=3 --out o -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json s = summary("o");
+  EXPECT_TRUE(s["solver"]["fallback_used"].get<bool>());
+  ASSERT_GE(s["solver"]["failed_attempts"].size(), 1u) << s["solver"];
+  const json& native = s["solver"]["failed_attempts"][0];
+  EXPECT_EQ(native["backend"], "native");
+  EXPECT_EQ(native["status"], "not_converged");
+  EXPECT_EQ(native["iterations"], 3);
+  ASSERT_EQ(native["history"].size(), 3u) << native;
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(native["history"][k]["iteration"], k + 1);
+    EXPECT_GT(native["history"][k]["change"].get<double>(), 0.0);
+    EXPECT_GT(native["history"][k]["active"].get<int>(), 0);
+  }
+  EXPECT_NE(r.err.find("warning: solver: native: not_converged after 3 iterations (iteration limit reached; "
+                       "relative change"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("took over"), std::string::npos) << r.err;
 }
 
 TEST_F(CliForcedFailures, AutoFallsBackOnAStalledTangentialSolve) {
