@@ -10,9 +10,12 @@
 #                               ms per step, contact solves and Newton iterations per step
 #   scripts/bench.sh peer [--repeat 3] [case.json...]
 #                               the cases of examples/bench/ (Hertz 512^2 and 1024^2, the wheel/rail
-#                               table at 23k/93k/372k elements, Spence 35 and 69 steps) timed whole by
-#                               dyncontact_peer_bench: time (median of the runs), iterations,
-#                               alternations, error against the closed form (docs/solvers.md); the
+#                               table at 23k/93k/372k elements, Spence 35 and 69 steps, the gap bank:
+#                               measured wheel/rail 6k-372k, conformal band, two patches, rough
+#                               sphere 512^2, sharp punch, cone) timed whole by dyncontact_peer_bench:
+#                               time (median of the runs), iterations, alternations, error against
+#                               the closed form, backend; exit 1 if any case did not converge or
+#                               fell back from its first backend (docs/solvers.md); the
 #                               gap bank of examples/bench/ (scripts/make_gap_bank.py) runs when named
 #   scripts/bench.sh fft [--sizes 45,91,152,304,512]
 #                               one operator apply on the FFT path (normal, 2x2 tangential, kappa B21)
@@ -47,7 +50,13 @@ if [[ "${1:-}" == "peer" ]]; then
   if [[ ${#cases[@]} -eq 0 ]]; then
     cases=(examples/bench/hertz-512.json examples/bench/hertz-1024.json examples/bench/wheel-rail-23k.json
            examples/bench/wheel-rail-93k.json examples/bench/wheel-rail-372k.json examples/bench/spence-35.json
-           examples/bench/spence-69.json)
+           examples/bench/spence-69.json
+           # the gap bank (scripts/make_gap_bank.py, docs/solvers.md "Real gaps")
+           examples/bench/measured-wheel-rail-6k.json examples/bench/measured-wheel-rail-23k.json
+           examples/bench/measured-wheel-rail-23k-force.json examples/bench/measured-wheel-rail-93k.json
+           examples/bench/measured-wheel-rail-372k.json examples/bench/conformal-band.json
+           examples/bench/two-patches.json examples/bench/rough-sphere-512.json
+           examples/bench/flat-punch-sharp.json examples/bench/cone.json)
   fi
   # the gap bank's tables too large to commit (scripts/make_gap_bank.py; NumPy: Debian's python3)
   for c in "${cases[@]}"; do

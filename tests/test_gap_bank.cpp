@@ -101,7 +101,12 @@ class GapBank : public test::CliTest {
     const test::CliResult r =
         run("solve bank/" + name + ".json --out " + out + " -q --set output.plots=false " + sets);
     EXPECT_EQ(r.code, 0) << r.err;
-    return json::parse(test::slurp(dir_ / out / "summary.json"));
+    json s = json::parse(test::slurp(dir_ / out / "summary.json"));
+    if (sets.find("solver.backend") == std::string::npos) {  // auto: the native solver, no fallback
+      EXPECT_EQ(s["solver"]["backend"], "native") << name << ": " << s["solver"];
+      EXPECT_FALSE(s["solver"]["fallback_used"].get<bool>()) << name << ": " << s["solver"];
+    }
+    return s;
   }
 };
 
@@ -181,6 +186,29 @@ TEST_F(GapBank, MeasuredWheelRailForceAndApproachControlAgree) {
   const json d = solve("measured-wheel-rail", "approach", set.str());
   EXPECT_NEAR(d["normal_force"].get<double>() / 10e3, 1.0, 1e-6);
   EXPECT_EQ(d["n_contact"], f["n_contact"]);
+}
+
+// The tangential solvers on the measured gap (force control, 10 kN, mu = 0.3): a shift to half
+// of mu P, steady rolling at a creepage of 5e-4 (about half saturation: |Fx| / mu P measured
+// 0.54) and the shift again with kappa != 0 (a base of G = 70 GPa, nu = 0.33). Each is answered
+// by the native solvers, certified (exit 0) and without a fallback; the shift's force is the
+// given one.
+TEST_F(GapBank, TangentialSolversOnTheMeasuredGap) {
+  generate("measured-wheel-rail-force");
+  const std::string tangential = " --set problem=tangential --set friction.law=coulomb --set friction.mu=0.3";
+  const json shift = solve("measured-wheel-rail-force", "shift",
+                           tangential + " --set tangential.regime=shift --set tangential.force=[1500,0]");
+  EXPECT_NEAR(shift["tangential_force"][0].get<double>(), 1500.0, 1e-6 * 1500.0);
+  const json rolling = solve("measured-wheel-rail-force", "rolling",
+                             tangential + " --set tangential.regime=rolling --set tangential.creepage=[5e-4,0]" +
+                                 " --set tangential.velocity=30");
+  const double saturation = std::abs(rolling["tangential_force"][0].get<double>()) / 3000.0;
+  EXPECT_GT(saturation, 0.3);
+  EXPECT_LT(saturation, 0.8);
+  const json kappa = solve("measured-wheel-rail-force", "kappa",
+                           tangential + " --set tangential.regime=shift --set tangential.force=[1500,0]" +
+                               " --set materials.base.G=7e10 --set materials.base.nu=0.33");
+  EXPECT_NEAR(kappa["tangential_force"][0].get<double>(), 1500.0, 1e-6 * 1500.0);
 }
 
 // The conformal band: flat to +-0.4 um over |y| <= 4 mm, so the contact spans the whole band
