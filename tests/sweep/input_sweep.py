@@ -8,9 +8,12 @@ or the Python module (solve), each run checked for what a user may rely on:
 - exit 0 (Python: a returned result) carries finite numbers only;
 - exit 3 (not converged) and 2 (a result limit) leave a whole summary.json.
 
-Usage: input_sweep.py cli|python BINARY_OR_MODULE_DIR [--only EXAMPLE ...]. Prints one line per
-failure and a count; exit 1 when a run failed. Runs are shortened (plots off, a dynamic run at
-most 40 steps), so the sweep tests input handling, not accuracy.
+Usage: input_sweep.py cli|python BINARY_OR_MODULE_DIR [--only EXAMPLE ...] [--budget SECONDS].
+Prints one line per failure and a count; exit 1 when a run failed. Runs are shortened (plots off,
+a dynamic run at most 40 steps), so the sweep tests input handling, not accuracy. With a budget
+(the CI's slow tests: 900 s), the command line's runs are taken in turn from every example and
+the Python module's examples share the time, so a slow machine covers a sample of every example
+rather than the first examples whole; what was left is printed.
 """
 import argparse
 import copy
@@ -20,6 +23,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import time
 
 SOURCE = os.environ.get("DYNCONTACT_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 VALUES = [("nan", float("nan")), ("inf", float("inf")), ("-1", -1.0), ("0", 0.0), ("1e300", 1e300)]
@@ -124,37 +128,57 @@ def check_cli(binary, name, doc, path, label, work):
     return None
 
 
-def cli(binary, only):
-    failures, runs = [], 0
+def interleaved(runs_by_example):
+    """Runs taken in turn from every example: the first of each, then the second of each, ..."""
+    out, k = [], 0
+    while any(k < len(r) for r in runs_by_example):
+        out += [r[k] for r in runs_by_example if k < len(r)]
+        k += 1
+    return out
+
+
+def cli(binary, only, budget):
+    failures, runs, start = [], 0, time.monotonic()
+    docs, plan = {}, []
+    for name in examples(only):
+        with open(os.path.join(SOURCE, "examples", name + ".json")) as f:
+            docs[name] = json.load(f)
+        plan.append([(name, path, label) for path, _ in numeric_paths(docs[name]) for label, _ in VALUES])
+    plan = interleaved(plan)
     with tempfile.TemporaryDirectory() as work:
-        for name in examples(only):
-            with open(os.path.join(SOURCE, "examples", name + ".json")) as f:
-                doc = json.load(f)
-            for path, _ in numeric_paths(doc):
-                for label, _ in VALUES:
-                    runs += 1
-                    failure = check_cli(binary, name, doc, path, label, work)
-                    if failure:
-                        failures.append(failure)
-                        print("FAIL", failure, flush=True)
+        for name, path, label in plan:
+            if budget and time.monotonic() - start > budget:
+                left = sorted({n for n, _, _ in plan[runs:]})
+                print(f"budget of {budget:g} s reached: {len(plan) - runs} of {len(plan)} runs left "
+                      f"(examples with runs left: {', '.join(left)})")
+                break
+            runs += 1
+            failure = check_cli(binary, name, docs[name], path, label, work)
+            if failure:
+                failures.append(failure)
+                print("FAIL", failure, flush=True)
     print(f"{runs} runs, {len(failures)} failed")
     return 1 if failures else 0
 
 
 # One child process per example: a crash of the module ends that child only, and is reported.
 CHILD = r"""
-import json, math, sys, warnings
+import json, math, sys, time, warnings
 import dyncontact
 sys.path.insert(0, sys.argv[1])
 import input_sweep as sweep
 name = sys.argv[2]
 with open(sys.argv[3]) as f:
     doc = json.load(f)
+deadline = float(sys.argv[4])  # time.time() after which no run starts (0: none)
 warnings.simplefilter("ignore")
 problem = doc.get("problem")
 for path, _ in sweep.numeric_paths(doc):
     for label, value in sweep.VALUES:
         key = sweep.dotted(path)
+        if deadline and time.time() > deadline:
+            print("LEFT", flush=True)
+            continue
         print("START", key, label, flush=True)
         try:
             r = dyncontact.solve(sweep.shortened(sweep.with_value(doc, path, value)))
@@ -169,17 +193,23 @@ for path, _ in sweep.numeric_paths(doc):
 """
 
 
-def python(module_dir, only):
-    failures, runs = [], 0
+def python(module_dir, only, budget):
+    failures, runs, left = [], 0, 0
     env = dict(os.environ, PYTHONPATH=module_dir + os.pathsep + os.environ.get("PYTHONPATH", ""))
     here = os.path.dirname(os.path.abspath(__file__))
+    names = []
     for name in examples(only):
+        with open(os.path.join(SOURCE, "examples", name + ".json")) as f:
+            if json.load(f).get("problem") != "finite":  # run by the command line only
+                names.append(name)
+    start = time.time()
+    for k, name in enumerate(names):
         path = os.path.join(SOURCE, "examples", name + ".json")
-        with open(path) as f:
-            if json.load(f).get("problem") == "finite":  # run by the command line only
-                continue
-        child = subprocess.Popen([sys.executable, "-c", CHILD, here, name, path], env=env, stdout=subprocess.PIPE,
-                                 stderr=subprocess.PIPE, text=True)
+        # With a budget each example may run until its share of it is used up (what an earlier
+        # example left over goes to the later ones).
+        deadline = start + budget * (k + 1) / len(names) if budget else 0.0
+        child = subprocess.Popen([sys.executable, "-c", CHILD, here, name, path, repr(deadline)], env=env,
+                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         try:
             out, err = child.communicate(timeout=SECONDS_PER_RUN * 10)
         except subprocess.TimeoutExpired:
@@ -194,10 +224,14 @@ def python(module_dir, only):
                 last = None
             elif line.startswith("FAIL"):
                 failures.append(line[5:])
+            elif line.startswith("LEFT"):
+                left += 1
         if child.returncode != 0:
             failures.append(f"{name}: the child ended with {child.returncode} at {last}: {err.strip()[-300:]}")
     for f in failures:
         print("FAIL", f)
+    if left:
+        print(f"budget of {budget:g} s reached: {left} runs left")
     print(f"{runs} runs, {len(failures)} failed")
     return 1 if failures else 0
 
@@ -207,8 +241,9 @@ def main():
     p.add_argument("mode", choices=["cli", "python"])
     p.add_argument("target", help="the dyncontact program (cli) or the folder of the Python module (python)")
     p.add_argument("--only", nargs="*", default=[])
+    p.add_argument("--budget", type=float, default=0.0, help="seconds after which no run starts (0: none)")
     a = p.parse_args()
-    return cli(a.target, a.only) if a.mode == "cli" else python(a.target, a.only)
+    return cli(a.target, a.only, a.budget) if a.mode == "cli" else python(a.target, a.only, a.budget)
 
 
 if __name__ == "__main__":
