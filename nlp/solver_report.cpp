@@ -95,6 +95,7 @@ nlohmann::json to_json(const SolverReport& r) {
           {"polished", r.polished},
           {"operator", r.operator_kind},
           {"certificate", to_json(r.certificate)}};
+  if (const std::string fell_back = fallback_warning(r); !fell_back.empty()) j["fallback_warning"] = fell_back;
   if (!r.failed_attempts.empty()) {
     nlohmann::json attempts = nlohmann::json::array();
     for (const FailedAttempt& a : r.failed_attempts) attempts.push_back(to_json(a));

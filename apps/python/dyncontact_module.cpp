@@ -186,6 +186,7 @@ PYBIND11_MODULE(dyncontact, m) {
       "  ResultLimitError               a result known to be wrong (an InputError), e.g. a contact cut by the\n"
       "                                 grid: .key, .limits, .result (the result, for inspection)\n"
       "  ResultLimitWarning             a limit that is only a warning (a UserWarning); results list all in 'limits'\n"
+      "  SolverFallbackWarning          auto's first backend failed and another answered (a UserWarning); see failed_attempts\n"
       "  OutputError                    a file of solve(out=...) could not be written (an OSError; .filename)\n\n"
       "Example:\n"
       "  import dyncontact, json\n"

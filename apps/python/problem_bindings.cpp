@@ -128,6 +128,7 @@ const std::vector<double>& pressure_of(const TangentialResult& r) { return r.s.n
 template <typename Result>
 py::object checked(Result r, double certificate_tol, bool allow_edge_contact, const char* cls) {
   r.limits = contact_limits(r.grid, pressure_of(r), certificate_tol, allow_edge_contact);
+  warn_fallback(to_json(r.s.report));
   const nlohmann::json limits = r.limits;
   py::object result = py::cast(std::move(r));
   enforce_limits(limits, result, edge_advice(cls));

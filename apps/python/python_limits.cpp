@@ -16,9 +16,11 @@ namespace {
 PyObject* g_input_error = nullptr;
 PyObject* g_result_limit_error = nullptr;
 PyObject* g_result_limit_warning = nullptr;
+PyObject* g_solver_fallback_warning = nullptr;
 
 struct ResultLimitTag {};    // py::exception's C++ type: none is thrown (enforce_limits raises)
 struct ResultLimitWarningTag {};
+struct SolverFallbackWarningTag {};
 
 /// An exception instance of `type` with `message` and .key.
 py::object error_with_key(PyObject* type, const std::string& message, const std::string& key) {
@@ -36,6 +38,11 @@ void bind_errors(py::module_& m) {
   g_input_error = input_error.ptr();
   g_result_limit_error = result_limit_error.ptr();
   g_result_limit_warning = result_limit_warning.ptr();
+  static py::exception<SolverFallbackWarningTag> solver_fallback_warning(m, "SolverFallbackWarning", PyExc_UserWarning);
+  g_solver_fallback_warning = solver_fallback_warning.ptr();
+  solver_fallback_warning.attr("__doc__") =
+      "The first backend of 'auto' failed and another gave the answer (a UserWarning): the result's solver\n"
+      "report lists the failed attempts ('failed_attempts', with the native solver's iteration history).";
   input_error.attr("__doc__") =
       "Bad input (a ValueError): .key names the case key (e.g. 'grid.nx', 'normal.force', 'grid.x[1]') or the\n"
       "argument (e.g. 'force_x', 'heights'); the message says why.";
@@ -84,7 +91,14 @@ void enforce_limits(const nlohmann::json& limits, const py::object& result, cons
   }
 }
 
+void warn_fallback(const nlohmann::json& solver) {
+  if (!solver.is_object() || !solver.contains("fallback_warning")) return;
+  const std::string text = "solver: " + solver["fallback_warning"].get<std::string>();
+  if (PyErr_WarnEx(g_solver_fallback_warning, text.c_str(), 1) != 0) throw py::error_already_set();
+}
+
 void enforce_summary_limits(const nlohmann::json& summary, const py::object& result, const std::string& advice) {
+  if (summary.contains("solver")) warn_fallback(summary["solver"]);
   if (summary.contains("limits")) enforce_limits(summary["limits"], result, advice);
   if (summary.contains("runs") && summary["runs"].is_array())
     for (const nlohmann::json& run : summary["runs"])

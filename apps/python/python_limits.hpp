@@ -17,8 +17,8 @@ namespace dc::python {
 namespace py = pybind11;
 
 /// Registers InputError (a ValueError; every C++ dc::InputError becomes one with its .key),
-/// ResultLimitError (an InputError with .key, .limits and .result) and ResultLimitWarning (a
-/// UserWarning).
+/// ResultLimitError (an InputError with .key, .limits and .result), ResultLimitWarning and
+/// SolverFallbackWarning (UserWarnings).
 void bind_errors(py::module_& m);
 
 /// Applies the limits of a result (entries of limits_json: key, message, accepted): the first one
@@ -27,7 +27,12 @@ void bind_errors(py::module_& m);
 /// ResultLimitWarning.
 void enforce_limits(const nlohmann::json& limits, const py::object& result, const std::string& advice);
 
-/// enforce_limits on a summary's "limits" and on those of each of its "runs" (a sweep).
+/// A SolverFallbackWarning (a UserWarning) when a solver report (to_json(SolverReport)) says that
+/// `auto`'s first backend failed and another answered ("fallback_warning"); nothing otherwise.
+void warn_fallback(const nlohmann::json& solver);
+
+/// warn_fallback on a summary's "solver", then enforce_limits on its "limits" and on those of
+/// each of its "runs" (a sweep).
 void enforce_summary_limits(const nlohmann::json& summary, const py::object& result, const std::string& advice);
 
 /// The limits (limits_json) of a contact found by NormalProblem or TangentialProblem on `grid`,

@@ -227,3 +227,22 @@ def test_dynamic_runs_keep_the_command_lines_limits():
     assert e.value.key == "time.dt"
     assert any(l["level"] == "error" and "energy balance" in l["message"] for l in e.value.limits)
     assert e.value.result["balances"]["energy"] > 0.05
+
+
+def test_a_fallback_is_a_warning_with_the_failed_attempts():
+    # Three iterations are too few for the native solver (and Ipopt) on 20^2: auto moves on, and
+    # the module says so as the command line does on stderr; the report keeps the native history.
+    case = hertz_case({"nx": 20, "ny": 20, "extent": 1.3})
+    case["solver"] = {"backend": "auto", "max_iter": 3}
+    with pytest.warns(dyncontact.SolverFallbackWarning, match="native: not_converged after 3 iterations"):
+        r = dyncontact.solve(case)
+    solver = r["solver"]
+    assert solver["fallback_used"] and solver["status"] == "converged"
+    native = solver["failed_attempts"][0]
+    assert native["backend"] == "native" and native["iterations"] == 3
+    assert [h["iteration"] for h in native["history"]] == [1, 2, 3]
+    # A solve that needs no fallback warns of nothing.
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", dyncontact.SolverFallbackWarning)
+        assert "failed_attempts" not in dyncontact.solve(hertz_case(RESOLVED))["solver"]
