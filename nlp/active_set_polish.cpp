@@ -1,4 +1,5 @@
 #include "active_set_polish.hpp"
+#include "vector_ops.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,12 +12,6 @@ namespace dc {
 namespace {
 
 using Vec = std::vector<double>;
-
-double dot(const Vec& a, const Vec& b) {
-  double s = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
-  return s;
-}
 
 /// The program's bounds and disk membership, with empty bounds expanded to +-infinity.
 struct Sets {

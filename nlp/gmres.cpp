@@ -1,19 +1,11 @@
 #include "gmres.hpp"
 #include "interrupt.hpp"
+#include "vector_ops.hpp"
 
 #include <cmath>
 #include <cstddef>
 
 namespace dc {
-namespace {
-
-double dot(const std::vector<double>& a, const std::vector<double>& b) {
-  double s = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
-  return s;
-}
-
-}  // namespace
 
 GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, const std::vector<double>& b,
                   std::vector<double>& x, double rtol, int restart, int max_iter) {

@@ -43,23 +43,12 @@
 
 #include "tangential_problem.hpp"
 #include "interrupt.hpp"
+#include "vector_ops.hpp"
 
 namespace dc {
 namespace {
 
 using Vec = std::vector<double>;
-
-double dot(const Vec& a, const Vec& b) {
-  double s = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
-  return s;
-}
-
-double max_abs(const Vec& v) {
-  double m = 0.0;
-  for (double x : v) m = std::max(m, std::abs(x));
-  return m;
-}
 
 std::string format(const char* fmt, double a) {
   char buf[64];

@@ -19,17 +19,12 @@
 
 #include "gmres.hpp"
 #include "interrupt.hpp"
+#include "vector_ops.hpp"
 
 namespace dc {
 namespace {
 
 using Vec = std::vector<double>;
-
-double max_abs(const Vec& v) {
-  double m = 0.0;
-  for (double x : v) m = std::max(m, std::abs(x));
-  return m;
-}
 
 class SteadyRollingNewton {
  public:

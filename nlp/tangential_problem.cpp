@@ -19,15 +19,10 @@
 #include "scaled_operator.hpp"
 #include "sparse_block.hpp"
 #include "steady_rolling_solver.hpp"
+#include "vector_ops.hpp"
 
 namespace dc {
 namespace {
-
-double max_abs(const std::vector<double>& v) {
-  double m = 0.0;
-  for (double x : v) m = std::max(m, std::abs(x));
-  return m;
-}
 
 /// Relative change between two fields (0 when both vanish).
 double relative_change(const std::vector<double>& a, const std::vector<double>& b) {
