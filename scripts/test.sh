@@ -43,8 +43,10 @@ if [[ $sanitize -eq 1 ]]; then
   scripts/setup.sh --packages-only
   if [[ ! -f "$SANITIZE_DIR/CMakeCache.txt" ]]; then
     mkdir -p "$SANITIZE_DIR"
-    cmake -S . -B "$SANITIZE_DIR" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE=-O2 \
-      -DDYNCONTACT_SANITIZE=address,undefined \
+    # -O1, as AddressSanitizer advises, and without UBSan's alignment and null checks: gcc took
+    # 3 x longer with them on Eigen-heavy sources (a null dereference still faults under ASan).
+    cmake -S . -B "$SANITIZE_DIR" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE=-O1 \
+      -DDYNCONTACT_SANITIZE=address,undefined -DDYNCONTACT_SANITIZE_SKIP=alignment,null \
       -DDYNCONTACT_BUILD_BENCH=OFF >"$SANITIZE_DIR/configure.log" 2>&1 ||
       { cat "$SANITIZE_DIR/configure.log" >&2; exit 1; }
   fi
