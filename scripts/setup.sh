@@ -10,6 +10,8 @@
 #   DYNCONTACT_JOBS        parallel build jobs (default: nproc)
 #   DYNCONTACT_SKIP_APT=1  do not check or install packages
 #   DYNCONTACT_WITH_FUZZ=1 also clang and libFuzzer (FUZZ_PACKAGES; scripts/fuzz.sh)
+#   DYNCONTACT_BUILD_TARGET  what to build (default: all; scripts/run.sh builds dyncontact_programs,
+#                          the program and the Python module, and leaves the tests to scripts/test.sh)
 # Argument --packages-only: install the packages, do not configure or build.
 #   DYNCONTACT_SKIP_PYTHON_INSTALL=1  do not install the Python module (cmake --install --component python,
 #                                     then scripts/install_python_module.sh for the python3 on PATH)
@@ -29,6 +31,7 @@ PACKAGES=(
   libmetis-dev  # METIS orders the sparse saddle form for MUMPS (nlp/mumps_ordering_hook.hpp)
   libopenblas0-pthread  # an optimised BLAS for CHOLMOD and MUMPS (reference BLAS: 6x slower factorisations)
   time  # /usr/bin/time: peak memory in scripts/bench.sh finite
+  ccache  # rebuilds reuse compiled objects (CMakeLists.txt uses it when found)
 )
 FUZZ_PACKAGES=(clang libclang-rt-dev)
 if [[ "${DYNCONTACT_WITH_FUZZ:-0}" == 1 ]]; then PACKAGES+=("${FUZZ_PACKAGES[@]}"); fi
@@ -108,7 +111,7 @@ if [[ $needs_configure -eq 1 ]]; then
 fi
 
 start=$SECONDS
-if ! cmake --build "$BUILD_DIR" -j"$JOBS" >"$LOG" 2>&1; then
+if ! cmake --build "$BUILD_DIR" -j"$JOBS" --target "${DYNCONTACT_BUILD_TARGET:-all}" >"$LOG" 2>&1; then
   say "build failed"
   show_errors "$LOG"
   exit 1
