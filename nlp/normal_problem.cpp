@@ -9,6 +9,7 @@
 
 #include "active_set_polish.hpp"
 #include "backend_choice.hpp"
+#include "certified_solve.hpp"
 #include "errors.hpp"
 #include "native_solvers.hpp"
 #include "scaled_operator.hpp"
@@ -137,13 +138,9 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
   SolveOptions options = solve_options(solver, progress);
   if (exact_hessian_limit_ > 0) options.exact_hessian_limit = exact_hessian_limit_;
 
-  NormalSolution best;
-  best.report.requested = solver.backend;
-  best.report.operator_kind = compliance_->kind();
-  bool have_result = false;
-  std::vector<FailedAttempt> tried;  // every attempt, for the report of those not kept
-  std::size_t best_index = 0;
-  std::string attempts;  // every backend tried, for the report
+  NormalSolution first;
+  first.report.requested = solver.backend;
+  first.report.operator_kind = compliance_->kind();
   // A point x of the scaled program as pressure, approach, gap and energy, certified.
   const auto fill_solution = [&](const std::vector<double>& x, NormalSolution& sol) {
     sol.pressure.resize(n);
@@ -178,7 +175,7 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
   };
   if (given) {
     NormalSolution sol;
-    sol.report = best.report;
+    sol.report = first.report;
     sol.report.backend = "active-set polish";
     std::vector<double> x(n), lambda, g(n);
     for (std::size_t i = 0; i < n; ++i) x[i] = std::max((*given)[i], 0.0) / s.p_ref;
@@ -205,7 +202,8 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
   }
   const auto order =
       backend_order(solver.backend, native_first_ ? std::numeric_limits<std::size_t>::max() : n, solver.fallback);
-  for (std::size_t k = 0; k < order.size(); ++k) {
+  AttemptLedger<NormalSolution> ledger(first);
+  for (std::size_t k = 0; k < order.size() && !ledger.converged(); ++k) {
     const std::string& backend = order[k];
     if (backend == "native" && !preconditioner_)
       preconditioner_ = std::make_shared<NormalPreconditioner>(*compliance_, grid_);
@@ -213,58 +211,27 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
       return solve_normal_native(q, o, preconditioner_.get(), s.c0);
     });
     const SolveOutcome& outcome = run.outcome;
-    const double elapsed = run.time_s;
-
     NormalSolution sol;
-    sol.report = best.report;
+    sol.report = first.report;
     sol.report.backend = backend;
     sol.report.fallback_used = k > 0;
     sol.report.message = outcome.message;
     sol.report.iterations = outcome.iterations;
     sol.report.polished = outcome.polished;
-    sol.report.time_s = elapsed;
-    if (outcome.x.size() == n) {
+    sol.report.time_s = run.time_s;
+    const bool has_point = outcome.x.size() == n;
+    if (has_point) {
       fill_solution(outcome.x, sol);
-      // An interior point leaves the contact's edge elements off their bounds by about mu /
-      // (their multiplier): a point Ipopt's own test accepted that misses the certificate is
-      // finished by the active-set polish (as NLopt's are), kept when its certificate is the
-      // better one. A point Ipopt did not finish goes to the fallbacks as it is.
-      if (backend == "ipopt" && outcome.success && sol.report.status != SolveStatus::converged) {
-        const auto polish_start = std::chrono::steady_clock::now();
-        std::vector<double> x = outcome.x, multipliers = outcome.equality_multipliers;
-        const PolishResult polish = polish_on_active_set(qp, x, multipliers, 1e-2 * solver.certificate_tol);
-        NormalSolution polished;
-        polished.report = sol.report;
-        if (polish.improved) fill_solution(x, polished);
-        if (polish.improved && polished.report.certificate.worst() < sol.report.certificate.worst()) {
-          sol = std::move(polished);
-          sol.report.polished = true;
-          sol.report.message += "; " + polish_summary(polish);
-        }
-        sol.report.time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - polish_start).count();
-      }
-      if (sol.report.status != SolveStatus::converged && outcome.success)
-        sol.report.message += " (backend reported success but the certificate " +
-                              format_number(sol.report.certificate.worst()) + " exceeds the tolerance)";
+      finish_backend_point(backend, outcome, qp, solver.certificate_tol, sol,
+                           [&](const std::vector<double>& x, const std::vector<double>&, NormalSolution& result) {
+                             fill_solution(x, result);
+                           });
     } else {
       sol.report.status = SolveStatus::failed;
     }
-    attempts += (attempts.empty() ? "" : "; ") + backend + ": " + to_string(sol.report.status);
-    tried.push_back({backend, sol.report.status, sol.report.message, sol.report.iterations, sol.report.time_s,
-                     outcome.x.size() == n ? sol.report.certificate.worst() : kInf, outcome.history});
-    const bool better = !have_result || (sol.report.status == SolveStatus::converged) ||
-                        (best.report.status == SolveStatus::failed && sol.report.status != SolveStatus::failed);
-    if (better) {
-      best = std::move(sol);
-      best_index = k;
-      have_result = true;
-    }
-    if (best.report.status == SolveStatus::converged) break;
+    ledger.record(std::move(sol), has_point, outcome.history);
   }
-  for (std::size_t k = 0; k < tried.size(); ++k)
-    if (k != best_index) best.report.failed_attempts.push_back(std::move(tried[k]));
-  if (best.report.fallback_used || best.report.status != SolveStatus::converged)
-    best.report.message += " [tried " + attempts + "]";
+  NormalSolution best = std::move(ledger).finish();
   if (best.report.status == SolveStatus::converged) warm_start_ = best.pressure;
   return best;
 }

@@ -13,6 +13,7 @@
 #include "anderson_mixing.hpp"
 #include "support_window.hpp"
 #include "backend_choice.hpp"
+#include "certified_solve.hpp"
 #include "errors.hpp"
 #include "fault_injection.hpp"
 #include "proportional_predictor.hpp"
@@ -332,13 +333,11 @@ struct TangentialProblem::Impl {
     }
     if (std::all_of(f.begin(), f.end(), [](double b) { return b <= 0.0; })) return frictionless(given_increment, modes, solver);
 
-    InnerResult best;
-    best.report.requested = solver.backend;
-    best.report.operator_kind = sparse ? "sparse+" + sparse->halfspace->kind() : Ct->kind();
-    bool have_result = false;
-    std::string attempts;
-    std::vector<FailedAttempt> tried;  // every attempt, for the report of those not kept
-    std::size_t best_index = 0;
+    InnerResult first;
+    first.report.requested = solver.backend;
+    first.report.operator_kind = sparse ? "sparse+" + sparse->halfspace->kind() : Ct->kind();
+    first.increment = given_increment;
+    AttemptLedger<InnerResult> ledger(first);
     // The condensed program: the same program with the body's rows eliminated (Q the condensed
     // compliance, no block); the program itself when it has no block (no copy).
     ScaledOperator condensed_q(*Ct, 1.0 / ct0);
@@ -381,8 +380,8 @@ struct TangentialProblem::Impl {
       const bool certified = rep.certificate.worst() <= solver.certificate_tol;
       rep.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
     };
-    // One backend on a program (the sparse form's or the condensed one), certified; `best` keeps
-    // the first certified result, else the best certificate.
+    // One backend on a program (the sparse form's or the condensed one), certified; the ledger
+    // keeps the first certified result, else the best certificate.
     const auto attempt = [&](const std::string& backend, const QuadraticProgram& program, bool fallback,
                              const std::string& label) {
       const TimedOutcome run =
@@ -390,9 +389,8 @@ struct TangentialProblem::Impl {
             return solve_tangential_native(q, o, native_work);
           });
       const SolveOutcome& out = run.outcome;
-      InnerResult trial;
+      InnerResult trial = first;
       SolverReport& rep = trial.report;
-      rep = best.report;
       rep.operator_kind = program.block ? "sparse+" + sparse->halfspace->kind() : Ct->kind();
       rep.backend = label;
       rep.fallback_used = fallback;
@@ -402,70 +400,30 @@ struct TangentialProblem::Impl {
       rep.time_s = run.time_s;
       rep.objective = out.objective * ct0 * f_ref * f_ref * A;
       rep.status = SolveStatus::failed;
-      trial.increment = given_increment;
-      if (out.x.size() == nw) {
+      const bool has_point = out.x.size() == nw;
+      if (has_point) {
         certify_point(out.x, out.equality_multipliers, trial);
-        // An interior point leaves elements of tiny slip inside their disks by about mu /
-        // (their multiplier): the friction law's residual ~ sqrt(mu), above the tolerance
-        // where Ipopt's own test has passed. That point finished by the active-set polish on the
-        // condensed program (as NLopt's are), kept when its certificate is the better one; a
-        // point Ipopt did not finish goes to the fallbacks as it is.
-        if (backend == "ipopt" && out.success && rep.status != SolveStatus::converged) {
-          const auto polish_start = std::chrono::steady_clock::now();
-          std::vector<double> x = out.x, multipliers = out.equality_multipliers;
-          // The program's KKT residual is the friction law's (the same compliance ct0 and level
-          // f_ref): polished to a hundredth of the tolerance, not to round-off (each set's solves
-          // cost some hundred applies, each a pair of triangular solves on a finite body).
-          const PolishResult polish =
-              polish_on_active_set(condensed, x, multipliers, 1e-2 * solver.certificate_tol);
-          InnerResult polished;
-          polished.report = rep;
-          if (polish.improved) certify_point(x, multipliers, polished);
-          if (polish.improved && polished.report.certificate.worst() < rep.certificate.worst()) {
-            trial = std::move(polished);
-            rep.polished = true;
-            rep.objective = condensed.objective(x.data()) * ct0 * f_ref * f_ref * A;
-            rep.message += "; " + polish_summary(polish);
-          }
-          rep.time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - polish_start).count();
-        }
-        if (rep.status != SolveStatus::converged && out.success)
-          rep.message += " (backend reported success but the certificate " +
-                         format_number(rep.certificate.worst()) + " exceeds the tolerance)";
+        // Polished on the condensed program: its KKT residual is the friction law's (the same
+        // compliance ct0 and level f_ref); each active set's solves cost some hundred applies,
+        // each a pair of triangular solves on a finite body.
+        const auto polished = finish_backend_point(backend, out, condensed, solver.certificate_tol, trial, certify_point);
+        if (polished) rep.objective = condensed.objective(polished->data()) * ct0 * f_ref * f_ref * A;
       }
-      attempts += (attempts.empty() ? "" : "; ") + label + ": " + to_string(rep.status);
-      tried.push_back({label, rep.status, rep.message, rep.iterations, rep.time_s,
-                       out.x.size() == nw ? rep.certificate.worst() : kInf, out.history});
-      const bool better = !have_result || rep.status == SolveStatus::converged ||
-                          (best.report.status == SolveStatus::failed && rep.status != SolveStatus::failed) ||
-                          (rep.status == SolveStatus::not_converged &&
-                           rep.certificate.worst() < best.report.certificate.worst());
-      if (better) {
-        best = std::move(trial);
-        best_index = tried.size() - 1;
-        have_result = true;
-      }
+      ledger.record(std::move(trial), has_point, out.history);
     };
     const auto order = sparse ? sparse->backends(solver.backend, solver.fallback) : backend_order(solver.backend, native_first || native_first_always ? std::numeric_limits<std::size_t>::max() : n,
                       solver.fallback);
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      attempt(order[k], qp, k > 0, order[k]);
-      if (best.report.status == SolveStatus::converged) break;
-    }
+    for (std::size_t k = 0; k < order.size() && !ledger.converged(); ++k) attempt(order[k], qp, k > 0, order[k]);
     // The sparse form failed with `auto`: the same program with the body's rows eliminated (Q the
     // condensed compliance, no block), as for the normal problem (FiniteContact::solve_sparse).
-    if (sparse && sparse->condensed_fallback && best.report.status != SolveStatus::converged &&
-        solver.backend == "auto" && solver.fallback) {
+    if (sparse && sparse->condensed_fallback && !ledger.converged() && solver.backend == "auto" && solver.fallback) {
       for (const char* backend : {"native", "nlopt"}) {
         attempt(backend, condensed, true, std::string(backend) + " (condensed program)");
-        if (best.report.status == SolveStatus::converged) break;
+        if (ledger.converged()) break;
       }
     }
+    InnerResult best = std::move(ledger).finish();
     if (best.tau.empty()) best.tau.assign(n, 0.0);  // every backend failed: nothing to keep
-    for (std::size_t k = 0; k < tried.size(); ++k)
-      if (k != best_index) best.report.failed_attempts.push_back(std::move(tried[k]));
-    if (best.report.fallback_used || best.report.status != SolveStatus::converged)
-      best.report.message += " [tried " + attempts + "]";
     return best;
   }
 

@@ -5,6 +5,7 @@
 
 #include "backend_choice.hpp"
 #include "body_compliance.hpp"
+#include "certified_solve.hpp"
 #include "errors.hpp"
 #include "saddle_form.hpp"
 #include "gmsh_mesher.hpp"
@@ -67,31 +68,24 @@ NormalSolution FiniteContact::solve_sparse(const std::vector<double>& h, const N
                                            const SolverSpec& solver, const ProgressCallback& progress,
                                            Eigen::VectorXd& body_displacement) {
   // The backends of saddle_backend_order in turn: the first result the condensed program's
-  // certificate accepts, else the best.
-  NormalSolution best;
-  std::string attempts;
+  // certificate accepts, else the best (one rule: certified_solve.hpp).
+  NormalSolution first;
+  first.report.requested = solver.backend;
+  AttemptLedger<NormalSolution> ledger(first);
+  Eigen::VectorXd kept_displacement;
   const std::vector<std::string> order = saddle_backend_order(solver.backend);
-  for (std::size_t k = 0; k < order.size(); ++k) {
+  for (std::size_t k = 0; k < order.size() && !ledger.converged(); ++k) {
     Eigen::VectorXd u;
     NormalSolution sol = solve_sparse_by(order[k], h, control, solver, progress, u);
     sol.report.fallback_used = k > 0;
-    attempts += (attempts.empty() ? "" : "; ") + order[k] + ": " + to_string(sol.report.status);
-    const bool better = k == 0 || sol.report.status == SolveStatus::converged ||
-                        (best.report.status == SolveStatus::failed && sol.report.status != SolveStatus::failed) ||
-                        (sol.report.status == SolveStatus::not_converged &&
-                         sol.report.certificate.worst() < best.report.certificate.worst());
-    if (better) {
-      best = std::move(sol);
-      body_displacement = std::move(u);
-    }
-    if (best.report.status == SolveStatus::converged) break;
+    const bool has_point = !sol.pressure.empty();
+    if (ledger.record(std::move(sol), has_point)) kept_displacement = std::move(u);
   }
   // Ipopt failed on the sparse form: NLopt on the condensed program, the same minimax with the
   // body's rows eliminated by the kept factor (NLopt cannot take the rows themselves: with them
   // held densely it did not converge). Small bodies only: each NLopt evaluation costs a pair of
   // triangular solves, and NLopt takes hundreds.
-  if (best.report.status != SolveStatus::converged && solver.backend == "auto" && solver.fallback &&
-      body_->dofs() <= kSaddleFallbackDofs) {
+  if (!ledger.converged() && solver.backend == "auto" && solver.fallback && body_->dofs() <= kSaddleFallbackDofs) {
     normal_->set_heights(h);
     SolverSpec nlopt = solver;
     nlopt.backend = "nlopt";
@@ -99,15 +93,13 @@ NormalSolution FiniteContact::solve_sparse(const std::vector<double>& h, const N
     NormalSolution sol = normal_->solve(control, nlopt, progress);
     sol.report.fallback_used = true;
     sol.report.backend = "nlopt (condensed program)";
-    attempts += std::string("; nlopt on the condensed program: ") + to_string(sol.report.status);
-    if (sol.report.status == SolveStatus::converged || best.report.status == SolveStatus::failed) {
-      body_normal_->displacement(sol.pressure.data(), body_displacement);
-      best = std::move(sol);
-    }
+    const bool has_point = sol.report.status != SolveStatus::failed;
+    Eigen::VectorXd u;
+    if (has_point) body_normal_->displacement(sol.pressure.data(), u);
+    if (ledger.record(std::move(sol), has_point)) kept_displacement = std::move(u);
   }
-  if (best.report.fallback_used || best.report.status != SolveStatus::converged)
-    best.report.message += " [tried " + attempts + "]";
-  return best;
+  body_displacement = std::move(kept_displacement);
+  return std::move(ledger).finish();
 }
 
 NormalSolution FiniteContact::solve_sparse_by(const std::string& backend, const std::vector<double>& h,
