@@ -107,6 +107,13 @@ class TangentialProblem {
   TangentialProblem(const Grid& grid, std::shared_ptr<const LinearOperator> normal_compliance,
                     std::shared_ptr<const LinearOperator> tangential_compliance, std::vector<double> heights,
                     FrictionLaw friction);
+  /// Movable, not copyable: a problem holds one loading history (a copy sharing it would
+  /// silently step both).
+  TangentialProblem(const TangentialProblem&) = delete;
+  TangentialProblem& operator=(const TangentialProblem&) = delete;
+  TangentialProblem(TangentialProblem&&) noexcept = default;
+  TangentialProblem& operator=(TangentialProblem&&) noexcept = default;
+  ~TangentialProblem() = default;
 
   /// One quasi-static step (shift/torsion/loading history).
   TangentialSolution step(const TangentialLoad& load, const SolverSpec& solver,
