@@ -9,8 +9,6 @@
 #include <system_error>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "cli_common.hpp"
 #include "errors.hpp"
 #include "output_files.hpp"
@@ -110,13 +108,6 @@ std::string prepare_output_dir(const Case& c, const std::string& cli_out) {
   static std::vector<std::unique_ptr<OutputFolderLock>> held;  // released when the process ends
   held.push_back(std::move(folder.lock));
   return folder.dir;
-}
-
-const CLI::Validator& non_empty_folder() {
-  static const CLI::Validator v(
-      [](const std::string& s) { return s.empty() ? std::string("an empty folder name (omit --out for out/<name>)") : std::string(); },
-      "FOLDER");
-  return v;
 }
 
 void not_implemented(ProblemKind kind) {

@@ -8,10 +8,6 @@
 #include "case_model.hpp"
 #include "output_lock.hpp"
 
-namespace CLI {
-class Validator;
-}
-
 namespace dc::cli {
 
 inline constexpr int kExitOk = 0;
@@ -46,9 +42,6 @@ OutputFolder open_output_folder(const Case& c, const std::string& cli_out, const
 
 /// open_output_folder for the command line: the folder stays locked until the process ends.
 std::string prepare_output_dir(const Case& c, const std::string& cli_out);
-
-/// --out: a folder name, not empty.
-const CLI::Validator& non_empty_folder();
 
 /// Message for the problem kinds that have no solver in this build.
 [[noreturn]] void not_implemented(ProblemKind kind);

@@ -4,6 +4,7 @@
 // (InputError: bad input, exit 2; anything else: internal, exit 4) and handled in main().
 namespace CLI {
 class App;
+class Validator;
 }
 
 namespace dc::cli {
@@ -13,5 +14,8 @@ void add_compare_command(CLI::App& app, int& exit_code);
 void add_validate_command(CLI::App& app, int& exit_code);
 void add_example_command(CLI::App& app, int& exit_code);
 void add_table_command(CLI::App& app, int& exit_code);
+
+/// --out: a folder name, not empty.
+const CLI::Validator& non_empty_folder();
 
 }  // namespace dc::cli
