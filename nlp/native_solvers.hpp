@@ -1,5 +1,6 @@
 #pragma once
 // Native specialist solvers on matrix-free (FFT) operators: the fast path for large grids.
+#include <memory>
 #include <vector>
 
 #include "normal_preconditioner.hpp"
@@ -33,5 +34,27 @@ std::vector<double> normal_start(const QuadraticProgram& qp, const NormalQpForm&
 /// x = the total of force control spread evenly over the free elements in the lowest tenth of
 /// the gap's range (c), 0 elsewhere.
 void load_lowest_elements(const QuadraticProgram& qp, const NormalQpForm& form, std::vector<double>& x);
+
+/// The native tangential solver (cone-projected accelerated gradient on the FFT operator):
+/// min 1/2 x'Qx + c'x over disks (3-D) or boxes (2-D), with up to three equality rows.
+SolveOutcome solve_tangential_native(const QuadraticProgram& qp, const SolveOptions& options);
+
+/// The native solver's work storage kept between solves by a caller that solves many programs
+/// of one size (a load history: hundreds): vectors of 2N doubles reused, not reallocated.
+class NativeTangentialWorkspace {
+ public:
+  NativeTangentialWorkspace();
+  ~NativeTangentialWorkspace();
+  NativeTangentialWorkspace(NativeTangentialWorkspace&&) noexcept;
+  NativeTangentialWorkspace& operator=(NativeTangentialWorkspace&&) noexcept;
+  struct Storage;
+
+ private:
+  std::unique_ptr<Storage> storage_;
+  friend SolveOutcome solve_tangential_native(const QuadraticProgram&, const SolveOptions&, NativeTangentialWorkspace&);
+};
+/// The same with the caller's workspace (the result does not depend on what it held).
+SolveOutcome solve_tangential_native(const QuadraticProgram& qp, const SolveOptions& options,
+                                     NativeTangentialWorkspace& workspace);
 
 }  // namespace dc

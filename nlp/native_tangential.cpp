@@ -43,6 +43,7 @@
 
 #include "tangential_problem.hpp"
 #include "interrupt.hpp"
+#include "native_solvers.hpp"
 #include "vector_ops.hpp"
 
 namespace dc {

@@ -16,6 +16,7 @@
 #include "certified_solve.hpp"
 #include "errors.hpp"
 #include "fault_injection.hpp"
+#include "native_solvers.hpp"
 #include "proportional_predictor.hpp"
 #include "scaled_operator.hpp"
 #include "sparse_block.hpp"

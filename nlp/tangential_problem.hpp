@@ -215,26 +215,4 @@ TangentialProblem make_tangential_problem(const Case& c);
 /// with none finished, Interrupted propagates.
 std::vector<TangentialSolution> solve_tangential_case(const Case& c, const ProgressCallback& progress = {});
 
-/// The native tangential solver (cone-projected accelerated gradient on the FFT operator):
-/// min 1/2 x'Qx + c'x over disks (3-D) or boxes (2-D), with up to three equality rows.
-SolveOutcome solve_tangential_native(const QuadraticProgram& qp, const SolveOptions& options);
-
-/// The native solver's work storage kept between solves by a caller that solves many programs
-/// of one size (a load history: hundreds): vectors of 2N doubles reused, not reallocated.
-class NativeTangentialWorkspace {
- public:
-  NativeTangentialWorkspace();
-  ~NativeTangentialWorkspace();
-  NativeTangentialWorkspace(NativeTangentialWorkspace&&) noexcept;
-  NativeTangentialWorkspace& operator=(NativeTangentialWorkspace&&) noexcept;
-  struct Storage;
-
- private:
-  std::unique_ptr<Storage> storage_;
-  friend SolveOutcome solve_tangential_native(const QuadraticProgram&, const SolveOptions&, NativeTangentialWorkspace&);
-};
-/// The same with the caller's workspace (the result does not depend on what it held).
-SolveOutcome solve_tangential_native(const QuadraticProgram& qp, const SolveOptions& options,
-                                     NativeTangentialWorkspace& workspace);
-
 }  // namespace dc

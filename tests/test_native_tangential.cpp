@@ -19,6 +19,7 @@
 #include "grid.hpp"
 #include "linear_operator.hpp"
 #include "material.hpp"
+#include "native_solvers.hpp"
 #include "quadratic_program.hpp"
 #include "tangential_preconditioner.hpp"
 #include "tangential_problem.hpp"
