@@ -1,0 +1,145 @@
+// TangentialProblem::Impl: steady rolling (2.19), solved directly by Newton's method inside the
+// outer loop (steady_rolling_solver.hpp), and rolling by marching in time, each step one program
+// (3.8)/(4.4)-(4.6) with the previous displacement taken upstream ((2.14), B* of (4.6)).
+#include <algorithm>
+#include <chrono>
+#include <string>
+
+#include "backend_choice.hpp"
+#include "errors.hpp"
+#include "steady_rolling_solver.hpp"
+#include "tangential_problem_impl.hpp"
+
+namespace dc {
+
+using tangential_internal::relative_change;
+
+/// Steady rolling solved directly (steady_rolling_solver.hpp) inside the outer loop; the
+/// slip per step of travel dx is ds = dx v_rigid + (C - S C) tau (+ kappa (B21 - S B21) p).
+/// Empty when Newton's method gives up (the caller then marches).
+std::optional<TangentialSolution> TangentialProblem::Impl::steady_rolling_direct(
+    const RollingLoad& load, const std::array<double, 3>& given_increment, const SolverSpec& solver,
+    const ProgressCallback& progress, std::string& why_not) {
+  if (!D_conv) D_conv = half_space->tangential_convective(1, kind);
+  if (coupled && !B21_up) B21_up = half_space->tangential_from_normal_shifted(1, 0, kind);
+  const std::size_t n = comps * N;
+  SteadyRollingProgram program;
+  program.D = D_conv.get();
+  program.comps = comps;
+  program.area = grid.area();
+  std::vector<int> unknown_modes;
+  for (int k = 0; k < n_modes(); ++k) {
+    if (load.modes[k].kind != ModeControl::Kind::resultant) continue;
+    std::vector<double> m(n);
+    for (std::size_t e = 0; e < N; ++e)
+      for (int c = 0; c < comps; ++c) m[c * N + e] = mode(k, e, c);
+    program.modes.push_back(std::move(m));
+    program.resultants.push_back(load.modes[k].value);
+    unknown_modes.push_back(k);
+  }
+  SolveOptions options = solve_options(solver, progress);
+  options.max_iter = std::min(solver.max_iter, 200);
+  TangentialSolution sol;
+  std::vector<double> tau = load.warm_start.size() == n ? load.warm_start : std::vector<double>(n, 0.0);
+  std::vector<double> f, w_up, w_here;
+  SteadyRollingOutcome outcome;
+  int newton = 0, applies = 0;
+  const auto start = std::chrono::steady_clock::now();
+  const bool ok = outer_loop(
+      sol, load.normal, solver, tau, f, false,
+      [&](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t, const SolverSpec&) {
+        program.b.assign(n, 0.0);
+        for (std::size_t e = 0; e < N; ++e)
+          for (int c = 0; c < comps; ++c)
+            for (int k = 0; k < n_modes(); ++k) program.b[c * N + e] += given_increment[k] * mode(k, e, c);
+        if (coupled) {
+          B21->apply(p, w_here);
+          B21_up->apply(p, w_up);
+          for (std::size_t i = 0; i < n; ++i) program.b[i] += w_here[i] - w_up[i];
+        }
+        check_resultants(bound, load.modes);
+        if (std::all_of(bound.begin(), bound.end(), [](double b) { return b <= 0.0; })) {
+          outcome.message = "no friction (f(p) = 0 over the whole contact)";
+          return false;
+        }
+        program.bound = bound;
+        program.tau0 = t;
+        outcome = solve_steady_rolling(program, options);
+        newton += outcome.newton_iterations;
+        applies += outcome.operator_applies;
+        if (!outcome.success) return false;
+        t = outcome.tau;
+        return true;
+      });
+  if (!ok) {
+    why_not = outcome.message;
+    return std::nullopt;
+  }
+  std::array<double, 3> amplitudes = given_increment;
+  for (std::size_t r = 0; r < unknown_modes.size(); ++r) amplitudes[unknown_modes[r]] = outcome.amplitudes[r];
+  std::vector<double> ds;
+  D_conv->apply(tau, ds);
+  for (std::size_t i = 0; i < n; ++i) ds[i] += program.b[i];
+  for (std::size_t r = 0; r < program.modes.size(); ++r)
+    for (std::size_t i = 0; i < n; ++i) ds[i] += outcome.amplitudes[r] * program.modes[r][i];
+  sol.report.requested = solver.backend;
+  sol.report.backend = "native";
+  sol.report.operator_kind = D_conv->kind();
+  sol.report.status = SolveStatus::converged;
+  sol.report.iterations = applies;
+  sol.newton_iterations = newton;
+  sol.report.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  sol.report.message = "steady rolling by Newton: " + std::to_string(newton) + " iterations, " +
+                       std::to_string(applies) + " operator applies";
+  finish(sol, tau, ds, f, load.modes, solver);
+  tau_prev = tau;
+  p_prev = sol.normal.pressure;
+  sol.amplitudes = amplitudes;
+  return sol;
+}
+
+/// Rolling in +x from the current state: up to `max_steps` marching steps of dx (dt = dx / V).
+/// Each step is one program (3.8)/(4.4)-(4.6): the convective term dt (V . grad)(u+ - u-) of
+/// (2.14) is the difference between the displacement here and the previous one taken at the
+/// upstream material point (B* of (4.6) through Ct_up, the kappa term of (4.5) through B21_up).
+/// Stops after a step that changes tau by less than `steady_tol` (0: never), or fails. The
+/// total rigid slip accumulates in amplitude_prev.
+TangentialProblem::Impl::March TangentialProblem::Impl::march(const RollingLoad& load, int max_steps, double steady_tol,
+                                                       const SolverSpec& solver, const ProgressCallback& progress) {
+  if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
+  // Rolling in +x: the material now at x was at x + dx one step (dt = dx / V) earlier.
+  if (!Ct_up) {
+    Ct_up = half_space->tangential_shifted(1, 0, kind);
+    if (coupled) B21_up = half_space->tangential_from_normal_shifted(1, 0, kind);
+  }
+  // Per step the rigid slip is v dt = dx (creepage - phi y, eta + phi x): increments dx * mode.
+  std::array<double, 3> increment{};
+  for (int k = 0; k < 3; ++k)
+    if (load.modes[k].kind == ModeControl::Kind::amplitude) increment[k] = grid.dx * load.modes[k].value;
+  // auto: every step is one warm-started program, where the native solver is much the
+  // fastest at any size (the others remain its fallbacks).
+  const SolverSpec& step_solver = solver;
+  native_first = true;
+  struct Restore {
+    bool& flag;
+    ~Restore() { flag = false; }
+  } restore{native_first};
+  March m;
+  for (m.steps = 1; m.steps <= max_steps; ++m.steps) {
+    const std::vector<double> input = tau_prev;
+    m.sol = solve_step(load.normal, load.modes, increment, {1.0, 0.0}, step_solver, {});
+    if (m.sol.report.status != SolveStatus::converged && m.first_unconverged == 0) m.first_unconverged = m.steps;
+    if (m.sol.report.status == SolveStatus::failed) break;
+    for (int k = 0; k < 3; ++k) amplitude_prev[k] += m.sol.amplitudes[k];
+    const double change = relative_change(tau_prev, input);
+    if (progress) progress({m.steps, 0.0, change, steady_tol});
+    if (steady_tol > 0.0 && m.steps > 1 && change < steady_tol) {
+      m.steady = true;
+      break;
+    }
+  }
+  m.steps = std::min(m.steps, max_steps);
+  return m;
+}
+
+}  // namespace dc
