@@ -9,8 +9,10 @@
 #endif
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -22,15 +24,32 @@
 namespace dc::cli {
 namespace {
 
-bool g_warned_missing = false;
+// Said once per process, by whichever thread draws first.
+std::atomic<bool> warned_missing_gnuplot{false};
+
+/// The executable `name` in a folder of PATH, or "" when there is none.
+std::string program_on_path(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::stringstream folders(path != nullptr ? path : "/usr/bin:/bin");
+  for (std::string folder; std::getline(folders, folder, ':');) {
+    const std::string candidate = (folder.empty() ? std::string(".") : folder) + "/" + name;
+    if (access(candidate.c_str(), X_OK) == 0) return candidate;
+  }
+  return "";
+}
 
 /// Starts `gnuplot -e "terminal_set='<set>'; output_prefix='<prefix>'" plots.gp` in `dir` (the
 /// script draws that set of images only, each to its temporary name), its output appended to
-/// dir/plots.log. Returns the child's pid (-1: no fork).
+/// dir/plots.log. Returns the child's pid (-1: no gnuplot on PATH, or no fork).
 pid_t start_gnuplot(const std::string& dir, const std::string& set) {
+  // Everything the child needs is made before the fork: the process may have threads, so the
+  // child calls only async-signal-safe functions (no allocation, no PATH search) until execv.
+  const std::string gnuplot = program_on_path("gnuplot");
+  if (gnuplot.empty()) return -1;
   std::cout.flush();
   std::cerr.flush();
   const std::string select = "terminal_set='" + set + "'; output_prefix='" + partial_name_prefix() + "'";
+  const char* const argv[] = {"gnuplot", "-e", select.c_str(), "plots.gp", nullptr};
   const pid_t pid = fork();
   if (pid != 0) return pid;
   unblock_interrupt_signals();  // gnuplot stops on a signal as any program
@@ -46,7 +65,7 @@ pid_t start_gnuplot(const std::string& dir, const std::string& set) {
   }
   const int null_in = open("/dev/null", O_RDONLY);
   if (null_in >= 0) dup2(null_in, STDIN_FILENO);
-  execlp("gnuplot", "gnuplot", "-e", select.c_str(), "plots.gp", static_cast<char*>(nullptr));
+  execv(gnuplot.c_str(), const_cast<char* const*>(argv));
   _exit(127);
 }
 
@@ -124,9 +143,8 @@ std::vector<std::string> render_gnuplot(const std::string& dir, const std::strin
   // 127 (no gnuplot) only when neither could start; one failed fork is a failure of its set.
   if (svg_status == 127 && png_status == 127) {
     remove_partials();
-    if (!g_warned_missing)
+    if (!warned_missing_gnuplot.exchange(true))
       std::cerr << "warning: gnuplot not found: no plots (the script and data are in " << dir << "/plots.gp)\n";
-    g_warned_missing = true;
     return {};
   }
   // Every image checked before any is reported: gnuplot's status, then the file itself.
