@@ -5,9 +5,10 @@
 #
 # `cmake --install build --prefix P` installs
 #   P/lib/libdyncontact_{core,nlp,dynamics}.a   (shared with -DBUILD_SHARED_LIBS=ON)
-#   P/lib/libdyncontact_{fe,finite}.a           (with DYNCONTACT_WITH_FE: finite-element bodies)
+#   P/lib/libdyncontact_{fe,finite,finite_dynamics}.a  (with DYNCONTACT_WITH_FE: finite-element bodies)
 #   P/lib/dyncontact/libdyncontact_gmsh.so      (the Gmsh plugin, loaded when a body is meshed)
-#   P/include/dyncontact/*.hpp                  (flat: #include "normal_problem.hpp")
+#   P/include/dyncontact/LAYER/*.hpp            (by layer: #include <dyncontact/nlp/normal_problem.hpp>;
+#                                                core, nlp, dynamics, core/fe, nlp/finite, dynamics/finite)
 #   P/bin/dyncontact                            (install rule in apps/CMakeLists.txt)
 #   P/lib/cmake/dyncontact/                     (config, version, targets, find modules)
 #
@@ -27,19 +28,24 @@ set(DYNCONTACT_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/dyncontact
     CACHE STRING "Where the dyncontact CMake package files are installed (relative to the prefix)")
 mark_as_advanced(DYNCONTACT_INSTALL_CMAKEDIR)
 
+# Each library with the folder its headers are installed in (by layer: include/dyncontact/nlp/...).
 set(_dyncontact_libraries dyncontact_core dyncontact_nlp dyncontact_dynamics)
+set(_dyncontact_header_dirs core nlp dynamics)
 set(_dyncontact_find_modules ${CMAKE_CURRENT_LIST_DIR}/FindFFTW3.cmake ${CMAKE_CURRENT_LIST_DIR}/FindIpopt.cmake)
-if(DYNCONTACT_WITH_FE)  # finite-element bodies: dyncontact_fe (CHOLMOD; Gmsh as a plugin) and dyncontact_finite
-  list(APPEND _dyncontact_libraries dyncontact_fe dyncontact_finite)
+if(DYNCONTACT_WITH_FE)  # finite-element bodies: dyncontact_fe (CHOLMOD; Gmsh as a plugin), dyncontact_finite and its dynamics
+  list(APPEND _dyncontact_libraries dyncontact_fe dyncontact_finite dyncontact_finite_dynamics)
+  list(APPEND _dyncontact_header_dirs core/fe nlp/finite dynamics/finite)
   list(APPEND _dyncontact_find_modules ${CMAKE_CURRENT_LIST_DIR}/FindCHOLMOD.cmake)
 endif()
 
-install(TARGETS ${_dyncontact_libraries}
-  EXPORT dyncontactTargets
-  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
-  PUBLIC_HEADER DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dyncontact)
+foreach(_dyncontact_library _dyncontact_header_dir IN ZIP_LISTS _dyncontact_libraries _dyncontact_header_dirs)
+  install(TARGETS ${_dyncontact_library}
+    EXPORT dyncontactTargets
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+    PUBLIC_HEADER DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dyncontact/${_dyncontact_header_dir})
+endforeach()
 # (The include directory comes from each target's $<INSTALL_INTERFACE:...> entry.)
 
 install(EXPORT dyncontactTargets

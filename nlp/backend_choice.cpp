@@ -44,11 +44,11 @@ TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp,
   const Fault fault = injected_fault(backend);
   try {
     if (fault == Fault::fail) {
-      out.message = backend + ": failure injected (DYNCONTACT_FAULT)";
+      out.message = backend + ": failure injected (a test's fault source)";
     } else if (fault == Fault::stall) {  // no progress from the start
       out.x = qp.x0.size() == static_cast<std::size_t>(qp.n()) ? qp.x0 : std::vector<double>(qp.c.size(), 0.0);
       out.equality_multipliers.assign(qp.equalities.size(), 0.0);
-      out.message = backend + ": stall injected (DYNCONTACT_FAULT)";
+      out.message = backend + ": stall injected (a test's fault source)";
     } else if (backend == "native") {
       if (qp.block) throw std::invalid_argument("the native solvers take no sparse rows");
       out = native(qp, options);

@@ -1,19 +1,23 @@
 #pragma once
-// Test-only fault injection: makes a backend fail, stall or return NaN, or an outer loop stall,
-// so that tests can show what the program does then (fallback, clear messages, exit 3, no NaN
-// in any output file). Read from the environment variable DYNCONTACT_FAULT, e.g.
-//   DYNCONTACT_FAULT="ipopt:fail,native:nan,outer:stall"
-// targets: ipopt | nlopt | native | outer; kinds: fail | stall | nan; KIND@N applies to the N-th
-// query of the target only (e.g. outer:stall@2: the second step's outer loop). Not for users: unset, it
-// changes nothing; a malformed value is ignored with one warning on stderr.
+// Fault injection for tests: a backend made to fail, stall or return NaN, or an outer loop made
+// to stall, so that tests can show what the library and the program do then (fallback, clear
+// messages, exit 3, no NaN in any output file). The library only asks; it never reads the
+// environment. A test build installs a source (tests/support/fault_from_environment.hpp reads
+// DYNCONTACT_FAULT); without one, injected_fault is always Fault::none.
 #include <string>
 
 namespace dc {
 
 enum class Fault { none, fail, stall, nan };
 
-/// The fault injected into `target` (a backend name or "outer"), from DYNCONTACT_FAULT (parsed
-/// again when its value changes).
+/// The fault for `target` ("ipopt", "nlopt", "native" or "outer"), asked once per backend run or
+/// outer loop.
+using FaultSource = Fault (*)(const std::string& target);
+
+/// Installs `source` for the whole process (nullptr: none). Tests only.
+void set_fault_source(FaultSource source);
+
+/// The fault injected into `target`: Fault::none unless a test installed a source.
 Fault injected_fault(const std::string& target);
 
 }  // namespace dc

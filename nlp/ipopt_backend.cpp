@@ -20,11 +20,10 @@
 #include <IpSolveStatistics.hpp>
 #include <IpTNLP.hpp>
 
-#include "freed_memory_kept.hpp"
 #include "ipopt_shared.hpp"
-#include "mumps_ordering_hook.hpp"
 #include "quadratic_program.hpp"
 #include "sparse_block.hpp"
+#include "sparse_factorisation_hooks.hpp"
 #include "interrupt.hpp"
 
 namespace dc {
@@ -313,15 +312,12 @@ SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& op
   try {
     // One Ipopt application at a time (threaded tables); the lock outlives the application.
     const std::lock_guard<std::mutex> lock(ipopt_mutex());
-    // The finite body's saddle form: MUMPS's workspace, allocated afresh at every factorisation,
-    // reuses the pages the previous one touched (freed_memory_kept.hpp); given back after the
-    // application (declared after this guard) is gone.
-    std::optional<FreedMemoryKept> kept;
-    if (qp.block) kept.emplace();
-    // ... and MUMPS takes our ordering of its KKT matrix (mumps_ordering_hook.hpp: METIS's
-    // nested dissection; mumps_pivot_order below is what MUMPS does where the hook is not taken).
-    std::optional<MumpsOrderedByUs> ordered;
-    if (qp.block) ordered.emplace();
+    // The finite body's saddle form: the program's tuning of MUMPS's factorisations, if it
+    // installed one (sparse_factorisation_hooks.hpp: METIS's ordering, the freed memory kept;
+    // mumps_pivot_order below is what MUMPS does without it), left after the application
+    // (declared after this guard) is gone.
+    std::optional<SparseFactorisationScope> tuned;
+    if (qp.block) tuned.emplace();
     if (options.hessian != "auto" && options.hessian != "exact" && options.hessian != "limited-memory") {
       out.message = "Ipopt: unknown hessian option '" + options.hessian + "'";
       return out;

@@ -61,9 +61,37 @@ foreach(f dyncontactConfigVersion.cmake dyncontactTargets.cmake FindFFTW3.cmake 
     message(FATAL_ERROR "install_consumer: ${config_dir}/${f} not installed")
   endif()
 endforeach()
-foreach(h grid.hpp material.hpp profile.hpp hertz.hpp normal_problem.hpp)
+foreach(h core/grid.hpp core/material.hpp core/profile.hpp core/hertz.hpp nlp/normal_problem.hpp
+          dynamics/dynamic_simulation.hpp)
   if(NOT EXISTS ${prefix}/include/dyncontact/${h})
     message(FATAL_ERROR "install_consumer: header ${prefix}/include/dyncontact/${h} not installed")
+  endif()
+endforeach()
+
+# The installed libraries leave the process alone: no definition of MUMPS's dmumps_c, no
+# mallopt (both are the program's, nlp/process_tuning/), no test-only fault source.
+file(GLOB_RECURSE installed_libraries ${prefix}/lib*/libdyncontact_*)
+find_program(NM_PROGRAM nm)
+foreach(library ${installed_libraries})
+  file(STRINGS ${library} fault_strings REGEX "DYNCONTACT_FAULT")
+  if(fault_strings)
+    message(FATAL_ERROR "install_consumer: ${library} reads DYNCONTACT_FAULT (test-only)")
+  endif()
+  if(NM_PROGRAM)
+    execute_process(COMMAND ${NM_PROGRAM} ${library} OUTPUT_VARIABLE symbols ERROR_QUIET)
+    if(symbols MATCHES "[TW] dmumps_c\n" OR symbols MATCHES "U mallopt\n")
+      message(FATAL_ERROR "install_consumer: ${library} defines dmumps_c or calls mallopt (the program's only)")
+    endif()
+  endif()
+endforeach()
+if(NOT installed_libraries)
+  message(FATAL_ERROR "install_consumer: no libdyncontact_* installed under ${prefix}")
+endif()
+
+# Test-only and internal headers stay in the build tree.
+foreach(h nlp/fault_injection.hpp fault_injection.hpp grid.hpp normal_problem.hpp)
+  if(EXISTS ${prefix}/include/dyncontact/${h})
+    message(FATAL_ERROR "install_consumer: ${prefix}/include/dyncontact/${h} installed (test-only, or not by layer)")
   endif()
 endforeach()
 
@@ -77,7 +105,7 @@ endif()
 # (Gmsh meshes it, CHOLMOD factorises it: nothing else is needed at run time).
 file(STRINGS ${config_file} with_fe REGEX "^set\\(dyncontact_WITH_FE ON\\)")
 if(with_fe)
-  foreach(h finite_contact.hpp elastic_body.hpp)
+  foreach(h nlp/finite/finite_contact.hpp core/fe/elastic_body.hpp dynamics/finite/finite_body_contact.hpp)
     if(NOT EXISTS ${prefix}/include/dyncontact/${h})
       message(FATAL_ERROR "install_consumer: header ${prefix}/include/dyncontact/${h} not installed")
     endif()

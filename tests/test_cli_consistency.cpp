@@ -29,6 +29,7 @@ std::string number(double v) {
 TEST_F(CliConsistency, AHistoryIsAsConvergedAsItsWorstStep) {
   // The second step's kappa loop forced to stall (test-only fault injection): exit 3, and the
   // top-level solver status is that step's, not the last step's "converged".
+  use_program_with_faults();
   json doc = example_json("spence-sphere");
   doc["grid"]["nx"] = doc["grid"]["ny"] = 16;
   doc["output"] = {{"plots", false}};

@@ -1,4 +1,5 @@
-// Forced failures through the program (DYNCONTACT_FAULT, test-only: nlp/fault_injection.hpp):
+// Forced failures through the program (DYNCONTACT_FAULT, read by the test-only program
+// `dyncontact_with_faults`: tests/support/program_with_faults.cpp):
 // `auto` falls back and says so in summary.json; an explicitly requested backend does not; a
 // backend returning NaN is caught and nothing non-finite reaches a file; a non-converging outer
 // loop ends with a clear message, exit 3 and its last iterate written; a broken table file is
@@ -24,6 +25,10 @@ using Result = dc::test::CliResult;
 
 class CliForcedFailures : public dc::test::CliTest {
  protected:
+  void SetUp() override {
+    CliTest::SetUp();
+    use_program_with_faults();
+  }
   void TearDown() override {
     unsetenv("DYNCONTACT_FAULT");
     CliTest::TearDown();
@@ -81,6 +86,20 @@ TEST_F(CliForcedFailures, AutoFallsBackAndSaysSo) {
   EXPECT_EQ(s["solver"]["failed_attempts"][0]["backend"], "native");
   EXPECT_EQ(s["solver"]["failed_attempts"][0]["status"], "failed");
   EXPECT_NE(r.err.find("warning: solver: native: failed"), std::string::npos) << r.err;
+}
+
+TEST_F(CliForcedFailures, TheProgramItselfNeverReadsTheFaultVariable) {
+  // DYNCONTACT_FAULT is the tests' own: `dyncontact` (not the test-only program) solves as if it
+  // were unset, with its first backend and no fallback.
+  const std::string doc = case_file("hertz-sphere", 20);
+  program_ = DYNCONTACT_BINARY;
+  const Result r = run_with_fault("native:fail,ipopt:fail,nlopt:fail", "solve " + doc + " --out o -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json s = summary("o");
+  EXPECT_FALSE(s["solver"]["fallback_used"].get<bool>());
+  EXPECT_EQ(s["solver"]["backend"], "native");
+  EXPECT_EQ(s["solver"]["status"], "converged");
+  EXPECT_EQ(r.err.find("injected"), std::string::npos) << r.err;
 }
 
 TEST_F(CliForcedFailures, NativeSolverThatRunsOutOfIterationsReportsItsHistory) {

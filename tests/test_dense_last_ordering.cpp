@@ -1,4 +1,4 @@
-// dense_last_ordering (nlp/dense_last_ordering.hpp): on a small synthetic KKT pattern (a mesh's
+// dense_last_ordering (nlp/process_tuning/dense_last_ordering.hpp): on a small synthetic KKT pattern (a mesh's
 // graph, a clique over some of its rows as the half-space block, one column touching every mesh
 // row as an inertia-relief column, one well-connected mesh row) the order is a permutation with
 // exactly the column last (its degree above AMD's 10 sqrt(n)); the clique and the

@@ -1,4 +1,5 @@
-// A dynamic run with the native solver failing (DYNCONTACT_FAULT=native:fail, test-only): with
+// A dynamic run with the native solver failing (DYNCONTACT_FAULT=native:fail, read by the tests'
+// fault source: tests/support/fault_from_environment.hpp): with
 // backend "auto" every contact solve falls back to another backend, the run completes, the
 // summary counts the steps that fell back and the backends that solved them, and the motion is
 // the one the native solver gives (both solve the same program to the same certificate).
@@ -12,13 +13,17 @@
 #include "case_model.hpp"
 #include "cli_runner.hpp"
 #include "dynamic_simulation.hpp"
+#include "fault_from_environment.hpp"
 
 namespace dc::dynamics {
 namespace {
 
 /// Sets DYNCONTACT_FAULT for the scope.
 struct Fault {
-  explicit Fault(const char* value) { setenv("DYNCONTACT_FAULT", value, 1); }
+  explicit Fault(const char* value) {
+    dc::test::install_faults_from_environment();
+    setenv("DYNCONTACT_FAULT", value, 1);
+  }
   ~Fault() { unsetenv("DYNCONTACT_FAULT"); }
 };
 
@@ -64,6 +69,7 @@ class CliDynamicFallback : public dc::test::CliTest {};
 
 TEST_F(CliDynamicFallback, SummaryNamesTheBackendsUsed) {
   std::ofstream(dir_ / "case.json") << sliding_ball().dump(2);
+  use_program_with_faults();
   const Fault fault("native:fail");
   const dc::test::CliResult r = run("solve case.json --out out -q");
   ASSERT_EQ(r.code, 0) << r.err;

@@ -1,4 +1,4 @@
-// Forced failures in the library (DYNCONTACT_FAULT, test-only: nlp/fault_injection.hpp): `auto`
+// Forced failures in the library (DYNCONTACT_FAULT: tests/support/fault_from_environment.hpp): `auto`
 // falls back past a failing, stalling or NaN-returning backend and says so; a named backend is
 // never replaced; a NaN never becomes a result; an outer loop that does not settle is reported
 // not converged with its last iterate, all finite.
@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "fault_from_environment.hpp"
 #include "fault_injection.hpp"
 #include "normal_problem.hpp"
 #include "tangential_support.hpp"
@@ -17,6 +18,7 @@ namespace {
 
 class ForcedFailures : public ::testing::Test {
  protected:
+  void SetUp() override { test::install_faults_from_environment(); }
   void TearDown() override { unsetenv("DYNCONTACT_FAULT"); }
   static void inject(const char* faults) { setenv("DYNCONTACT_FAULT", faults, 1); }
 };

@@ -1,4 +1,4 @@
-// FreedMemoryKept (nlp/freed_memory_kept.hpp): within its scope a large block comes from the
+// FreedMemoryKept (nlp/process_tuning/freed_memory_kept.hpp): within its scope a large block comes from the
 // heap and stays there when freed (MUMPS's next workspace reuses touched pages); after it, glibc
 // maps large blocks again and the kept memory is given back.
 #include <gtest/gtest.h>

@@ -9,6 +9,7 @@
 #include <cstdlib>
 
 #include "errors.hpp"
+#include "fault_from_environment.hpp"
 #include "mumps_ordering_hook.hpp"
 #include "saddle_form.hpp"
 #include "sparse_tangential_pair.hpp"
@@ -28,7 +29,7 @@ TEST(FiniteSparseTangential, ShiftByForceAgreesWithTheCondensedProgram) {
   const fe::testing::Pair r = solve_both(shift_by_force(0.6), 8, kSmall, "ipopt");
   expect_same_point(r);
   EXPECT_EQ(r.sparse.report.backend, "ipopt");
-  // MUMPS took our ordering (nlp/mumps_ordering_hook.hpp) for the normal and the tangential
+  // MUMPS took our ordering (nlp/process_tuning/mumps_ordering_hook.hpp) for the normal and the tangential
   // program's KKT matrix.
   if (mumps_ordering_hook_built()) {
     EXPECT_GE(mumps_analyses_ordered_by_us() - ordered_before, 2);
@@ -61,6 +62,7 @@ TEST(FiniteSparseTangential, NormalProblemFallsBackToNloptOnTheCondensedProgram)
   const FiniteNormalSolution reference = condensed.solve_normal({Control::force, fe::testing::kP}, SolverSpec{});
   ASSERT_EQ(reference.contact.report.status, SolveStatus::converged);
   FiniteContact sparse(fe::testing::hemisphere("sparse", kSmall), g, steel);
+  test::install_faults_from_environment();
   setenv("DYNCONTACT_FAULT", "ipopt:fail", 1);
   const FiniteNormalSolution s = sparse.solve_normal({Control::force, fe::testing::kP}, SolverSpec{});
   unsetenv("DYNCONTACT_FAULT");
@@ -80,6 +82,7 @@ TEST(FiniteSparseTangential, TangentialProblemFallsBackToTheCondensedProgram) {
   // Ipopt made to fail on the sparse form: "auto" hands the normal problem to NLopt and the
   // tangential program, the body's rows eliminated, to the native solver on the condensed
   // program; both reach the condensed program's certified point.
+  test::install_faults_from_environment();
   setenv("DYNCONTACT_FAULT", "ipopt:fail", 1);
   const fe::testing::Pair r = solve_both(shift_by_force(0.6), 8, kSmall, "auto");
   unsetenv("DYNCONTACT_FAULT");

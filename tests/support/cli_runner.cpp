@@ -47,10 +47,10 @@ pid_t CliTest::start(const std::vector<std::string>& args, const std::string& ou
     const int err_fd = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(out_fd, 1);
     dup2(err_fd, 2);
-    std::vector<char*> argv{const_cast<char*>(DYNCONTACT_BINARY)};
+    std::vector<char*> argv{const_cast<char*>(program_)};
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
-    execv(DYNCONTACT_BINARY, argv.data());
+    execv(program_, argv.data());
     _exit(127);
   }
   return pid;
@@ -100,7 +100,7 @@ bool CliTest::have_mpirun() { return std::system("mpirun --version >/dev/null 2>
 
 CliResult CliTest::run_prefixed(const std::string& prefix, const std::string& args) const {
   const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-  const std::string cmd = "cd " + shell_quote(dir_.string()) + " && " + prefix + " " + shell_quote(DYNCONTACT_BINARY) +
+  const std::string cmd = "cd " + shell_quote(dir_.string()) + " && " + prefix + " " + shell_quote(program_) +
                           " " + args + " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string());
   const int status = std::system(cmd.c_str());
   CliResult r;

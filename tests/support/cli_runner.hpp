@@ -29,7 +29,8 @@ nlohmann::json coarse_ball_impact();
 /// Single-quoted for the shell.
 std::string shell_quote(const std::string& s);
 
-/// Fixture: a temporary folder per test (kept when the test fails) and run().
+/// Fixture: a temporary folder per test (kept when the test fails) and run(), which runs the
+/// built `dyncontact`.
 class CliTest : public ::testing::Test {
  protected:
   void SetUp() override;
@@ -52,7 +53,11 @@ class CliTest : public ::testing::Test {
   CliResult run_mpi2(const std::string& args) const;
   /// Whether `mpirun` is on PATH.
   static bool have_mpirun();
+  /// From here on, run the test-only program that injects the faults DYNCONTACT_FAULT names
+  /// (support/program_with_faults.cpp) instead of `dyncontact`.
+  void use_program_with_faults() { program_ = DYNCONTACT_PROGRAM_WITH_FAULTS; }
   std::filesystem::path dir_;
+  const char* program_ = DYNCONTACT_BINARY;
 };
 
 }  // namespace dc::test

@@ -5,14 +5,17 @@
 // factorisation of the finite body's saddle form (nlp/finite/saddle_form.hpp) page-faulted and
 // had the kernel zero its whole workspace again. Within this scope large blocks come from the
 // heap and stay there when freed: the next factorisation reuses pages already touched.
-// Other C libraries: no effect.
+// The settings are the process's (mallopt): scopes are counted across threads, the first sets
+// them and the last restores glibc's defaults, which are the values before the first in a
+// program where nothing else sets them (glibc has no way to read them back): a program opts in
+// through process_tuning.hpp. Other C libraries: no effect.
 
 namespace dc {
 
 class FreedMemoryKept {
  public:
   FreedMemoryKept();
-  ~FreedMemoryKept();  ///< glibc's defaults again, the kept memory trimmed
+  ~FreedMemoryKept();  ///< the last open scope: glibc's defaults again, the kept memory trimmed
   FreedMemoryKept(const FreedMemoryKept&) = delete;
   FreedMemoryKept& operator=(const FreedMemoryKept&) = delete;
 };

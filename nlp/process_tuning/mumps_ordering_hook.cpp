@@ -71,8 +71,8 @@ bool mumps_ordering_hook_built() { return true; }
 
 }  // namespace dc
 
-// Exported even from a module built with hidden visibility (the Python module), so that
-// libipopt's call resolves to it.
+// Exported even from a program built with hidden visibility, so that libipopt's call resolves
+// to it.
 extern "C" __attribute__((visibility("default"))) void dmumps_c(DMUMPS_STRUC_C* mumps) {
   if (dc::scopes_open > 0 && dc::is_analysis(mumps->job) && mumps->sym != 0 && mumps->icntl[dc::kFormat] == 0 &&
       mumps->icntl[dc::kDistribution] == 0 && mumps->irn != nullptr && mumps->jcn != nullptr)

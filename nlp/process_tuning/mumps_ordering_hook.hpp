@@ -1,13 +1,14 @@
 #pragma once
 // MUMPS orders the KKT matrix of the finite body's sparse saddle form with our ordering
-// (nlp/dense_last_ordering.hpp: METIS's nested dissection, the dense inertia-relief columns
+// (dense_last_ordering.hpp: METIS's nested dissection, the dense inertia-relief columns
 // last) instead of its own (SCOTCH: slower, and its result varied from run to run), within a
 // scope.
 //
 // Ipopt 3.11 takes MUMPS's ordering as a number (mumps_pivot_order) and offers no way to hand it
-// a permutation, and its linear-solver classes are not installed. So this library defines
-// dmumps_c, the one MUMPS entry Ipopt calls: an executable's (or this module's) definition
-// comes before libdmumps_seq's in the dynamic linker's search, and it forwards every call to
+// a permutation, and its linear-solver classes are not installed. So this target
+// (dyncontact_process_tuning, linked by programs only: process_tuning.hpp) defines dmumps_c,
+// the one MUMPS entry Ipopt calls: the executable's definition comes before libdmumps_seq's in
+// the dynamic linker's search, and it forwards every call to
 // the real one (dlsym RTLD_NEXT). Within a MumpsOrderedByUs scope, on this thread, an analysis
 // (JOB 1, 4, 6) of an assembled matrix is given ICNTL(7) = 1 and PERM_IN; outside, and where
 // our definition is not the one taken, MUMPS orders as Ipopt asked (the solve is the same, only
