@@ -9,6 +9,7 @@
 
 #include "grid.hpp"
 #include "influence.hpp"
+#include "solver_options.hpp"  // OperatorKind
 
 namespace dc {
 
@@ -31,8 +32,6 @@ class LinearOperator {
     apply(x.data(), y.data());
   }
 };
-
-enum class OperatorKind { automatic, dense, fft };
 
 /// Largest rows*cols for which `automatic` picks a dense matrix.
 inline constexpr std::size_t kDenseAutoLimit = 1024u * 1024u;
