@@ -92,7 +92,7 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
                        {"contact_model", to_string(sp.contact_model)},
                        {"contact_model_used", r.contact_model},
                        {"scheme", sp.bdf2 ? "bdf2" : "bdf1"},
-                       {"friction", c.friction ? c.friction->law : "none (frictionless)"}};
+                       {"friction", c.friction ? to_string(c.friction->law) : "none (frictionless)"}};
   summary["solver"] = {{"backend", c.solver.backend},
                        {"backends_used", r.backends},
                        {"fallback_steps", r.fallback_steps},

@@ -117,8 +117,8 @@ Setup setup_of(const Case& c) {
     // mu sets the slip's relaxation (mu eps); dimensionless.mu (project extension), else
     // friction.mu, else 1 (said in the summary).
     const bool in_block = spec.mu.has_value();
-    if (!in_block && c.friction && c.friction->law == "coulomb") s.p.mu = c.friction->mu;
-    s.mu_given = in_block || (c.friction && c.friction->law == "coulomb");
+    if (!in_block && c.friction && c.friction->law == FrictionLawKind::coulomb) s.p.mu = c.friction->mu;
+    s.mu_given = in_block || (c.friction && c.friction->law == FrictionLawKind::coulomb);
     s.units.mu = s.mu_given ? s.p.mu : 0.0;
   } else {
     s.p = dimensional_parameters(c, s.units, s.time.dt);
@@ -140,7 +140,7 @@ pc::TractionLaw numerical_law(const Case& c, std::map<std::string, int>& backend
                                                                   Elastic::from_E_nu(2.1e11, 0.3)};
   const double R = c.has_block("profile") && c.profile.radius > 0.0 ? c.profile.radius : 0.05;
   const double P = c.has_block("normal") && c.normal.control == Control::force ? c.normal.value : 1e5;
-  const double mu = c.friction && c.friction->law == "coulomb" ? c.friction->mu : 0.3;
+  const double mu = c.friction && c.friction->law == FrictionLawKind::coulomb ? c.friction->mu : 0.3;
   const int nx = c.has_block("grid") ? c.grid.nx : 200;
   const auto hz = hertz::cylinder2d(R, P, m.E_star());
   const Grid g = Grid::make(2, nx, 1, -1.2 * hz.a, 1.2 * hz.a, 0, 0);

@@ -19,10 +19,10 @@ double contact_threshold(const Case& c) { return std::max(c.solver.certificate_t
 nlohmann::json pair(double x, double y) { return nlohmann::json::array({x, y}); }
 
 nlohmann::json friction_json(const FrictionSpec& f) {
-  nlohmann::json j = {{"law", f.law}};
-  if (f.law == "coulomb") j["mu"] = f.mu;
-  if (f.law == "tresca") j["bound"] = f.bound;
-  if (f.law == "table") {
+  nlohmann::json j = {{"law", to_string(f.law)}};
+  if (f.law == FrictionLawKind::coulomb) j["mu"] = f.mu;
+  if (f.law == FrictionLawKind::tresca) j["bound"] = f.bound;
+  if (f.law == FrictionLawKind::table) {
     j["pressure"] = f.pressure;
     j["bound"] = f.bound_table;
   }

@@ -62,13 +62,16 @@ MaterialPair parse_materials(const json& j, bool body_from_mesh = false) {
 FrictionSpec parse_friction(const json& j) {
   JsonBlock o(j, "friction");
   FrictionSpec f;
-  f.law = o.choice("law", "", {"coulomb", "tresca", "table"});
-  if (f.law == "coulomb") {
+  const std::string law = o.choice("law", "", {"coulomb", "tresca", "table"});
+  f.law = law == "coulomb"  ? FrictionLawKind::coulomb
+          : law == "tresca" ? FrictionLawKind::tresca
+                            : FrictionLawKind::table;
+  if (f.law == FrictionLawKind::coulomb) {
     o.allow({"law", "mu"});
     f.mu = o.number("mu");
     if (std::abs(f.mu) > 1e3) throw InputError(o.key("mu"), "must be at most 1000, got " + fmt(f.mu));
     if (f.mu < 0.0) throw InputError("friction.mu", "mu must be non-negative, got " + fmt(f.mu));
-  } else if (f.law == "tresca") {
+  } else if (f.law == FrictionLawKind::tresca) {
     o.allow({"law", "bound"});
     f.bound = o.positive_at_most("bound", 1e15, "Pa");
   } else {
@@ -395,6 +398,15 @@ const char* to_string(ProblemKind kind) {
     case ProblemKind::dynamic: return "dynamic";
     case ProblemKind::paper_cylinder: return "paper_cylinder";
     case ProblemKind::finite: return "finite";
+  }
+  return "unknown";
+}
+
+const char* to_string(FrictionLawKind law) {
+  switch (law) {
+    case FrictionLawKind::coulomb: return "coulomb";
+    case FrictionLawKind::tresca: return "tresca";
+    case FrictionLawKind::table: return "table";
   }
   return "unknown";
 }

@@ -20,8 +20,11 @@ namespace dc {
 
 enum class ProblemKind { normal, tangential, dynamic, paper_cylinder, finite };
 
+/// The friction bound f(p) (friction_law.hpp): "coulomb", "tresca" or "table" in the case file.
+enum class FrictionLawKind { coulomb, tresca, table };
+
 struct FrictionSpec {
-  std::string law = "coulomb";  ///< coulomb | tresca | table
+  FrictionLawKind law = FrictionLawKind::coulomb;
   double mu = 0.0;
   double bound = 0.0;                      ///< tresca
   std::vector<double> pressure, bound_table;  ///< table
@@ -112,5 +115,7 @@ void apply_override(nlohmann::json& document, const std::string& assignment);
 Case build_case(const nlohmann::json& document, const std::string& base_dir = ".");
 
 const char* to_string(ProblemKind kind);
+/// "coulomb", "tresca", "table".
+const char* to_string(FrictionLawKind law);
 
 }  // namespace dc

@@ -74,7 +74,7 @@ void read_dimensional(const JsonBlock& top, const Case& c, PaperCylinderSpec& s)
   if (b.force_x.rate != 0.0) throw InputError("loads.force.x.rate", "the paper's model takes a constant T_ex");
   if (!(-b.force_z.value > 0.0))
     throw InputError("loads.force.z.value", "must press the cylinder onto the half-plane (< 0)");
-  if (!c.friction || c.friction->law != "coulomb")
+  if (!c.friction || c.friction->law != FrictionLawKind::coulomb)
     throw InputError("friction", "the paper's model needs Coulomb friction {\"law\": \"coulomb\", \"mu\": ...}");
   if (!top.has("materials")) throw InputError("materials", "missing required key");
 

@@ -42,10 +42,12 @@ FrictionLaw FrictionLaw::table(std::vector<double> pressure, std::vector<double>
 }
 
 FrictionLaw FrictionLaw::from_spec(const FrictionSpec& spec) {
-  if (spec.law == "coulomb") return coulomb(spec.mu);
-  if (spec.law == "tresca") return tresca(spec.bound);
-  if (spec.law == "table") return table(spec.pressure, spec.bound_table);
-  throw InputError("friction.law", "unknown law '" + spec.law + "' (coulomb, tresca, table)");
+  switch (spec.law) {
+    case Kind::coulomb: return coulomb(spec.mu);
+    case Kind::tresca: return tresca(spec.bound);
+    case Kind::table: return table(spec.pressure, spec.bound_table);
+  }
+  throw InputError("friction.law", "unknown law (coulomb, tresca, table)");
 }
 
 double FrictionLaw::bound(double p) const {
@@ -79,13 +81,6 @@ double FrictionLaw::max_slope() const {
   return 0.0;
 }
 
-std::string FrictionLaw::name() const {
-  switch (kind_) {
-    case Kind::coulomb: return "coulomb";
-    case Kind::tresca: return "tresca";
-    case Kind::table: return "table";
-  }
-  return "coulomb";
-}
+std::string FrictionLaw::name() const { return to_string(kind_); }
 
 }  // namespace dc

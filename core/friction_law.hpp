@@ -24,7 +24,7 @@ class FrictionLaw {
   std::string name() const;
 
  private:
-  enum class Kind { coulomb, tresca, table };
+  using Kind = FrictionLawKind;
   Kind kind_ = Kind::coulomb;
   double mu_ = 0.0, tresca_ = 0.0;
   std::vector<double> p_, f_;

@@ -243,7 +243,7 @@ TEST(CaseModel, FrictionLaws) {
   apply_override(table, "friction={\"law\": \"table\", \"pressure\": [0, 1e6, 2e6], \"bound\": [0, 3e5, 4e5]}");
   const Case c = build_case(table);
   ASSERT_TRUE(c.friction);
-  EXPECT_EQ(c.friction->law, "table");
+  EXPECT_EQ(c.friction->law, FrictionLawKind::table);
   EXPECT_EQ(c.friction->bound_table.size(), 3u);
   json tresca = shift;
   apply_override(tresca, "friction={\"law\": \"tresca\", \"bound\": 1e6}");

@@ -80,8 +80,8 @@ int run_validate(const ValidateArgs& args) {
   }
   if (c.friction) {
     const FrictionSpec& f = *c.friction;
-    if (f.law == "coulomb") std::printf("  friction: Coulomb, mu = %.4g\n", f.mu);
-    else if (f.law == "tresca") std::printf("  friction: Tresca, bound %.4g Pa\n", f.bound);
+    if (f.law == FrictionLawKind::coulomb) std::printf("  friction: Coulomb, mu = %.4g\n", f.mu);
+    else if (f.law == FrictionLawKind::tresca) std::printf("  friction: Tresca, bound %.4g Pa\n", f.bound);
     else std::printf("  friction: table of %zu points\n", f.pressure.size());
   }
   const Grid& g = c.grid;
