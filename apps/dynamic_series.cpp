@@ -93,7 +93,7 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
                        {"contact_model_used", r.contact_model},
                        {"scheme", sp.bdf2 ? "bdf2" : "bdf1"},
                        {"friction", c.friction ? to_string(c.friction->law) : "none (frictionless)"}};
-  summary["solver"] = {{"backend", c.solver.backend},
+  summary["solver"] = {{"backend", to_string(c.solver.backend)},
                        {"backends_used", r.backends},
                        {"fallback_steps", r.fallback_steps},
                        {"status", r.completed ? "converged" : "stopped"},

@@ -81,10 +81,7 @@ struct FiniteRun {
 FiniteRun solve_finite_on(const Case& c, const FeBodySpec& body, bool progress) {
   const auto start = std::chrono::steady_clock::now();
   FiniteRun out;
-  out.contact = std::make_unique<FiniteContact>(body, c.grid, c.materials.base,
-                                                c.solver.operator_kind == "dense" ? OperatorKind::dense
-                                                : c.solver.operator_kind == "fft" ? OperatorKind::fft
-                                                                                   : OperatorKind::automatic);
+  out.contact = std::make_unique<FiniteContact>(body, c.grid, c.materials.base, c.solver.operator_kind);
   FiniteContact& fc = *out.contact;
   if (progress)
     std::fprintf(stderr, "body: %zu dofs, %zu elements; meshed in %.3g s, factorised in %.3g s\n", fc.body().dofs(),
@@ -94,7 +91,7 @@ FiniteRun solve_finite_on(const Case& c, const FeBodySpec& body, bool progress) 
   SolverReport& report = out.run.report;
   out.run.normal = c.normal;
   {
-    Progress reporter("solving " + c.name + " (" + c.solver.backend + ")", progress);
+    Progress reporter("solving " + c.name + " (" + to_string(c.solver.backend) + ")", progress);
     if (c.tangential) {
       s = solve_tangential_steps(c, fc, reporter, fields, out.body_u, report);
       out.run.history = c.tangential->has_history;

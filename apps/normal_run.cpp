@@ -11,7 +11,7 @@ namespace dc::cli {
 NormalRun run_normal(const Case& c, bool progress) {
   NormalRun run;
   {
-    Progress reporter("solving " + c.name + " (" + c.solver.backend + ")", progress);
+    Progress reporter("solving " + c.name + " (" + to_string(c.solver.backend) + ")", progress);
     // time_s: the whole solve (set-up and every backend tried), not only the last attempt.
     const auto start = std::chrono::steady_clock::now();
     run.solution = solve_normal_case(c, reporter.callback());

@@ -148,7 +148,7 @@ pc::TractionLaw numerical_law(const Case& c, std::map<std::string, int>& backend
   prof.type = ProfileType::cylinder;
   prof.radius = R;
   TangentialProblem problem(g, m, profile_heights(prof, g), FrictionLaw::coulomb(mu));
-  const SolverSpec& solver = c.solver;
+  const SolverOptions& solver = c.solver;
   const int K = 100;
   auto table = std::make_shared<std::vector<double>>(K + 1, 0.0);
   for (int k = 1; k <= K; ++k) {

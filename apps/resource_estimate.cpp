@@ -15,8 +15,8 @@ ResourceEstimate estimate_resources(const Case& c) {
   const double k = tangential && three_d ? 2.0 : 1.0;
   const double entries = (k * n) * (k * n);
   bool dense = entries <= static_cast<double>(kDenseAutoLimit);
-  if (c.solver.operator_kind == "dense") dense = true;
-  if (c.solver.operator_kind == "fft") dense = false;
+  if (c.solver.operator_kind == OperatorKind::dense) dense = true;
+  if (c.solver.operator_kind == OperatorKind::fft) dense = false;
   e.operator_kind = dense ? "dense" : "fft";
   // The padded transform size (2 nx x 2 ny, rounded to fast lengths: ~4n in 3-D, ~2n in 2-D).
   const double m = three_d ? 4.0 * n : 2.0 * n;

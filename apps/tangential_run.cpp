@@ -116,7 +116,7 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
 TangentialRun run_tangential(const Case& c, bool progress) {
   TangentialRun run;
   {
-    Progress reporter("solving " + c.name + " (" + c.solver.backend + ")", progress);
+    Progress reporter("solving " + c.name + " (" + to_string(c.solver.backend) + ")", progress);
     run.steps = solve_tangential_case(c, reporter.callback());
     reporter.finish();
   }

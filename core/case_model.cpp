@@ -93,20 +93,32 @@ FrictionSpec parse_friction(const json& j) {
   return f;
 }
 
-SolverSpec parse_solver(const json& j) {
+/// SolverOptions::validate()'s "<field>: <reason>" as InputError("solver.<field>", reason).
+void check_solver(const SolverOptions& s) {
+  const std::string why = s.validate();
+  if (why.empty()) return;
+  const std::size_t colon = why.find(": ");
+  throw InputError("solver." + why.substr(0, colon), why.substr(colon + 2));
+}
+
+SolverOptions parse_solver(const json& j) {
   JsonBlock o(j, "solver");
   o.allow({"backend", "tol", "certificate_tol", "max_iter", "fallback", "accept_unconverged", "hessian",
            "operator"});
-  SolverSpec s;
-  s.backend = o.choice("backend", s.backend, {"auto", "ipopt", "nlopt", "native"});
-  if (o.has("tol")) s.tol = o.bounded("tol", 1e-16, 0.1, "(relative)");
-  if (o.has("certificate_tol")) s.certificate_tol = o.bounded("certificate_tol", 1e-16, 0.1, "(relative)");
+  SolverOptions s;
+  s.backend = *backend_from_string(o.choice("backend", to_string(s.backend), {"auto", "ipopt", "nlopt", "native"}));
+  // Each value checked as it is read (the first bad key is the one reported).
+  s.tol = o.number_or("tol", s.tol);
+  check_solver(s);
+  s.certificate_tol = o.number_or("certificate_tol", s.certificate_tol);
+  check_solver(s);
   s.max_iter = o.integer_or("max_iter", s.max_iter);
-  if (s.max_iter < 1) throw InputError("solver.max_iter", "must be at least 1, got " + std::to_string(s.max_iter));
+  check_solver(s);
   s.fallback = o.boolean_or("fallback", s.fallback);
   s.accept_unconverged = o.boolean_or("accept_unconverged", s.accept_unconverged);
-  s.hessian = o.choice("hessian", s.hessian, {"auto", "exact", "limited-memory"});
-  s.operator_kind = o.choice("operator", s.operator_kind, {"auto", "dense", "fft"});
+  s.hessian = *hessian_from_string(o.choice("hessian", to_string(s.hessian), {"auto", "exact", "limited-memory"}));
+  s.operator_kind =
+      *operator_kind_from_string(o.choice("operator", to_string(s.operator_kind), {"auto", "dense", "fft"}));
   return s;
 }
 
@@ -302,7 +314,7 @@ void reject_unused_blocks(const JsonBlock& top, ProblemKind problem) {
 /// solver.operator "dense" holds the whole influence matrix (linear_operator.hpp: at most 4096 x
 /// 4096 entries, 128 MB); a grid beyond it is refused here, not when the solve builds it.
 void check_dense_operator_size(const Case& c) {
-  if (c.solver.operator_kind != "dense") return;
+  if (c.solver.operator_kind != OperatorKind::dense) return;
   const bool two_components = c.dimension == 3 && c.friction.has_value();
   const double rows = static_cast<double>(c.grid.size()) * (two_components ? 2.0 : 1.0);
   const double limit = std::sqrt(static_cast<double>(kDenseAutoLimit * 16));

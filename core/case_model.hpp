@@ -15,6 +15,7 @@
 #include "material.hpp"
 #include "normal_spec.hpp"
 #include "profile.hpp"
+#include "solver_options.hpp"
 
 namespace dc {
 
@@ -28,17 +29,6 @@ struct FrictionSpec {
   double mu = 0.0;
   double bound = 0.0;                      ///< tresca
   std::vector<double> pressure, bound_table;  ///< table
-};
-
-struct SolverSpec {
-  std::string backend = "auto";  ///< auto | ipopt | nlopt | native
-  double tol = 1e-9;             ///< backend tolerance
-  double certificate_tol = 1e-6; ///< largest accepted certificate residual
-  int max_iter = 1000;
-  bool fallback = true;          ///< auto: try the next backend when one fails
-  bool accept_unconverged = false;  ///< write results (exit 0) even when the certificate fails
-  std::string hessian = "auto";  ///< ipopt: exact | limited-memory | auto
-  std::string operator_kind = "auto";  ///< auto | dense | fft
 };
 
 struct OutputSpec {
@@ -82,7 +72,7 @@ struct Case {
   std::optional<FeBodySpec> fe_body;                ///< problem finite
   std::optional<DynamicSpec> dynamic;               ///< problem dynamic
   std::optional<SweepSpec> sweep;                   ///< problems paper_cylinder, dynamic
-  SolverSpec solver;
+  SolverOptions solver;                             ///< the `solver` block (solver_options.hpp)
   OutputSpec output;
   std::vector<std::string> blocks;  ///< the top-level keys the case file gave
   nlohmann::json source;            ///< the (overridden) JSON the case was read from (sweeps re-read it)

@@ -24,7 +24,7 @@ ContactWrench::ContactWrench(const Case& c, std::unique_ptr<FiniteBody> finite)
     // auto: FFT at every size. A run applies the operators thousands of times, and the padded FFT
     // product is the faster one from 12^2 elements (3-D) and 200 strips (2-D) up (scripts/bench.sh
     // dynamic with solver.operator dense / fft).
-    const OperatorKind kind = c.solver.operator_kind == "dense" ? OperatorKind::dense : OperatorKind::fft;
+    const OperatorKind kind = c.solver.operator_kind == OperatorKind::dense ? OperatorKind::dense : OperatorKind::fft;
     if (law_) {
       own_tangential_ = std::make_unique<TangentialProblem>(c.grid, c.materials, gap_->heights(), *law_, kind);
       tangential_ = own_tangential_.get();
@@ -120,7 +120,7 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
   off_axis_ = !travel_along_x(V);
   const bool steady_step = steady_ && !off_axis_;
   if (tangential_) {
-    auto solve = [&](const SolverSpec& solver) {
+    auto solve = [&](const SolverOptions& solver) {
       if (steady_step) {
         RollingLoad rolling;
         rolling.normal = load;
@@ -140,7 +140,7 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
       // Converged but not certified (a nearly stuck contact: the certificate divides by a
       // tiny slip): once more from the same memory with a 1000 times tighter tolerance.
       tangential_->restore(committed_);
-      SolverSpec tight = solver_;
+      SolverOptions tight = solver_;
       tight.tol = std::max(1e-15, 1e-3 * solver_.tol);
       solve(tight);
     }

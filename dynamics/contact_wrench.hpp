@@ -83,7 +83,7 @@ class ContactWrench {
 
   const Case& case_;
   const DynamicSpec& spec_;
-  SolverSpec solver_;
+  SolverOptions solver_;
   std::optional<BodyGap> gap_;                     // the profile's gap (rigid-body profile)
   std::unique_ptr<FiniteBody> finite_;             // or the fe_body's (finite contact in each step)
   std::unique_ptr<NormalProblem> own_normal_;

@@ -6,27 +6,21 @@
 #include <limits>
 #include <stdexcept>
 
-#include "errors.hpp"
 #include "fault_injection.hpp"
 #include "interrupt.hpp"
 
 namespace dc {
 
-std::vector<std::string> backend_order(const std::string& requested, std::size_t unknowns, bool fallback) {
-  std::vector<std::string> order;
-  if (requested == "auto") {
-    order = unknowns <= kAutoIpoptLimit ? std::vector<std::string>{"ipopt", "native", "nlopt"}
-                                        : std::vector<std::string>{"native", "ipopt", "nlopt"};
-  } else if (requested == "ipopt" || requested == "nlopt" || requested == "native") {
-    return {requested};  // asked for by name: never replaced silently by another backend
-  } else {
-    throw InputError("solver.backend", "unknown backend '" + requested + "' (auto, ipopt, nlopt, native)");
-  }
+std::vector<std::string> backend_order(Backend requested, std::size_t unknowns, bool fallback) {
+  if (requested != Backend::automatic)
+    return {to_string(requested)};  // asked for by name: never replaced silently by another backend
+  std::vector<std::string> order = unknowns <= kAutoIpoptLimit ? std::vector<std::string>{"ipopt", "native", "nlopt"}
+                                                               : std::vector<std::string>{"native", "ipopt", "nlopt"};
   if (!fallback) order.resize(1);
   return order;
 }
 
-SolveOptions solve_options(const SolverSpec& solver, const ProgressCallback& progress) {
+SolveOptions solve_options(const SolverOptions& solver, const ProgressCallback& progress) {
   SolveOptions options;
   options.tol = solver.tol;
   options.max_iter = solver.max_iter;

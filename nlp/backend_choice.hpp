@@ -15,13 +15,12 @@ namespace dc {
 /// ~5 s with the exact Hessian, the native solver ~0.01 s).
 inline constexpr std::size_t kAutoIpoptLimit = 256;
 
-/// "auto": by size, then the others as fallbacks (when `fallback`); a named backend: that one
-/// only (it reports its own failure, never replaced silently). Throws InputError("solver.backend")
-/// for an unknown name.
-std::vector<std::string> backend_order(const std::string& requested, std::size_t unknowns, bool fallback);
+/// The names of the backends to run: for automatic, by size, then the others as fallbacks (when
+/// `fallback`); a named backend: that one only (it reports its own failure, never replaced silently).
+std::vector<std::string> backend_order(Backend requested, std::size_t unknowns, bool fallback);
 
 /// The backend options of a case's solver block.
-SolveOptions solve_options(const SolverSpec& solver, const ProgressCallback& progress);
+SolveOptions solve_options(const SolverOptions& solver, const ProgressCallback& progress);
 
 /// One backend run: its outcome (an exception becomes a failed outcome with the message; a
 /// non-finite value discards the result) and the wall time. `native` is the problem's specialist

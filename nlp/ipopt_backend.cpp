@@ -288,8 +288,8 @@ class QpTnlp final : public Ipopt::TNLP {
 };
 
 bool use_exact_hessian(const QuadraticProgram& qp, const SolveOptions& options) {
-  if (options.hessian == "exact") return true;
-  if (options.hessian == "limited-memory") return false;
+  if (options.hessian == Hessian::exact) return true;
+  if (options.hessian == Hessian::limited_memory) return false;
   return qp.n() <= options.exact_hessian_limit;
 }
 
@@ -318,10 +318,6 @@ SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& op
     // (declared after this guard) is gone.
     std::optional<SparseFactorisationScope> tuned;
     if (qp.block) tuned.emplace();
-    if (options.hessian != "auto" && options.hessian != "exact" && options.hessian != "limited-memory") {
-      out.message = "Ipopt: unknown hessian option '" + options.hessian + "'";
-      return out;
-    }
     const bool exact = use_exact_hessian(qp, options);
     const bool disks = !qp.disks.empty();
     const Eigen::MatrixXd dense_q = exact ? qp.Q->to_dense() : Eigen::MatrixXd();

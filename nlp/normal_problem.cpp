@@ -79,18 +79,18 @@ Certificate NormalProblem::certify(const std::vector<double>& p, double approach
   return cert;
 }
 
-NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverSpec& solver,
+NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverOptions& solver,
                                     const ProgressCallback& progress) {
   return solve_or_polish(control, solver, progress, nullptr);
 }
 
 NormalSolution NormalProblem::polish(const std::vector<double>& pressure, const NormalSpec& control,
-                                     const SolverSpec& solver) {
+                                     const SolverOptions& solver) {
   if (pressure.size() != grid_.size()) throw std::invalid_argument("normal problem: polish: one pressure per element");
   return solve_or_polish(control, solver, {}, &pressure);
 }
 
-NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const SolverSpec& solver,
+NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const SolverOptions& solver,
                                               const ProgressCallback& progress, const std::vector<double>* given) {
   const std::size_t n = grid_.size();
   const double A = grid_.area();
@@ -139,7 +139,7 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
   if (exact_hessian_limit_ > 0) options.exact_hessian_limit = exact_hessian_limit_;
 
   NormalSolution first;
-  first.report.requested = solver.backend;
+  first.report.requested = to_string(solver.backend);
   first.report.operator_kind = compliance_->kind();
   // A point x of the scaled program as pressure, approach, gap and energy, certified.
   const auto fill_solution = [&](const std::vector<double>& x, NormalSolution& sol) {
@@ -237,10 +237,7 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
 }
 
 NormalSolution solve_normal_case(const Case& c, const ProgressCallback& progress) {
-  OperatorKind kind = OperatorKind::automatic;
-  if (c.solver.operator_kind == "dense") kind = OperatorKind::dense;
-  if (c.solver.operator_kind == "fft") kind = OperatorKind::fft;
-  NormalProblem problem(c.grid, c.materials, profile_heights(c.profile, c.grid), kind);
+  NormalProblem problem(c.grid, c.materials, profile_heights(c.profile, c.grid), c.solver.operator_kind);
   return problem.solve(c.normal, c.solver, progress);
 }
 

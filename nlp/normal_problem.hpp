@@ -33,13 +33,13 @@ class NormalProblem {
   /// Solves with the requested backend ("auto", "ipopt", "nlopt", "native"); `auto` picks by
   /// size and falls back on failure (when options.fallback). Never throws for non-convergence:
   /// the report says so.
-  NormalSolution solve(const NormalSpec& control, const SolverSpec& solver,
+  NormalSolution solve(const NormalSpec& control, const SolverOptions& solver,
                        const ProgressCallback& progress = {});
   /// A pressure from another form of this program (a finite body's sparse saddle form) finished
   /// by the active-set polish on it, to a hundredth of solver.certificate_tol: the solution and
   /// its certificate at the polished point (report.polished when the polish improved on it;
   /// the message says by how much).
-  NormalSolution polish(const std::vector<double>& pressure, const NormalSpec& control, const SolverSpec& solver);
+  NormalSolution polish(const std::vector<double>& pressure, const NormalSpec& control, const SolverOptions& solver);
   /// Certificate of an arbitrary pressure field (for tests and for every solve).
   Certificate certify(const std::vector<double>& pressure, double approach, const NormalSpec& control) const;
   /// Rigid-body shift of the profile between solves (dynamic steps move the body).
@@ -64,7 +64,7 @@ class NormalProblem {
 
  private:
   /// solve(), or with `given` (a pressure per element) polish() instead of the backends.
-  NormalSolution solve_or_polish(const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress,
+  NormalSolution solve_or_polish(const NormalSpec& control, const SolverOptions& solver, const ProgressCallback& progress,
                                  const std::vector<double>* given);
 
   std::shared_ptr<const LinearOperator> compliance_;

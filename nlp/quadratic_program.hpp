@@ -11,6 +11,7 @@
 
 #include "iteration_record.hpp"
 #include "linear_operator.hpp"
+#include "solver_options.hpp"
 
 namespace dc {
 
@@ -73,8 +74,8 @@ using ProgressCallback = std::function<void(const ProgressInfo&)>;
 struct SolveOptions {
   double tol = 1e-9;        ///< relative tolerance handed to the backend
   int max_iter = 1000;      ///< iteration limit of the backend
-  /// Ipopt Hessian: "exact", "limited-memory" or "auto" (exact while n <= exact_hessian_limit).
-  std::string hessian = "auto";
+  /// Ipopt Hessian: exact, limited-memory or automatic (exact while n <= exact_hessian_limit).
+  Hessian hessian = Hessian::automatic;
   int exact_hessian_limit = 500;  // measured: L-BFGS is faster from ~30^2 unknowns (dense MUMPS)
   bool verbose = false;
   ProgressCallback progress;  ///< called now and then by backends that support it

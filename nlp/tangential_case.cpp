@@ -12,11 +12,8 @@ namespace dc {
 
 TangentialProblem make_tangential_problem(const Case& c) {
   if (!c.friction) throw InputError("friction", "required for a tangential problem");
-  OperatorKind kind = OperatorKind::automatic;
-  if (c.solver.operator_kind == "dense") kind = OperatorKind::dense;
-  if (c.solver.operator_kind == "fft") kind = OperatorKind::fft;
   return TangentialProblem(c.grid, c.materials, profile_heights(c.profile, c.grid), FrictionLaw::from_spec(*c.friction),
-                           kind);
+                           c.solver.operator_kind);
 }
 
 std::vector<TangentialSolution> solve_tangential_case(const Case& c, const ProgressCallback& progress) {

@@ -94,7 +94,7 @@ Certificate TangentialProblem::Impl::step_certificate(const std::vector<double>&
 /// ds and the bound f; the status becomes not_converged when the certificate fails.
 void TangentialProblem::Impl::finish(TangentialSolution& sol, const std::vector<double>& tau,
                                      const std::vector<double>& ds, const std::vector<double>& f,
-                                     const std::array<ModeControl, 3>& modes, const SolverSpec& solver) const {
+                                     const std::array<ModeControl, 3>& modes, const SolverOptions& solver) const {
   sol.tx.assign(N, 0.0);
   sol.ty.assign(N, 0.0);
   sol.sx.assign(N, 0.0);

@@ -17,7 +17,7 @@ using tangential_internal::relative_change;
 
 /// The normal problem at the heights h, from the cache when it was solved for the same.
 NormalSolution TangentialProblem::Impl::solve_normal(std::vector<double> h, const NormalSpec& load,
-                                                     const SolverSpec& solver) {
+                                                     const SolverOptions& solver) {
   if (normal_cache && normal_cache_load.control == load.control && normal_cache_load.value == load.value &&
       normal_cache_tol == solver.tol &&
       normal_cache_heights == h)
@@ -43,12 +43,12 @@ NormalSolution TangentialProblem::Impl::solve_normal(std::vector<double> h, cons
 /// tau moves that gap by kappa B32 (tau - tau_in); once this is below a hundredth of
 /// certificate_tol (in the certificate's units, gap / C_00 / max p), the pressure is certified
 /// again with the final tau (certify_with_final_traction), so p and tau certify together.
-/// `inexact` (the inner solve honours the pass's SolverSpec): while the coupling residual is
+/// `inexact` (the inner solve honours the pass's SolverOptions): while the coupling residual is
 /// large, both problems are solved only to a tenth of it (at most 1e-3, at least solver.tol):
 /// the next pass changes their data by about that residual anyway. The loop stops only after
 /// a pass at solver.tol, so the answer and its certificate are those of exact solves.
 bool TangentialProblem::Impl::outer_loop(TangentialSolution& sol, const NormalSpec& normal_load,
-                                         const SolverSpec& solver, std::vector<double>& tau, std::vector<double>& f,
+                                         const SolverOptions& solver, std::vector<double>& tau, std::vector<double>& f,
                                          bool inexact, const InnerSolve& inner) {
   // The gap shift kappa B32 tau_in fed to (4.26) and the one of the new tau.
   std::vector<double> p_old, tau_old, shift_in, shift_out;
@@ -59,7 +59,7 @@ bool TangentialProblem::Impl::outer_loop(TangentialSolution& sol, const NormalSp
   const double c0 = C->diagonal(0);
   const double coupling_tol = 0.01 * solver.certificate_tol;
   AndersonMixing mixer;
-  SolverSpec pass = solver;
+  SolverOptions pass = solver;
   if (coupled && inexact) pass = loose_pass(solver, 1e-3);
   double last_gap = 0.0;
   if (coupled) B32->apply(tau, shift_in);
@@ -133,8 +133,8 @@ void TangentialProblem::Impl::certify_with_final_traction(TangentialSolution& so
 
 /// The solver of an inexact alternation: tolerance `tol` (between solver.tol and 1e-3), and a
 /// certificate tolerance that such a solve can meet (the backends fall back on it).
-SolverSpec TangentialProblem::Impl::loose_pass(const SolverSpec& solver, double tol) {
-  SolverSpec pass = solver;
+SolverOptions TangentialProblem::Impl::loose_pass(const SolverOptions& solver, double tol) {
+  SolverOptions pass = solver;
   pass.tol = std::clamp(tol, solver.tol, std::max(solver.tol, 1e-3));
   pass.certificate_tol = std::max(solver.certificate_tol, 100.0 * pass.tol);
   return pass;
@@ -148,7 +148,7 @@ SolverSpec TangentialProblem::Impl::loose_pass(const SolverSpec& solver, double 
 TangentialSolution TangentialProblem::Impl::solve_step(const NormalSpec& normal_load,
                                                        const std::array<ModeControl, 3>& modes,
                                                        const std::array<double, 3>& given_increment,
-                                                       const std::array<double, 2>& shift, const SolverSpec& solver,
+                                                       const std::array<double, 2>& shift, const SolverOptions& solver,
                                                        const ProgressCallback& progress) {
   const std::size_t n = comps * N;
   std::vector<double> u_prev;
@@ -163,7 +163,7 @@ TangentialSolution TangentialProblem::Impl::solve_step(const NormalSpec& normal_
   InnerResult inner;
   outer_loop(sol, normal_load, solver, tau, f, true,
              [&](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t,
-                 const SolverSpec& pass) {
+                 const SolverOptions& pass) {
                // (4.27): W = kappa B21 p - u_prev.
                for (std::size_t i = 0; i < n; ++i) W[i] = -u_prev[i];
                if (coupled) {

@@ -59,7 +59,7 @@ void TangentialProblem::use_sparse_form(SparseTangentialForm form) {
   impl_->normal_cache.reset();
 }
 
-TangentialSolution TangentialProblem::step(const TangentialLoad& load, const SolverSpec& solver,
+TangentialSolution TangentialProblem::step(const TangentialLoad& load, const SolverOptions& solver,
                                            const ProgressCallback& progress) {
   Impl& s = *impl_;
   if (s.grid.dimension == 2)
@@ -92,7 +92,7 @@ TangentialSolution TangentialProblem::step(const TangentialLoad& load, const Sol
   return sol;
 }
 
-TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, const SolverSpec& solver,
+TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, const SolverOptions& solver,
                                                      const ProgressCallback& progress) {
   Impl& s = *impl_;
   if (s.given_operators) throw InputError("tangential.regime", "rolling is not available for a finite body");
@@ -104,7 +104,8 @@ TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, co
   using Method = RollingLoad::Method;
   std::string direct_failure;
   const bool newton = load.method == Method::newton ||
-                      (load.method == Method::automatic && (solver.backend == "auto" || solver.backend == "native"));
+                      (load.method == Method::automatic &&
+                       (solver.backend == Backend::automatic || solver.backend == Backend::native));
   if (newton) {
     std::array<double, 3> increment{};
     for (int k = 0; k < 3; ++k)
@@ -170,7 +171,7 @@ TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, co
   return sol;
 }
 
-TangentialSolution TangentialProblem::roll(const RollingLoad& load, double distance, const SolverSpec& solver,
+TangentialSolution TangentialProblem::roll(const RollingLoad& load, double distance, const SolverOptions& solver,
                                            const ProgressCallback& progress) {
   Impl& s = *impl_;
   if (s.given_operators) throw InputError("tangential.regime", "rolling is not available for a finite body");
@@ -209,7 +210,7 @@ TangentialSolution TangentialProblem::roll(const RollingLoad& load, double dista
 }
 
 TangentialSolution TangentialProblem::convected_step(const NormalSpec& normal, const std::array<double, 3>& increment,
-                                                   const std::array<double, 2>& travel, const SolverSpec& solver) {
+                                                   const std::array<double, 2>& travel, const SolverOptions& solver) {
   Impl& s = *impl_;
   if (!std::isfinite(travel[0]) || !std::isfinite(travel[1])) throw InputError("travel", "must be finite");
   // 2-D (plane strain): there is no y direction to travel along, so a y travel is a caller's

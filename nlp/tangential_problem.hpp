@@ -84,10 +84,10 @@ struct SparseTangentialForm {
   /// energy_unit (A tau'C tau) and resultants of the order of force_scale (N).
   std::function<SparseBlock(double traction_unit, double energy_unit, double force_scale)> body_rows;
   /// The normal problem by the sparse form on the given heights.
-  std::function<NormalSolution(const std::vector<double>& heights, const NormalSpec& load, const SolverSpec& solver)>
+  std::function<NormalSolution(const std::vector<double>& heights, const NormalSpec& load, const SolverOptions& solver)>
       normal;
   /// The backends to try, in order, for a requested one.
-  std::function<std::vector<std::string>(const std::string& requested, bool fallback)> backends;
+  std::function<std::vector<std::string>(Backend requested, bool fallback)> backends;
   int exact_hessian_limit = 0;  ///< Ipopt: the exact Hessian up to this many tractions
   /// With backend `auto`, a step the backends above fail on is solved on the condensed program
   /// (the given compliances, the body's rows eliminated) by the native solver, then NLopt,
@@ -116,12 +116,12 @@ class TangentialProblem {
   ~TangentialProblem() = default;
 
   /// One quasi-static step (shift/torsion/loading history).
-  TangentialSolution step(const TangentialLoad& load, const SolverSpec& solver,
+  TangentialSolution step(const TangentialLoad& load, const SolverOptions& solver,
                           const ProgressCallback& progress = {});
   /// Steady rolling: Newton's method on the steady equations (steady_rolling_solver.hpp) or
   /// marching in time (dt = dx / V) until the traction stops changing; either way proven by the
   /// friction law and the gap function (4.24) of the steady slip.
-  TangentialSolution steady_rolling(const RollingLoad& load, const SolverSpec& solver,
+  TangentialSolution steady_rolling(const RollingLoad& load, const SolverOptions& solver,
                                     const ProgressCallback& progress = {});
   /// Transient rolling: marches in +x from the CURRENT state (memory kept, no reset) over
   /// `distance` (m, >= 0): n = round(distance / dx) marching steps of dt = dx / V, at least one
@@ -132,7 +132,7 @@ class TangentialProblem {
   /// of that step): a prescribed force is then Cattaneo's shift, a creepage applies no slip.
   /// The total rigid slip accumulates in the state (a later step() shift counts from it).
   /// Throws InputError("tangential.distance") when distance < 0 or not finite.
-  TangentialSolution roll(const RollingLoad& load, double distance, const SolverSpec& solver,
+  TangentialSolution roll(const RollingLoad& load, double distance, const SolverOptions& solver,
                           const ProgressCallback& progress = {});
   /// Forget the loading history (back to the unloaded state).
   void reset();
@@ -169,7 +169,7 @@ class TangentialProblem {
   /// must be 0 (InputError("travel") otherwise). The normal load is `normal` on the current
   /// heights. The memory advances (restore() to undo).
   TangentialSolution convected_step(const NormalSpec& normal, const std::array<double, 3>& increment,
-                                    const std::array<double, 2>& travel, const SolverSpec& solver);
+                                    const std::array<double, 2>& travel, const SolverOptions& solver);
   TangentialMemory memory() const;
   void restore(const TangentialMemory& memory);
   /// The body's gap profile on the grid (a moving body changes it between steps).

@@ -129,10 +129,10 @@ struct TangentialProblem::Impl {
   /// The convex program of one step, solved and certified.
   InnerResult solve_tangential(const std::vector<double>& W, const std::vector<double>& f,
                                const std::array<ModeControl, 3>& modes, const std::array<double, 3>& given_increment,
-                               const SolverSpec& solver, const ProgressCallback& progress);
+                               const SolverOptions& solver, const ProgressCallback& progress);
   /// No friction anywhere (f(p) = 0): tau = 0, nothing to solve.
   InnerResult frictionless(const std::array<double, 3>& given_increment, const std::array<ModeControl, 3>& modes,
-                           const SolverSpec& solver) const;
+                           const SolverOptions& solver) const;
 
   // Slip, resultants and certificates (tangential_certificates.cpp).
   /// The slip increment of a step (3.8): ds = W + rigid + Ct tau.
@@ -149,32 +149,32 @@ struct TangentialProblem::Impl {
                                const std::vector<double>& f, const std::array<ModeControl, 3>& modes) const;
   /// Fills a solution's fields, states, resultants and certificate.
   void finish(TangentialSolution& sol, const std::vector<double>& tau, const std::vector<double>& ds,
-              const std::vector<double>& f, const std::array<ModeControl, 3>& modes, const SolverSpec& solver) const;
+              const std::vector<double>& f, const std::array<ModeControl, 3>& modes, const SolverOptions& solver) const;
 
   // The outer loop (4.26)-(4.27) / (3.31)-(3.32) and one step (tangential_coupling.cpp).
   /// The inner solve of a pass: (p, f(p), tau, the pass's solver) -> tau updated; false: give up.
   using InnerSolve = std::function<bool(const std::vector<double>& p, const std::vector<double>& f,
-                                        std::vector<double>& tau, const SolverSpec& pass)>;
+                                        std::vector<double>& tau, const SolverOptions& pass)>;
   /// The normal problem at the heights h, from normal_cache when it was solved for the same.
-  NormalSolution solve_normal(std::vector<double> h, const NormalSpec& load, const SolverSpec& solver);
+  NormalSolution solve_normal(std::vector<double> h, const NormalSpec& load, const SolverOptions& solver);
   /// The outer loop around `inner` (false: the inner solve gave up).
-  bool outer_loop(TangentialSolution& sol, const NormalSpec& normal_load, const SolverSpec& solver,
+  bool outer_loop(TangentialSolution& sol, const NormalSpec& normal_load, const SolverOptions& solver,
                   std::vector<double>& tau, std::vector<double>& f, bool inexact, const InnerSolve& inner);
   /// The pressure's certificate with the gap (4.26) of the final tau.
   void certify_with_final_traction(TangentialSolution& sol, const std::vector<double>& shift_out,
                                    const NormalSpec& normal_load);
   /// The solver of an inexact alternation: tolerance `tol`.
-  static SolverSpec loose_pass(const SolverSpec& solver, double tol);
+  static SolverOptions loose_pass(const SolverOptions& solver, double tol);
   /// One step with the outer loop; `shift` (elements) the travel of the step.
   TangentialSolution solve_step(const NormalSpec& normal_load, const std::array<ModeControl, 3>& modes,
                                 const std::array<double, 3>& given_increment, const std::array<double, 2>& shift,
-                                const SolverSpec& solver, const ProgressCallback& progress);
+                                const SolverOptions& solver, const ProgressCallback& progress);
 
   // Rolling (tangential_rolling.cpp).
   /// Steady rolling by Newton inside the outer loop; empty when Newton gives up (why_not).
   std::optional<TangentialSolution> steady_rolling_direct(const RollingLoad& load,
                                                           const std::array<double, 3>& given_increment,
-                                                          const SolverSpec& solver, const ProgressCallback& progress,
+                                                          const SolverOptions& solver, const ProgressCallback& progress,
                                                           std::string& why_not);
   struct March {
     TangentialSolution sol;  ///< the last step; amplitudes = rigid-mode increments of that step
@@ -183,7 +183,7 @@ struct TangentialProblem::Impl {
     int first_unconverged = 0;  ///< the first step that was not certified (1-based), 0: none
   };
   /// Rolling in +x from the current state: up to `max_steps` marching steps.
-  March march(const RollingLoad& load, int max_steps, double steady_tol, const SolverSpec& solver,
+  March march(const RollingLoad& load, int max_steps, double steady_tol, const SolverOptions& solver,
               const ProgressCallback& progress);
 
   // The loading history (tangential_problem.cpp).

@@ -68,7 +68,7 @@ void TangentialProblem::Impl::check_resultants(const std::vector<double>& f,
 /// resultant-controlled modes as equality rows; W excludes the resultant-controlled modes.
 TangentialProblem::Impl::InnerResult TangentialProblem::Impl::solve_tangential(
     const std::vector<double>& W, const std::vector<double>& f, const std::array<ModeControl, 3>& modes,
-    const std::array<double, 3>& given_increment, const SolverSpec& solver, const ProgressCallback& progress) {
+    const std::array<double, 3>& given_increment, const SolverOptions& solver, const ProgressCallback& progress) {
   const double A = grid.area();
   const double ct0 = Ct->diagonal(0);
   const double f_ref = std::max(max_abs(f), 1e-300);
@@ -145,7 +145,7 @@ TangentialProblem::Impl::InnerResult TangentialProblem::Impl::solve_tangential(
   if (std::all_of(f.begin(), f.end(), [](double b) { return b <= 0.0; })) return frictionless(given_increment, modes, solver);
 
   InnerResult first;
-  first.report.requested = solver.backend;
+  first.report.requested = to_string(solver.backend);
   first.report.operator_kind = sparse ? "sparse+" + sparse->halfspace->kind() : Ct->kind();
   first.increment = given_increment;
   AttemptLedger<InnerResult> ledger(first);
@@ -227,7 +227,8 @@ TangentialProblem::Impl::InnerResult TangentialProblem::Impl::solve_tangential(
   for (std::size_t k = 0; k < order.size() && !ledger.converged(); ++k) attempt(order[k], qp, k > 0, order[k]);
   // The sparse form failed with `auto`: the same program with the body's rows eliminated (Q the
   // condensed compliance, no block), as for the normal problem (FiniteContact::solve_sparse).
-  if (sparse && sparse->condensed_fallback && !ledger.converged() && solver.backend == "auto" && solver.fallback) {
+  if (sparse && sparse->condensed_fallback && !ledger.converged() && solver.backend == Backend::automatic &&
+      solver.fallback) {
     for (const char* backend : {"native", "nlopt"}) {
       attempt(backend, condensed, true, std::string(backend) + " (condensed program)");
       if (ledger.converged()) break;
@@ -243,12 +244,12 @@ TangentialProblem::Impl::InnerResult TangentialProblem::Impl::solve_tangential(
 /// undetermined (any shift leaves tau = 0) and reported as 0.
 TangentialProblem::Impl::InnerResult TangentialProblem::Impl::frictionless(const std::array<double, 3>& given_increment,
                                                                     const std::array<ModeControl, 3>& modes,
-                                                                    const SolverSpec& solver) const {
+                                                                    const SolverOptions& solver) const {
   InnerResult r;
   r.tau.assign(comps * N, 0.0);
   r.increment = given_increment;
   r.report.backend = "none";
-  r.report.requested = solver.backend;
+  r.report.requested = to_string(solver.backend);
   r.report.operator_kind = Ct->kind();
   r.report.status = SolveStatus::converged;
   r.report.message = "no friction (f(p) = 0 over the whole contact): zero traction, nothing to solve";

@@ -18,7 +18,7 @@ using tangential_internal::relative_change;
 /// slip per step of travel dx is ds = dx v_rigid + (C - S C) tau (+ kappa (B21 - S B21) p).
 /// Empty when Newton's method gives up (the caller then marches).
 std::optional<TangentialSolution> TangentialProblem::Impl::steady_rolling_direct(
-    const RollingLoad& load, const std::array<double, 3>& given_increment, const SolverSpec& solver,
+    const RollingLoad& load, const std::array<double, 3>& given_increment, const SolverOptions& solver,
     const ProgressCallback& progress, std::string& why_not) {
   if (!D_conv) D_conv = half_space->tangential_convective(1, kind);
   if (coupled && !B21_up) B21_up = half_space->tangential_from_normal_shifted(1, 0, kind);
@@ -47,7 +47,7 @@ std::optional<TangentialSolution> TangentialProblem::Impl::steady_rolling_direct
   const auto start = std::chrono::steady_clock::now();
   const bool ok = outer_loop(
       sol, load.normal, solver, tau, f, false,
-      [&](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t, const SolverSpec&) {
+      [&](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t, const SolverOptions&) {
         program.b.assign(n, 0.0);
         for (std::size_t e = 0; e < N; ++e)
           for (int c = 0; c < comps; ++c)
@@ -82,7 +82,7 @@ std::optional<TangentialSolution> TangentialProblem::Impl::steady_rolling_direct
   for (std::size_t i = 0; i < n; ++i) ds[i] += program.b[i];
   for (std::size_t r = 0; r < program.modes.size(); ++r)
     for (std::size_t i = 0; i < n; ++i) ds[i] += outcome.amplitudes[r] * program.modes[r][i];
-  sol.report.requested = solver.backend;
+  sol.report.requested = to_string(solver.backend);
   sol.report.backend = "native";
   sol.report.operator_kind = D_conv->kind();
   sol.report.status = SolveStatus::converged;
@@ -105,7 +105,7 @@ std::optional<TangentialSolution> TangentialProblem::Impl::steady_rolling_direct
 /// Stops after a step that changes tau by less than `steady_tol` (0: never), or fails. The
 /// total rigid slip accumulates in amplitude_prev.
 TangentialProblem::Impl::March TangentialProblem::Impl::march(const RollingLoad& load, int max_steps, double steady_tol,
-                                                       const SolverSpec& solver, const ProgressCallback& progress) {
+                                                       const SolverOptions& solver, const ProgressCallback& progress) {
   if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
   // Rolling in +x: the material now at x was at x + dx one step (dt = dx / V) earlier.
   if (!Ct_up) {
@@ -118,7 +118,7 @@ TangentialProblem::Impl::March TangentialProblem::Impl::march(const RollingLoad&
     if (load.modes[k].kind == ModeControl::Kind::amplitude) increment[k] = grid.dx * load.modes[k].value;
   // auto: every step is one warm-started program, where the native solver is much the
   // fastest at any size (the others remain its fallbacks).
-  const SolverSpec& step_solver = solver;
+  const SolverOptions& step_solver = solver;
   native_first = true;
   struct Restore {
     bool& flag;

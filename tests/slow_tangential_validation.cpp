@@ -19,7 +19,7 @@ namespace {
 
 namespace cf = closed_form;
 
-SolverSpec native_solver() { return test::native_tangential_solver(); }
+SolverOptions native_solver() { return test::native_tangential_solver(); }
 
 using test::amplitude;
 

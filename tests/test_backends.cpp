@@ -253,16 +253,16 @@ TEST(Backends, CoupledDisksSatisfyKkt) {
   qp.c = random_vector(n, 6, -1.0, 1.0);
   add_disks(qp, {0.05, 2.0, 0.1, 3.0, 0.2, 5.0});
   for (const auto& backend : backends()) {
-    for (const std::string hessian : {"exact", "limited-memory"}) {
-      if (backend.name == "nlopt" && hessian == "limited-memory") continue;  // no such choice
+    for (const Hessian hessian : {Hessian::exact, Hessian::limited_memory}) {
+      if (backend.name == "nlopt" && hessian == Hessian::limited_memory) continue;  // no such choice
       SolveOptions options;
       options.hessian = hessian;
       const SolveOutcome out = backend.solve(qp, options);
-      EXPECT_TRUE(out.success) << backend.name << "/" << hessian << ": " << out.message;
+      EXPECT_TRUE(out.success) << backend.name << "/" << to_string(hessian) << ": " << out.message;
       int active = 0;
-      EXPECT_LT(disk_kkt_violation(qp, op.matrix(), out.x, &active), 1e-5) << backend.name << "/" << hessian;
-      EXPECT_GE(active, 2) << backend.name << "/" << hessian;  // some disks bind ...
-      EXPECT_LE(active, 5) << backend.name << "/" << hessian;  // ... and some do not
+      EXPECT_LT(disk_kkt_violation(qp, op.matrix(), out.x, &active), 1e-5) << backend.name << "/" << to_string(hessian);
+      EXPECT_GE(active, 2) << backend.name << "/" << to_string(hessian);  // some disks bind ...
+      EXPECT_LE(active, 5) << backend.name << "/" << to_string(hessian);  // ... and some do not
     }
   }
 }
@@ -313,8 +313,8 @@ TEST(Backends, IpoptExactAndLimitedMemoryHessianAgree) {
   BoxProblem p(40, 31, 0.5);
   p.qp.equalities.push_back({random_vector(40, 32, 0.5, 1.5), 4.0});
   SolveOptions exact, lbfgs;
-  exact.hessian = "exact";
-  lbfgs.hessian = "limited-memory";
+  exact.hessian = Hessian::exact;
+  lbfgs.hessian = Hessian::limited_memory;
   const SolveOutcome a = solve_with_ipopt(p.qp, exact);
   const SolveOutcome b = solve_with_ipopt(p.qp, lbfgs);
   ASSERT_TRUE(a.success) << a.message;

@@ -91,20 +91,20 @@ TEST(CaseModel, DefaultsAndSolverBlock) {
     "fallback": false, "accept_unconverged": true, "hessian": "limited-memory", "operator": "fft"})");
   doc["output"] = json::parse(R"({"dir": "somewhere", "fields": false, "plots": false})");
   const Case c = build_case(doc);
-  EXPECT_EQ(c.solver.backend, "native");
+  EXPECT_EQ(c.solver.backend, Backend::native);
   EXPECT_DOUBLE_EQ(c.solver.tol, 1e-8);
   EXPECT_DOUBLE_EQ(c.solver.certificate_tol, 1e-5);
   EXPECT_EQ(c.solver.max_iter, 50);
   EXPECT_FALSE(c.solver.fallback);
   EXPECT_TRUE(c.solver.accept_unconverged);
-  EXPECT_EQ(c.solver.hessian, "limited-memory");
-  EXPECT_EQ(c.solver.operator_kind, "fft");
+  EXPECT_EQ(c.solver.hessian, Hessian::limited_memory);
+  EXPECT_EQ(c.solver.operator_kind, OperatorKind::fft);
   EXPECT_EQ(c.output.dir, "somewhere");
   EXPECT_FALSE(c.output.fields);
   EXPECT_FALSE(c.output.plots);
 
   const Case d = build_case(sphere_case());
-  EXPECT_EQ(d.solver.backend, "auto");
+  EXPECT_EQ(d.solver.backend, Backend::automatic);
   EXPECT_TRUE(d.output.fields);
   EXPECT_FALSE(d.friction.has_value());
   EXPECT_EQ(d.grid.nx, 16);
@@ -259,6 +259,29 @@ TEST(CaseModel, SolverBlockValidation) {
   expect_bad(d, "solver.hessian=\"bfgs\"", "solver.hessian");
   expect_bad(d, "solver.operator=\"sparse\"", "solver.operator");
   expect_bad(d, "solver.accept_unconverged=2", "solver.accept_unconverged");
+}
+
+TEST(CaseModel, SolverOptionsValidateIsTheCaseReadersCheck) {
+  SolverOptions s;
+  EXPECT_EQ(s.validate(), "");
+  s.tol = 0.5;
+  EXPECT_EQ(s.validate(), "tol: must be from 1e-16 to 0.1 (relative), got 0.5");
+  const std::string msg = expect_bad(sphere_case(), "solver.tol=0.5", "solver.tol");
+  EXPECT_EQ(msg, "solver.tol: must be from 1e-16 to 0.1 (relative), got 0.5");
+  s = SolverOptions{};
+  s.certificate_tol = -1.0;
+  EXPECT_EQ(s.validate(), "certificate_tol: must be from 1e-16 to 0.1 (relative), got -1");
+  s = SolverOptions{};
+  s.max_iter = 0;
+  EXPECT_EQ(s.validate(), "max_iter: must be at least 1, got 0");
+  for (const Backend b : {Backend::automatic, Backend::ipopt, Backend::nlopt, Backend::native})
+    EXPECT_EQ(backend_from_string(to_string(b)), b);
+  for (const Hessian h : {Hessian::automatic, Hessian::exact, Hessian::limited_memory})
+    EXPECT_EQ(hessian_from_string(to_string(h)), h);
+  for (const OperatorKind k : {OperatorKind::automatic, OperatorKind::dense, OperatorKind::fft})
+    EXPECT_EQ(operator_kind_from_string(to_string(k)), k);
+  EXPECT_STREQ(to_string(Hessian::limited_memory), "limited-memory");
+  EXPECT_FALSE(backend_from_string("automatic"));
 }
 
 TEST(CaseModel, TangentialProblemNeedsFrictionAndBlock) {

@@ -19,8 +19,8 @@ TEST(ContactSensitivity, MatchesFiniteDifferencesAndMindlin) {
   const double R = 0.01, P = 100.0, mu = 0.3;
   const SphereSetup s = sphere_setup(24, 1.3, m, R, P);
   TangentialProblem problem(s.grid, m, s.heights, FrictionLaw::coulomb(mu));
-  const SolverSpec solver = [] {
-    SolverSpec sp = native_tangential_solver();
+  const SolverOptions solver = [] {
+    SolverOptions sp = native_tangential_solver();
     sp.tol = 1e-12;
     return sp;
   }();
@@ -50,7 +50,7 @@ void expect_full_sensitivity_matches_central_differences(TangentialProblem& prob
                                                          const NormalSpec& load,
                                                          const std::array<double, 3>& a,
                                                          const std::array<double, 2>& travel,
-                                                         const SolverSpec& solver) {
+                                                         const SolverOptions& solver) {
   const TangentialMemory memory = problem.memory();  // before the step
   const TangentialSolution base = problem.convected_step(load, a, travel, solver);
   expect_certified(base);
@@ -86,8 +86,8 @@ struct SoftSphere {
   double R = 0.01, P = 10.0, mu = 0.3;
   SphereSetup s = sphere_setup(20, 1.3, m, R, P);
   double shift = mu * P / (16.0 * (1.0 / ((2.0 - m.body.nu) / m.body.G + (2.0 - m.base.nu) / m.base.G)) * s.hz.a);
-  SolverSpec solver = [] {
-    SolverSpec sp = native_tangential_solver();
+  SolverOptions solver = [] {
+    SolverOptions sp = native_tangential_solver();
     sp.tol = 1e-12;
     return sp;
   }();

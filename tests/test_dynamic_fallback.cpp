@@ -40,7 +40,7 @@ nlohmann::json sliding_ball() {
 
 TEST(DynamicFallback, NativeFailingFallsBackAndSaysSo) {
   const Case c = build_case(sliding_ball());
-  ASSERT_EQ(c.solver.backend, "auto");
+  ASSERT_EQ(c.solver.backend, Backend::automatic);
   DynamicResult native;
   {
     DynamicSimulation sim(c);

@@ -48,7 +48,7 @@ TEST_F(ForcedFailures, ParsesTargetsAndKinds) {
 
 TEST_F(ForcedFailures, NormalAutoFallsBackPastEachKind) {
   SphereCase c;
-  SolverSpec s;  // auto, fallback on; 144 unknowns: Ipopt first
+  SolverOptions s;  // auto, fallback on; 144 unknowns: Ipopt first
   for (const char* fault : {"ipopt:fail", "ipopt:stall", "ipopt:nan"}) {
     SCOPED_TRACE(fault);
     inject(fault);
@@ -64,8 +64,8 @@ TEST_F(ForcedFailures, NormalAutoFallsBackPastEachKind) {
 
 TEST_F(ForcedFailures, NamedBackendIsNeverReplacedAndNaNNeverKept) {
   SphereCase c;
-  SolverSpec s;
-  s.backend = "native";  // fallback stays on: a named backend still does not fall back
+  SolverOptions s;
+  s.backend = Backend::native;  // fallback stays on: a named backend still does not fall back
   inject("native:nan");
   NormalProblem problem(c.setup.grid, c.m, c.setup.heights);
   const NormalSolution sol = problem.solve({Control::force, 100.0}, s);
@@ -84,7 +84,7 @@ TEST_F(ForcedFailures, TangentialAutoFallsBackOnAFailedCertificate) {
   load.modes[0] = test::resultant(-15.0);
   load.modes[1] = test::resultant(0.0);
   inject("native:stall");  // 288 unknowns: native first; its stalled answer fails the certificate
-  const TangentialSolution sol = problem.step(load, SolverSpec{});
+  const TangentialSolution sol = problem.step(load, SolverOptions{});
   EXPECT_EQ(sol.report.status, SolveStatus::converged) << sol.report.message;
   EXPECT_TRUE(sol.report.fallback_used);
   EXPECT_NE(sol.report.backend, "native");
@@ -100,7 +100,7 @@ TEST_F(ForcedFailures, OuterLoopThatDoesNotSettleIsReported) {
   load.modes[0] = test::resultant(-15.0);
   load.modes[1] = test::resultant(0.0);
   inject("outer:stall");
-  const TangentialSolution sol = problem.step(load, SolverSpec{});
+  const TangentialSolution sol = problem.step(load, SolverOptions{});
   EXPECT_FALSE(sol.outer.converged);
   EXPECT_EQ(sol.report.status, SolveStatus::not_converged);
   EXPECT_NE(sol.report.message.find("outer loop"), std::string::npos) << sol.report.message;

@@ -206,7 +206,7 @@ struct CattaneoProblem {
 
 /// Ipopt as the reference: tight tolerance; the exact Hessian on small programs, L-BFGS on the
 /// grids (a dense 2048-unknown factorisation per iteration is slow with reference BLAS).
-SolveOptions reference_options(const std::string& hessian = "exact") {
+SolveOptions reference_options(Hessian hessian = Hessian::exact) {
   SolveOptions o;
   o.tol = 1e-10;
   o.hessian = hessian;
@@ -286,7 +286,7 @@ TEST(NativeTangential, CattaneoShiftAgreesWithIpopt) {
   EXPECT_LT(stick, static_cast<int>(p.qp.disks.size()));      // ... and a slip annulus
 
   CattaneoProblem dense(32, OperatorKind::dense, CattaneoProblem::Control::shift);
-  const SolveOutcome ref = solve_with_ipopt(dense.qp, reference_options("limited-memory"));
+  const SolveOutcome ref = solve_with_ipopt(dense.qp, reference_options(Hessian::limited_memory));
   ASSERT_TRUE(ref.success) << ref.message;
   EXPECT_LT(max_abs_diff(out.x, ref.x), 1e-6 * max_abs(ref.x));
   const double f_ref = feasible_objective(dense.qp, ref.x);
@@ -317,7 +317,7 @@ TEST_P(ForceControl, ResultantsAndMultipliersAgreeWithIpopt) {
   EXPECT_LT(kkt_violation(p.qp, out.x, out.equality_multipliers), 1e-8);
 
   CattaneoProblem dense(24, OperatorKind::dense, GetParam());
-  const SolveOutcome ref = solve_with_ipopt(dense.qp, reference_options("limited-memory"));
+  const SolveOutcome ref = solve_with_ipopt(dense.qp, reference_options(Hessian::limited_memory));
   ASSERT_TRUE(ref.success) << ref.message;
   EXPECT_LT(max_abs_diff(out.x, ref.x), 1e-6 * max_abs(ref.x));
   for (std::size_t k = 0; k < ref.equality_multipliers.size(); ++k) {

@@ -52,8 +52,8 @@ TEST(NLoptPolish, NormalProblemCertifiesAndSaysPolished) {
   const MaterialPair m = test::steel_on_steel();
   const test::SphereSetup s = test::sphere_setup(16, 1.3, m, 0.01, 100.0);
   NormalProblem problem(s.grid, m, s.heights);
-  SolverSpec solver;
-  solver.backend = "nlopt";
+  SolverOptions solver;
+  solver.backend = Backend::nlopt;
   const NormalSolution sol = problem.solve({Control::force, 100.0}, solver);
   EXPECT_EQ(sol.report.status, SolveStatus::converged) << sol.report.message;
   EXPECT_TRUE(sol.report.polished) << sol.report.message;
@@ -69,8 +69,8 @@ TEST(NLoptPolish, CattaneoCertifiesWithNLoptAlone) {
   load.normal = {Control::force, 100.0};
   load.modes[0] = test::resultant(-15.0);
   load.modes[1] = test::resultant(0.0);
-  SolverSpec solver;
-  solver.backend = "nlopt";
+  SolverOptions solver;
+  solver.backend = Backend::nlopt;
   const TangentialSolution sol = problem.step(load, solver);
   EXPECT_EQ(sol.report.status, SolveStatus::converged) << sol.report.message;
   EXPECT_LE(sol.report.certificate.worst(), solver.certificate_tol);

@@ -19,7 +19,7 @@ MaterialPair steel_on_aluminium() {
   return {Elastic::from_E_nu(2.1e11, 0.3), Elastic::from_E_nu(7.0e10, 0.33)};
 }
 
-SolverSpec native_solver() { return test::native_solver_spec(5000); }
+SolverOptions native_solver() { return test::native_solver_spec(5000); }
 
 struct HertzErrors {
   double approach, radius, peak;

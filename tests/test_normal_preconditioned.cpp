@@ -124,7 +124,7 @@ TEST(NormalPreconditioned, IterationsDoNotGrowWithTheGrid) {
 TEST(NormalPreconditioned, WarmStartFromTheSolutionFinishesAtOnce) {
   const SphereCase s = sphere(48);
   NormalProblem problem(s.grid, steel_on_aluminium(), s.heights, OperatorKind::fft);
-  const SolverSpec solver = test::native_solver_spec(1000);
+  const SolverOptions solver = test::native_solver_spec(1000);
   const NormalSolution cold = problem.solve({Control::force, 100.0}, solver);
   ASSERT_EQ(cold.report.status, SolveStatus::converged);
   const NormalSolution warm = problem.solve({Control::force, 100.0}, solver);  // member warm state

@@ -42,7 +42,7 @@ TEST(OuterLoop, WarmStartedHistoryEqualsColdStartedSteps) {
   TangentialProblem cold = in.problem();
   TangentialLoad load;
   load.modes = {amplitude(0.0), amplitude(0.0), amplitude(0.0)};
-  const SolverSpec solver = test::native_tangential_solver();
+  const SolverOptions solver = test::native_tangential_solver();
   int warm_alternations = 0, cold_alternations = 0;
   for (int k = 1; k <= 5; ++k) {
     load.normal = {Control::force, P_max * k / 5.0};
@@ -75,7 +75,7 @@ TEST(OuterLoop, ProportionalHistoryStartsFromTheExtrapolatedState) {
   previous.set_extrapolation(false);
   TangentialLoad load;
   load.modes = {test::resultant(0.0), test::resultant(0.0), amplitude(0.0)};
-  const SolverSpec solver = test::native_tangential_solver();
+  const SolverOptions solver = test::native_tangential_solver();
   const int steps = 10;
   int predicted_alternations = 0, previous_alternations = 0;
   for (int k = 1; k <= steps; ++k) {
@@ -110,7 +110,7 @@ TEST(OuterLoop, PressureIsCertifiedWithTheFinalTraction) {
   TangentialProblem problem = in.problem();
   TangentialLoad load;
   load.modes = {test::resultant(0.0), test::resultant(0.0), amplitude(0.0)};
-  const SolverSpec solver = test::native_tangential_solver();
+  const SolverOptions solver = test::native_tangential_solver();
   for (int k = 1; k <= 2; ++k) {
     load.normal = {Control::force, Indentation::P_max * k / 2.0};
     const TangentialSolution s = problem.step(load, solver);
@@ -162,8 +162,8 @@ TEST(OuterLoop, IpoptAndNativeReachTheSameState) {
   TangentialLoad load;
   load.modes = {amplitude(0.0), amplitude(0.0), amplitude(0.0)};
   load.normal = {Control::force, 150.0};
-  SolverSpec ipopt = test::native_tangential_solver();
-  ipopt.backend = "ipopt";
+  SolverOptions ipopt = test::native_tangential_solver();
+  ipopt.backend = Backend::ipopt;
   TangentialProblem by_native(su.grid, m, su.heights, FrictionLaw::coulomb(0.2));
   TangentialProblem by_ipopt(su.grid, m, su.heights, FrictionLaw::coulomb(0.2));
   const TangentialSolution a = by_native.step(load, test::native_tangential_solver());

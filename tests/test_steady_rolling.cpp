@@ -24,7 +24,7 @@ namespace {
 
 using namespace dc::test;
 
-SolverSpec native_solver() { return native_tangential_solver(); }
+SolverOptions native_solver() { return native_tangential_solver(); }
 namespace cf = closed_form;
 
 TEST(Gmres, SolvesANonSymmetricSystemAcrossRestarts) {

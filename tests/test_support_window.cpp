@@ -108,7 +108,7 @@ TEST(SupportWindow, HistoryOnWindowsReachesTheStatesOfTheWholeGrid) {
   TangentialProblem windowed(su.grid, m, su.heights, FrictionLaw::coulomb(mu));
   TangentialProblem whole(su.grid, m, su.heights, FrictionLaw::coulomb(mu));
   whole.set_windowing(false);
-  const SolverSpec solver = test::native_tangential_solver();
+  const SolverOptions solver = test::native_tangential_solver();
   TangentialLoad load;
   load.modes = {test::resultant(0.0), test::resultant(0.0), test::amplitude(0.0)};
   for (int k = 1; k <= 3; ++k) {

@@ -76,7 +76,7 @@ TEST_P(TangentialCertificates, CorrectCertifiesAndPerturbedDoesNot) {
     case Scenario::Kind::torsion: load.modes[2] = amplitude(sc.level); break;
   }
   if (sc.dimension == 3 && sc.kind != Scenario::Kind::torsion) load.modes[1] = resultant(0.0);
-  SolverSpec solver;  // the defaults: auto, certificate_tol 1e-6
+  SolverOptions solver;  // the defaults: auto, certificate_tol 1e-6
   const TangentialSolution s = problem.step(load, solver);
   ASSERT_EQ(s.report.status, SolveStatus::converged) << s.report.message;
   EXPECT_LE(s.report.certificate.worst(), solver.certificate_tol);

@@ -27,7 +27,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 namespace cf = closed_form;
 
-SolverSpec native_solver() { return test::native_tangential_solver(); }
+SolverOptions native_solver() { return test::native_tangential_solver(); }
 
 using test::amplitude;
 using test::resultant;
@@ -295,7 +295,7 @@ TEST(TangentialValidation, CarterForceControlled2d) {
   RollingLoad load;
   load.normal = {Control::force, P};
   load.modes = {resultant(ratio * mu * P), amplitude(0.0), amplitude(0.0)};
-  SolverSpec solver = native_solver();
+  SolverOptions solver = native_solver();
   solver.certificate_tol = 1e-6;
   const TangentialSolution s = problem.steady_rolling(load, solver);
   EXPECT_EQ(s.report.status, SolveStatus::converged) << s.report.message;

@@ -30,7 +30,7 @@ using test::amplitude;
 using test::expect_certified;
 using test::resultant;
 
-SolverSpec native_solver() { return test::native_tangential_solver(); }
+SolverOptions native_solver() { return test::native_tangential_solver(); }
 
 /// Steel cylinder on steel, plane strain: R = 50 mm, P = 100 kN/m, mu = 0.3.
 struct Cylinder {

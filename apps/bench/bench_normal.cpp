@@ -120,15 +120,9 @@ dc::MaterialPair steel_on_steel() {
   return m;
 }
 
-dc::OperatorKind parse_operator(const std::string& kind) {
-  if (kind == "dense") return dc::OperatorKind::dense;
-  if (kind == "fft") return dc::OperatorKind::fft;
-  return dc::OperatorKind::automatic;
-}
-
 /// Tangential cases on the same sphere, Coulomb mu = 0.3: shift by Q = mu P / 2 (error: rigid
 /// shift vs Mindlin) or steady rolling by F = mu P / 2. Iterations: the last inner solve's.
-void run_tangential(const std::string& problem, int n, const dc::SolverSpec& solver, Row& row, double& setup_s,
+void run_tangential(const std::string& problem, int n, const dc::SolverOptions& solver, Row& row, double& setup_s,
                     double& solve_s) {
   using clock = std::chrono::steady_clock;
   constexpr double kMu = 0.3;
@@ -192,12 +186,12 @@ Row run_case(const std::string& backend, int n, const Options& options) {
     dc::NormalSpec control;
     control.control = dc::Control::force;
     control.value = kForce;
-    dc::SolverSpec solver;
-    solver.backend = backend;
+    dc::SolverOptions solver;
+    solver.backend = *dc::backend_from_string(backend);  // one of --backends' names
     solver.fallback = false;  // time the backend asked for, not a fallback
     solver.tol = options.tol;
     solver.max_iter = options.max_iter;
-    solver.operator_kind = options.operator_kind;
+    solver.operator_kind = *dc::operator_kind_from_string(options.operator_kind);
 
     double best_setup = std::numeric_limits<double>::infinity();
     double best_solve = std::numeric_limits<double>::infinity();
@@ -214,8 +208,7 @@ Row run_case(const std::string& backend, int n, const Options& options) {
     for (int k = 0; k < options.repeat && options.problem == "normal"; ++k) {
       const auto t0 = clock::now();
       const dc::Grid grid = dc::Grid::make(3, n, n, -half, half, -half, half);
-      dc::NormalProblem problem(grid, materials, dc::profile_heights(profile, grid),
-                                parse_operator(options.operator_kind));
+      dc::NormalProblem problem(grid, materials, dc::profile_heights(profile, grid), solver.operator_kind);
       const auto t1 = clock::now();
       const dc::NormalSolution solution = problem.solve(control, solver);
       const auto t2 = clock::now();

@@ -79,7 +79,7 @@ int run_compare(const CompareArgs& args) {
   const Case base = load_case(args.case_path, args.sets);
   const bool finite = base.problem == ProblemKind::finite;
   for (const auto& b : args.backends)
-    if (b != "auto" && b != "ipopt" && b != "nlopt" && b != "native" && !(finite && sparse_form(b)))
+    if (!backend_from_string(b) && !(finite && sparse_form(b)))
       throw InputError("--backends", "unknown backend '" + b + "' (expected auto, ipopt, nlopt or native" +
                                          (finite ? ", or ipopt-sparse for the sparse form)" : ")"));
   if (base.problem == ProblemKind::paper_cylinder)
@@ -95,13 +95,13 @@ int run_compare(const CompareArgs& args) {
   std::vector<Entry> entries;
   for (const auto& b : args.backends) {
     Case c = base;
-    c.solver.backend = sparse_form(b) ? "ipopt" : b;
+    c.solver.backend = sparse_form(b) ? Backend::ipopt : *backend_from_string(b);
     if (finite) {  // a finite body: the condensed program, or the sparse saddle form by Ipopt
       c.fe_body->program = sparse_form(b) ? "sparse" : "condensed";
       c.source["fe_body"]["program"] = c.fe_body->program;
     }
     c.solver.fallback = false;  // compare the backend itself, not its fallbacks
-    c.source["solver"]["backend"] = c.solver.backend;
+    c.source["solver"]["backend"] = to_string(c.solver.backend);
     c.source["solver"]["fallback"] = false;
     Entry e;
     e.backend = b;

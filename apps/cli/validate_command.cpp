@@ -127,7 +127,7 @@ int run_validate(const ValidateArgs& args) {
                    est.memory_bytes / 1e9);
   }
   std::printf("  solver:   backend %s, tol %.3g, certificate tolerance %.3g, at most %d iterations\n",
-              c.solver.backend.c_str(), c.solver.tol, c.solver.certificate_tol, c.solver.max_iter);
+              to_string(c.solver.backend), c.solver.tol, c.solver.certificate_tol, c.solver.max_iter);
   if (const auto ref = analytic_reference(c)) {
     const char* label = ref->kind == "boussinesq_flat_punch" ? "Boussinesq" : "Hertz";
     if (two_d)

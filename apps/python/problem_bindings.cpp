@@ -67,15 +67,15 @@ RollingLoad rolling_load(const Opt& force, const Opt& approach, const Opt& creep
   return load;
 }
 
-SolverSpec solver_spec(const std::string& backend, double tol, double certificate_tol, int max_iter) {
-  if (backend != "auto" && backend != "ipopt" && backend != "nlopt" && backend != "native")
-    throw InputError("backend", "expected auto, ipopt, nlopt or native, got '" + backend + "'");
+SolverOptions solver_spec(const std::string& backend, double tol, double certificate_tol, int max_iter) {
+  const std::optional<Backend> named = backend_from_string(backend);
+  if (!named) throw InputError("backend", "expected auto, ipopt, nlopt or native, got '" + backend + "'");
   if (!(tol > 0.0) || !std::isfinite(tol)) throw InputError("tol", "must be a positive number");
   if (!(certificate_tol > 0.0) || !std::isfinite(certificate_tol))
     throw InputError("certificate_tol", "must be a positive number");
   if (max_iter < 1) throw InputError("max_iter", "must be at least 1");
-  SolverSpec s;
-  s.backend = backend;
+  SolverOptions s;
+  s.backend = *named;
   s.tol = tol;
   s.certificate_tol = certificate_tol;
   s.max_iter = max_iter;
@@ -83,9 +83,7 @@ SolverSpec solver_spec(const std::string& backend, double tol, double certificat
 }
 
 OperatorKind operator_kind(const std::string& kind) {
-  if (kind == "dense") return OperatorKind::dense;
-  if (kind == "fft") return OperatorKind::fft;
-  if (kind == "auto") return OperatorKind::automatic;
+  if (const std::optional<OperatorKind> named = operator_kind_from_string(kind)) return *named;
   throw InputError("kind", "expected auto, dense or fft, got '" + kind + "'");
 }
 
@@ -212,7 +210,7 @@ void bind_problems(py::module_& m) {
           [](PyNormalProblem& self, const Opt& force, const Opt& approach, const std::string& backend, double tol,
              double certificate_tol, int max_iter) {
             const NormalSpec load = normal_load(force, approach);
-            const SolverSpec solver = solver_spec(backend, tol, certificate_tol, max_iter);
+            const SolverOptions solver = solver_spec(backend, tol, certificate_tol, max_iter);
             NormalResult r = [&] {
               py::gil_scoped_release release;
               return NormalResult{self.grid, self.problem.solve(load, solver), {}};
@@ -299,7 +297,7 @@ void bind_problems(py::module_& m) {
             load.normal = normal_load(force, approach);
             load.modes = {mode(shift_x, "shift_x", force_x, "force_x"), mode(shift_y, "shift_y", force_y, "force_y"),
                           mode(angle, "angle", moment_z, "moment_z")};
-            const SolverSpec solver = solver_spec(backend, tol, certificate_tol, max_iter);
+            const SolverOptions solver = solver_spec(backend, tol, certificate_tol, max_iter);
             TangentialResult r = [&] {
               py::gil_scoped_release release;
               return TangentialResult{self.problem.grid(), self.problem.step(load, solver), {}};
@@ -324,7 +322,7 @@ void bind_problems(py::module_& m) {
              const std::string& backend, double tol, double certificate_tol, int max_iter) {
             const RollingLoad load =
                 rolling_load(force, approach, creepage_x, force_x, creepage_y, force_y, spin, moment_z, velocity);
-            const SolverSpec solver = solver_spec(backend, tol, certificate_tol, max_iter);
+            const SolverOptions solver = solver_spec(backend, tol, certificate_tol, max_iter);
             TangentialResult r = [&] {
               py::gil_scoped_release release;
               return TangentialResult{self.problem.grid(), self.problem.steady_rolling(load, solver), {}};
@@ -349,7 +347,7 @@ void bind_problems(py::module_& m) {
              double velocity, const std::string& backend, double tol, double certificate_tol, int max_iter) {
             const RollingLoad load =
                 rolling_load(force, approach, creepage_x, force_x, creepage_y, force_y, spin, moment_z, velocity);
-            const SolverSpec solver = solver_spec(backend, tol, certificate_tol, max_iter);
+            const SolverOptions solver = solver_spec(backend, tol, certificate_tol, max_iter);
             TangentialResult r = [&] {
               py::gil_scoped_release release;
               return TangentialResult{self.problem.grid(), self.problem.roll(load, distance, solver), {}};

@@ -8,7 +8,7 @@
 namespace dc::dynamics {
 
 FiniteBodyContact::FiniteBodyContact(const Case& c) : grid_(c.grid), material_(c.fe_body->material) {
-  const OperatorKind kind = c.solver.operator_kind == "dense" ? OperatorKind::dense : OperatorKind::fft;
+  const OperatorKind kind = c.solver.operator_kind == OperatorKind::dense ? OperatorKind::dense : OperatorKind::fft;
   contact_ = std::make_unique<FiniteContact>(*c.fe_body, c.grid, c.materials.base, kind);
   const fe::ElasticBody& body = contact_->body();
   const Eigen::Vector3d& centre = body.centre_of_mass();

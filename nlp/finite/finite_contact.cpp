@@ -41,7 +41,7 @@ FiniteContact::FiniteContact(const FeBodySpec& spec, const Grid& grid, const Ela
   normal_->set_exact_hessian_limit(static_cast<int>(kSaddleExactLimit));  // as the tangential program's below
 }
 
-FiniteNormalSolution FiniteContact::solve_normal(const NormalSpec& control, const SolverSpec& solver,
+FiniteNormalSolution FiniteContact::solve_normal(const NormalSpec& control, const SolverOptions& solver,
                                                  const ProgressCallback& progress) {
   FiniteNormalSolution out;
   if (program_ == "sparse") {
@@ -59,18 +59,18 @@ FiniteNormalSolution FiniteContact::solve_normal(const NormalSpec& control, cons
   return out;
 }
 
-NormalSolution FiniteContact::solve_sparse(const NormalSpec& control, const SolverSpec& solver,
+NormalSolution FiniteContact::solve_sparse(const NormalSpec& control, const SolverOptions& solver,
                                            const ProgressCallback& progress, Eigen::VectorXd& body_displacement) {
   return solve_sparse(profile_heights(), control, solver, progress, body_displacement);
 }
 
 NormalSolution FiniteContact::solve_sparse(const std::vector<double>& h, const NormalSpec& control,
-                                           const SolverSpec& solver, const ProgressCallback& progress,
+                                           const SolverOptions& solver, const ProgressCallback& progress,
                                            Eigen::VectorXd& body_displacement) {
   // The backends of saddle_backend_order in turn: the first result the condensed program's
   // certificate accepts, else the best (one rule: certified_solve.hpp).
   NormalSolution first;
-  first.report.requested = solver.backend;
+  first.report.requested = to_string(solver.backend);
   AttemptLedger<NormalSolution> ledger(first);
   Eigen::VectorXd kept_displacement;
   const std::vector<std::string> order = saddle_backend_order(solver.backend);
@@ -85,10 +85,11 @@ NormalSolution FiniteContact::solve_sparse(const std::vector<double>& h, const N
   // body's rows eliminated by the kept factor (NLopt cannot take the rows themselves: with them
   // held densely it did not converge). Small bodies only: each NLopt evaluation costs a pair of
   // triangular solves, and NLopt takes hundreds.
-  if (!ledger.converged() && solver.backend == "auto" && solver.fallback && body_->dofs() <= kSaddleFallbackDofs) {
+  if (!ledger.converged() && solver.backend == Backend::automatic && solver.fallback &&
+      body_->dofs() <= kSaddleFallbackDofs) {
     normal_->set_heights(h);
-    SolverSpec nlopt = solver;
-    nlopt.backend = "nlopt";
+    SolverOptions nlopt = solver;
+    nlopt.backend = Backend::nlopt;
     nlopt.fallback = false;
     NormalSolution sol = normal_->solve(control, nlopt, progress);
     sol.report.fallback_used = true;
@@ -103,13 +104,13 @@ NormalSolution FiniteContact::solve_sparse(const std::vector<double>& h, const N
 }
 
 NormalSolution FiniteContact::solve_sparse_by(const std::string& backend, const std::vector<double>& h,
-                                              const NormalSpec& control, const SolverSpec& solver,
+                                              const NormalSpec& control, const SolverOptions& solver,
                                               const ProgressCallback& progress, Eigen::VectorXd& body_displacement) {
   const auto start = std::chrono::steady_clock::now();
   const SaddleNormalOutcome o = solve_saddle_normal(*body_, stress_rows(), *face_, *halfspace_normal_, grid_, h, control,
                                                     solve_options(solver, progress), backend);
   NormalSolution sol;
-  sol.report.requested = solver.backend;
+  sol.report.requested = to_string(solver.backend);
   sol.report.backend = backend;
   sol.report.operator_kind = "sparse+" + halfspace_normal_->kind();
   sol.report.message = o.message;
@@ -204,11 +205,11 @@ void FiniteContact::use_sparse_tangential() {
   form.body_rows = [this](double traction_unit, double energy_unit, double force_scale) {
     return saddle_body_block(*body_, stress_rows(), *face_, grid_, {0, 1}, traction_unit, energy_unit, force_scale).block;
   };
-  form.normal = [this](const std::vector<double>& h, const NormalSpec& load, const SolverSpec& solver) {
+  form.normal = [this](const std::vector<double>& h, const NormalSpec& load, const SolverOptions& solver) {
     Eigen::VectorXd u;
     return solve_sparse(h, load, solver, {}, u);
   };
-  form.backends = [](const std::string& requested, bool) { return saddle_backend_order(requested); };
+  form.backends = [](Backend requested, bool) { return saddle_backend_order(requested); };
   form.exact_hessian_limit = static_cast<int>(2 * kSaddleExactLimit);  // (tau_x, tau_y): two per element
   form.condensed_fallback = body_->dofs() <= kSaddleFallbackDofs;
   tangential_->use_sparse_form(std::move(form));

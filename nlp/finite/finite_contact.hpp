@@ -39,7 +39,7 @@ class FiniteContact {
 
   /// The normal problem by the body's `program`: condensed (any backend) or the sparse saddle
   /// form (Ipopt; saddle_form.hpp), both certified on the condensed program.
-  FiniteNormalSolution solve_normal(const NormalSpec& control, const SolverSpec& solver,
+  FiniteNormalSolution solve_normal(const NormalSpec& control, const SolverOptions& solver,
                                     const ProgressCallback& progress = {});
   /// The tangential problem (shift, torsion, histories; pressure-dependent friction through
   /// (3.31)-(3.32)) on the condensed compliances, built on first use with `friction`. The
@@ -81,18 +81,18 @@ class FiniteContact {
   /// The face's heights tilted by the given tilt.
   std::vector<double> profile_heights() const;
   /// The moment rows of a load line (finite_tilt.cpp).
-  NormalSolution solve_tilted(const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress);
+  NormalSolution solve_tilted(const NormalSpec& control, const SolverOptions& solver, const ProgressCallback& progress);
 
   /// The sparse saddle form (saddle_form.hpp) on the profile's heights or on given ones: the
   /// backends of saddle_backend_order in turn, each certified on the condensed program.
-  NormalSolution solve_sparse(const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress,
+  NormalSolution solve_sparse(const NormalSpec& control, const SolverOptions& solver, const ProgressCallback& progress,
                               Eigen::VectorXd& body_displacement);
-  NormalSolution solve_sparse(const std::vector<double>& heights, const NormalSpec& control, const SolverSpec& solver,
+  NormalSolution solve_sparse(const std::vector<double>& heights, const NormalSpec& control, const SolverOptions& solver,
                               const ProgressCallback& progress, Eigen::VectorXd& body_displacement);
   /// The tangential problem by the sparse form (TangentialProblem::use_sparse_form).
   void use_sparse_tangential();
   NormalSolution solve_sparse_by(const std::string& backend, const std::vector<double>& heights,
-                                 const NormalSpec& control, const SolverSpec& solver, const ProgressCallback& progress,
+                                 const NormalSpec& control, const SolverOptions& solver, const ProgressCallback& progress,
                                  Eigen::VectorXd& body_displacement);
 };
 

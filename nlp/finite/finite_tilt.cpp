@@ -48,7 +48,7 @@ double contact_size(const NormalSolution& s, const Grid& g) {
 
 }  // namespace
 
-NormalSolution FiniteContact::solve_tilted(const NormalSpec& control, const SolverSpec& solver,
+NormalSolution FiniteContact::solve_tilted(const NormalSpec& control, const SolverOptions& solver,
                                            const ProgressCallback& progress) {
   if (control.control != Control::force)
     throw InputError("fe_body.load_line", "a line of action needs the normal force (normal.force), not an approach");

@@ -95,10 +95,11 @@ Eigen::VectorXd saddle_body_displacement(const fe::ElasticBody& body, const fe::
   return u;
 }
 
-std::vector<std::string> saddle_backend_order(const std::string& requested) {
-  if (requested == "auto" || requested == "ipopt") return {"ipopt"};
+std::vector<std::string> saddle_backend_order(Backend requested) {
+  if (requested == Backend::automatic || requested == Backend::ipopt) return {"ipopt"};
   throw InputError("solver.backend", "the sparse form (fe_body.program 'sparse') is solved by Ipopt: use 'ipopt' or "
-                                     "'auto', or the condensed program for '" + requested + "'");
+                                     "'auto', or the condensed program for '" +
+                                         std::string(to_string(requested)) + "'");
 }
 
 SaddleNormalOutcome solve_saddle_normal(const fe::ElasticBody& body, const fe::StressEquilibrium& stresses,
@@ -142,7 +143,8 @@ SaddleNormalOutcome solve_saddle_normal(const fe::ElasticBody& body, const fe::S
 
   SaddleNormalOutcome out;
   options.exact_hessian_limit = static_cast<int>(kSaddleExactLimit);
-  out.exact_hessian = options.hessian == "exact" || (options.hessian != "limited-memory" && N <= kSaddleExactLimit);
+  out.exact_hessian =
+      options.hessian == Hessian::exact || (options.hessian != Hessian::limited_memory && N <= kSaddleExactLimit);
   const TimedOutcome run = run_backend(backend, qp, options, [](const QuadraticProgram&, const SolveOptions&) {
     SolveOutcome none;
     none.message = "native: the native solvers take no sparse rows";

@@ -55,7 +55,7 @@ Eigen::VectorXd saddle_body_displacement(const fe::ElasticBody& body, const fe::
 /// InputError("solver.backend") for the others: the native solvers take no sparse rows, and
 /// NLopt's equality algorithms (AUGLAG) held the rows densely and did not converge (residual
 /// 0.99 after 1000 evaluations on a 6 x 6 grid and the coarsest hemisphere).
-std::vector<std::string> saddle_backend_order(const std::string& requested);
+std::vector<std::string> saddle_backend_order(Backend requested);
 /// With backend "auto", a normal problem Ipopt fails on in the sparse form falls back to NLopt on
 /// the condensed program (FiniteContact::solve_normal), a tangential one to the native solver,
 /// then NLopt, on the condensed program (SparseTangentialForm::condensed_fallback), for bodies of

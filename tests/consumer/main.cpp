@@ -8,10 +8,12 @@
 #include <cstdio>
 #include <exception>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <dyncontact/core/case_model.hpp>
+#include <dyncontact/core/errors.hpp>
 #include <dyncontact/core/grid.hpp>
 #include <dyncontact/core/hertz.hpp>
 #include <dyncontact/core/material.hpp>
@@ -66,8 +68,13 @@ int main(int argc, char** argv) try {
   dc::NormalSpec control;
   control.control = dc::Control::force;
   control.value = P;
-  dc::SolverSpec solver;
-  if (argc > 1) solver.backend = argv[1];
+  dc::SolverOptions solver;
+  if (argc > 1) {
+    const std::optional<dc::Backend> backend = dc::backend_from_string(argv[1]);
+    if (!backend)
+      throw dc::InputError("backend", std::string("unknown backend '") + argv[1] + "' (auto, ipopt, nlopt, native)");
+    solver.backend = *backend;
+  }
 
   const dc::NormalSolution solution = problem.solve(control, solver);
   const dc::SolverReport& report = solution.report;

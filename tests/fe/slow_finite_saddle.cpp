@@ -22,7 +22,7 @@ namespace dc {
 namespace {
 
 constexpr double kR = 0.01, kE = 2.1e11, kNu = 0.3;
-constexpr double kCertificateTol = 1e-6;  // SolverSpec's default
+constexpr double kCertificateTol = 1e-6;  // SolverOptions's default
 
 FeBodySpec hemisphere(const std::string& program) {
   FeBodySpec s;
@@ -40,13 +40,13 @@ struct Both {
   double p_max = 0.0;
 };
 
-Both solve_both(const NormalSpec& control, int cells, const std::string& hessian = "auto") {
+Both solve_both(const NormalSpec& control, int cells, Hessian hessian = Hessian::automatic) {
   const double L = 1.2e-3;
   const Grid g = Grid::make(3, cells, cells, -L, L, -L, L);
-  SolverSpec native;
-  native.backend = "native";
-  SolverSpec ipopt;
-  ipopt.backend = "ipopt";
+  SolverOptions native;
+  native.backend = Backend::native;
+  SolverOptions ipopt;
+  ipopt.backend = Backend::ipopt;
   ipopt.hessian = hessian;
   const Elastic base = Elastic::from_E_nu(kE, kNu);
   FiniteContact b(hemisphere("condensed"), g, base);
@@ -90,7 +90,7 @@ TEST(FiniteSaddle, ApproachControlAgreesWithTheCondensedProgram) {
 }
 
 TEST(FiniteSaddle, LimitedMemoryHessianReachesTheSamePoint) {
-  const Both r = solve_both({Control::force, 3000.0}, 10, "limited-memory");
+  const Both r = solve_both({Control::force, 3000.0}, 10, Hessian::limited_memory);
   expect_same_point(r);
 }
 
@@ -100,8 +100,8 @@ TEST(FiniteSaddle, SaddlePointSatisfiesTheFreeBodysEquilibrium) {
   const double L = 1.2e-3;
   const Grid g = Grid::make(3, 10, 10, -L, L, -L, L);
   FiniteContact a(hemisphere("sparse"), g, Elastic::from_E_nu(kE, kNu));
-  SolverSpec ipopt;
-  ipopt.backend = "ipopt";
+  SolverOptions ipopt;
+  ipopt.backend = Backend::ipopt;
   const FiniteNormalSolution s = a.solve_normal({Control::force, 3000.0}, ipopt);
   ASSERT_EQ(s.contact.report.status, SolveStatus::converged) << s.contact.report.message;
   const fe::ElasticBody& body = a.body();
@@ -118,14 +118,14 @@ TEST(FiniteSaddle, SaddlePointSatisfiesTheFreeBodysEquilibrium) {
 }
 
 TEST(FiniteSaddle, TangentialShiftByForceAgreesWithTheCondensedProgram) {
-  const fe::testing::Pair r = fe::testing::solve_both(fe::testing::shift_by_force(0.6), 12, {3, 3, 2}, "ipopt");
+  const fe::testing::Pair r = fe::testing::solve_both(fe::testing::shift_by_force(0.6), 12, {3, 3, 2}, Backend::ipopt);
   fe::testing::expect_same_point(r);
   EXPECT_LT(r.sparse.amplitudes[0], 0.0) << "a force +F_x on the body meets a shift -s_x";
 }
 
 TEST(FiniteSaddle, TangentialTorsionByAngleAgreesWithTheCondensedProgram) {
   // An angle that slips the rim of the contact (a ~ 0.5 mm, mu p0 a / G ~ 4e-3 rad).
-  const fe::testing::Pair r = fe::testing::solve_both(fe::testing::twist_by_angle(3e-3), 12, {3, 3, 2}, "ipopt");
+  const fe::testing::Pair r = fe::testing::solve_both(fe::testing::twist_by_angle(3e-3), 12, {3, 3, 2}, Backend::ipopt);
   fe::testing::expect_same_point(r);
   EXPECT_LT(r.sparse.resultants[2], 0.0) << "a twist +beta of the body meets a moment of the opposite sense";
 }

@@ -24,8 +24,8 @@ TEST(FiniteValidation, StiffFlatCylinderIsBoussinesqPunch) {
   const double a = 0.005, P = 1e5;
   const Grid g = punch_grid(a);
   FiniteContact fc(stiff_flat_cylinder(a), g, Elastic::from_E_nu(kE, kNu));
-  SolverSpec solver;
-  solver.backend = "native";
+  SolverOptions solver;
+  solver.backend = Backend::native;
   const FiniteNormalSolution sol = fc.solve_normal({Control::force, P}, solver);
   ASSERT_EQ(sol.contact.report.status, SolveStatus::converged) << sol.contact.report.message;
   const double Es = kE / (1.0 - kNu * kNu);
@@ -56,8 +56,8 @@ TEST(FiniteValidation, SoftLayerLowersPressureAndIncreasesApproach) {
   s.contact_size = 0.4 * h.a;
   const double L = 2.0 * h.a;
   const Grid g = Grid::make(3, 16, 16, -L, L, -L, L);
-  SolverSpec solver;
-  solver.backend = "native";
+  SolverOptions solver;
+  solver.backend = Backend::native;
   FiniteContact uniform(s, g, Elastic::from_E_nu(kE, kNu));
   const auto u = uniform.solve_normal({Control::force, P}, solver);
   s.regions.push_back({2.0 * h.a, {fe::isotropic_stiffness(0.2 * kE, kNu, "test"), 7800.0}});

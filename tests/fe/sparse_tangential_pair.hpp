@@ -16,7 +16,7 @@ namespace dc::fe::testing {
 
 constexpr double kR = 0.01, kE = 2.1e11, kNu = 0.3, kP = 3000.0, kMu = 0.3;
 constexpr double kHalfWidth = 1.2e-3;  // of the grid (m)
-constexpr double kCertificateTol = 1e-6;  // SolverSpec's default
+constexpr double kCertificateTol = 1e-6;  // SolverOptions's default
 
 inline FeBodySpec hemisphere(const std::string& program, std::array<int, 3> elements, double contact_size = 5e-4) {
   FeBodySpec s;
@@ -35,15 +35,15 @@ struct Pair {
 };
 
 /// The same load on the condensed program (native) and on the sparse form (`backend`).
-inline Pair solve_both(const TangentialLoad& load, int cells, std::array<int, 3> elements, const std::string& backend,
+inline Pair solve_both(const TangentialLoad& load, int cells, std::array<int, 3> elements, Backend backend,
                        double contact_size = 5e-4) {
   const double L = kHalfWidth;
   const Grid g = Grid::make(3, cells, cells, -L, L, -L, L);
   const Elastic base = Elastic::from_E_nu(kE, kNu);
   FiniteContact b(hemisphere("condensed", elements, contact_size), g, base);
   FiniteContact a(hemisphere("sparse", elements, contact_size), g, base);
-  SolverSpec native, sparse;
-  native.backend = "native";
+  SolverOptions native, sparse;
+  native.backend = Backend::native;
   sparse.backend = backend;
   Pair out;
   out.dofs = a.body().dofs();

@@ -36,8 +36,8 @@ Measured press(const FeBodySpec& body, double P, double a_expected, int half = 1
   const double L = 1.5 * a_expected;
   const Grid g = Grid::make(3, 2 * half, 2 * half, -L, L, -L, L);
   FiniteContact fc(body, g, Elastic::from_E_nu(kE, kNu));
-  SolverSpec solver;
-  solver.backend = "native";
+  SolverOptions solver;
+  solver.backend = Backend::native;
   const FiniteNormalSolution s = fc.solve_normal({Control::force, P}, solver);
   EXPECT_EQ(s.contact.report.status, SolveStatus::converged) << s.contact.report.message;
   Measured m{0.0, 0.0, s.contact.force, s.contact.approach, fc.body().dofs()};
@@ -71,8 +71,8 @@ DefaultMeshAgainstHertz default_mesh_against_hertz(double body_E, double body_nu
   const double L = span * h.a;
   const Grid g = Grid::make(3, 32, 32, -L, L, -L, L);
   FiniteContact fc(body, g, Elastic::from_E_nu(kE, kNu));
-  SolverSpec solver;
-  solver.backend = "native";
+  SolverOptions solver;
+  solver.backend = Backend::native;
   const FiniteNormalSolution s = fc.solve_normal({Control::force, P}, solver);
   EXPECT_EQ(s.contact.report.status, SolveStatus::converged) << s.contact.report.message;
   DefaultMeshAgainstHertz out;

@@ -42,10 +42,10 @@ TangentialLoad twist_by_moment() {
 
 Grid grid(int cells) { return Grid::make(3, cells, cells, -kHalfWidth, kHalfWidth, -kHalfWidth, kHalfWidth); }
 
-TangentialSolution solve(const std::string& program, int cells, const std::string& backend, double tol,
+TangentialSolution solve(const std::string& program, int cells, Backend backend, double tol,
                          int max_iter = 1000) {
   FiniteContact body(fe::testing::hemisphere(program, kSmall), grid(cells), Elastic::from_E_nu(fe::testing::kE, fe::testing::kNu));
-  SolverSpec solver;
+  SolverOptions solver;
   solver.backend = backend;
   solver.tol = tol;
   solver.max_iter = max_iter;
@@ -74,10 +74,10 @@ TEST(FiniteIpoptTorsion, DenseBodyComplianceIsTheOperatorColumnByColumn) {
 
 TEST(FiniteIpoptTorsion, CondensedProgramByIpoptIsCertifiedAndAgreesWithNative) {
   fe::testing::Pair r;
-  r.condensed = solve("condensed", 16, "native", 1e-9);
+  r.condensed = solve("condensed", 16, Backend::native, 1e-9);
   // At most 50 iterations: the exact Hessian (an interior point on a QP) takes 18 here; the
   // limited-memory one took 111, and stopped at 1000 uncertified on examples/finite-torsion.json.
-  r.sparse = solve("condensed", 16, "ipopt", 1e-9, 50);
+  r.sparse = solve("condensed", 16, Backend::ipopt, 1e-9, 50);
   expect_same_point(r);
   EXPECT_EQ(r.sparse.report.backend, "ipopt");
   // Ipopt's own verdict, not only the polish's: limited memory stops at the 50 iterations.
@@ -85,11 +85,11 @@ TEST(FiniteIpoptTorsion, CondensedProgramByIpoptIsCertifiedAndAgreesWithNative) 
 }
 
 TEST(FiniteIpoptTorsion, IpoptsPointsArePolishedToTheCertificateOnBothForms) {
-  const TangentialSolution native = solve("condensed", 8, "native", 1e-9);
+  const TangentialSolution native = solve("condensed", 8, Backend::native, 1e-9);
   for (const char* program : {"condensed", "sparse"}) {
     fe::testing::Pair r;
     r.condensed = native;
-    r.sparse = solve(program, 8, "ipopt", 1e-4);
+    r.sparse = solve(program, 8, Backend::ipopt, 1e-4);
     SCOPED_TRACE(program);
     expect_same_point(r);
     EXPECT_TRUE(r.sparse.report.polished) << r.sparse.report.message;
@@ -101,8 +101,8 @@ TEST(FiniteIpoptTorsion, NormalProblemByIpoptBeyondTheHalfSpacesLimitTakesTheExa
   // exact, and Ipopt's own test passes within 30 iterations.
   const Grid g = grid(24);
   FiniteContact body(fe::testing::hemisphere("condensed", kSmall), g, Elastic::from_E_nu(fe::testing::kE, fe::testing::kNu));
-  SolverSpec ipopt;
-  ipopt.backend = "ipopt";
+  SolverOptions ipopt;
+  ipopt.backend = Backend::ipopt;
   ipopt.max_iter = 30;
   const NormalSolution s = body.solve_normal({Control::force, kP}, ipopt).contact;
   EXPECT_EQ(s.report.status, SolveStatus::converged) << s.report.message;
@@ -115,9 +115,9 @@ TEST(FiniteIpoptTorsion, IpoptsNormalPointsArePolishedToTheCertificateOnBothForm
   // the condensed program finishes it; the native solution's.
   const Grid g = grid(8);
   const Elastic steel = Elastic::from_E_nu(fe::testing::kE, fe::testing::kNu);
-  SolverSpec native, ipopt;
-  native.backend = "native";
-  ipopt.backend = "ipopt";
+  SolverOptions native, ipopt;
+  native.backend = Backend::native;
+  ipopt.backend = Backend::ipopt;
   ipopt.certificate_tol = 1e-10;
   FiniteContact condensed(fe::testing::hemisphere("condensed", kSmall), g, steel);
   const NormalSolution reference = condensed.solve_normal({Control::force, kP}, native).contact;

@@ -53,8 +53,8 @@ Compared finite_against_local() {
   const double a = hertz::sphere(kR, kP, pair.E_star()).a;
   const double L = 1.2 * a;
   const Grid g = Grid::make(3, 32, 32, -L, L, -L, L);
-  SolverSpec solver;
-  solver.backend = "native";
+  SolverOptions solver;
+  solver.backend = Backend::native;
 
   ProfileSpec sphere;
   sphere.type = ProfileType::sphere;

@@ -26,7 +26,7 @@ constexpr double kHalfWidthTest = fe::testing::kHalfWidth;
 
 TEST(FiniteSparseTangential, ShiftByForceAgreesWithTheCondensedProgram) {
   const long ordered_before = mumps_analyses_ordered_by_us();
-  const fe::testing::Pair r = solve_both(shift_by_force(0.6), 8, kSmall, "ipopt");
+  const fe::testing::Pair r = solve_both(shift_by_force(0.6), 8, kSmall, Backend::ipopt);
   expect_same_point(r);
   EXPECT_EQ(r.sparse.report.backend, "ipopt");
   // MUMPS took our ordering (nlp/process_tuning/mumps_ordering_hook.hpp) for the normal and the tangential
@@ -40,12 +40,12 @@ TEST(FiniteSparseTangential, ShiftByForceAgreesWithTheCondensedProgram) {
 TEST(FiniteSparseTangential, OnlyIpoptTakesTheSparseForm) {
   const Grid g = Grid::make(3, 4, 4, -1.2e-3, 1.2e-3, -1.2e-3, 1.2e-3);
   FiniteContact a(fe::testing::hemisphere("sparse", kSmall), g, Elastic::from_E_nu(fe::testing::kE, fe::testing::kNu));
-  for (const char* backend : {"nlopt", "native"}) {
-    SolverSpec solver;
+  for (const Backend backend : {Backend::nlopt, Backend::native}) {
+    SolverOptions solver;
     solver.backend = backend;
     try {
       a.tangential_problem(FrictionLaw::coulomb(fe::testing::kMu)).step(shift_by_force(0.6), solver);
-      FAIL() << backend << " accepted the sparse form";
+      FAIL() << to_string(backend) << " accepted the sparse form";
     } catch (const InputError& e) {
       EXPECT_EQ(e.key(), "solver.backend");
     }
@@ -59,12 +59,12 @@ TEST(FiniteSparseTangential, NormalProblemFallsBackToNloptOnTheCondensedProgram)
   const Grid g = Grid::make(3, 6, 6, -kHalfWidthTest, kHalfWidthTest, -kHalfWidthTest, kHalfWidthTest);
   const Elastic steel = Elastic::from_E_nu(fe::testing::kE, fe::testing::kNu);
   FiniteContact condensed(fe::testing::hemisphere("condensed", kSmall), g, steel);
-  const FiniteNormalSolution reference = condensed.solve_normal({Control::force, fe::testing::kP}, SolverSpec{});
+  const FiniteNormalSolution reference = condensed.solve_normal({Control::force, fe::testing::kP}, SolverOptions{});
   ASSERT_EQ(reference.contact.report.status, SolveStatus::converged);
   FiniteContact sparse(fe::testing::hemisphere("sparse", kSmall), g, steel);
   test::install_faults_from_environment();
   setenv("DYNCONTACT_FAULT", "ipopt:fail", 1);
-  const FiniteNormalSolution s = sparse.solve_normal({Control::force, fe::testing::kP}, SolverSpec{});
+  const FiniteNormalSolution s = sparse.solve_normal({Control::force, fe::testing::kP}, SolverOptions{});
   unsetenv("DYNCONTACT_FAULT");
   ASSERT_EQ(s.contact.report.status, SolveStatus::converged) << s.contact.report.message;
   EXPECT_TRUE(s.contact.report.fallback_used);
@@ -84,7 +84,7 @@ TEST(FiniteSparseTangential, TangentialProblemFallsBackToTheCondensedProgram) {
   // program; both reach the condensed program's certified point.
   test::install_faults_from_environment();
   setenv("DYNCONTACT_FAULT", "ipopt:fail", 1);
-  const fe::testing::Pair r = solve_both(shift_by_force(0.6), 8, kSmall, "auto");
+  const fe::testing::Pair r = solve_both(shift_by_force(0.6), 8, kSmall, Backend::automatic);
   unsetenv("DYNCONTACT_FAULT");
   expect_same_point(r);
   EXPECT_TRUE(r.sparse.report.fallback_used);

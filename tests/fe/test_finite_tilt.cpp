@@ -48,8 +48,8 @@ struct TiltRun {
   TiltRun(const FeBodySpec& s, double a, double P)
       : grid(Grid::make(3, 24, 24, -1.5 * a, 1.5 * a, -1.5 * a, 1.5 * a)),
         contact(s, grid, Elastic::from_E_nu(kE, kNu)) {
-    SolverSpec solver;
-    solver.backend = "native";
+    SolverOptions solver;
+    solver.backend = Backend::native;
     solution = contact.solve_normal({Control::force, P}, solver);
   }
 };
@@ -66,7 +66,7 @@ TEST(FiniteTilt, EccentricLoadTiltsAStiffHemisphereByEOverR) {
   const Grid& g = run.grid;
   FiniteContact& fc = run.contact;
   const FiniteNormalSolution& sol = run.solution;
-  const SolverSpec solver;
+  const SolverOptions solver;
   ASSERT_EQ(sol.contact.report.status, SolveStatus::converged) << sol.contact.report.message;
   // The moment rows hold: the pressure's centre is on the load line (to the certificate).
   const auto [mx, my] = pressure_moments(sol.contact.pressure, g);

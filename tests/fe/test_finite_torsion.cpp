@@ -33,7 +33,7 @@ class StiffPunch {
     const FeBodySpec s = fe::testing::stiff_flat_cylinder(a, kE, kNu);
     const Grid g = Grid::make(3, n, n, -1.25 * a, 1.25 * a, -1.25 * a, 1.25 * a);
     contact_ = std::make_unique<FiniteContact>(s, g, Elastic::from_E_nu(kE, kNu));
-    solver_.backend = "native";
+    solver_.backend = Backend::native;
     solver_.tol = 1e-10;
   }
 
@@ -55,7 +55,7 @@ class StiffPunch {
 
   double P_;
   std::unique_ptr<FiniteContact> contact_;
-  SolverSpec solver_;
+  SolverOptions solver_;
 };
 
 TEST(FiniteTorsion, AngleAndMomentHaveTheLocalProblemsSigns) {

@@ -15,7 +15,7 @@
 namespace dc::test {
 
 /// The native backend alone (no fallback), tol 1e-10, at most 2000 iterations.
-inline SolverSpec native_tangential_solver() { return native_solver_spec(2000); }
+inline SolverOptions native_tangential_solver() { return native_solver_spec(2000); }
 
 inline ModeControl amplitude(double v) { return {ModeControl::Kind::amplitude, v}; }
 inline ModeControl resultant(double v) { return {ModeControl::Kind::resultant, v}; }
