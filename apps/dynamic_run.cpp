@@ -6,9 +6,9 @@
 #include <sstream>
 #include <vector>
 
-#include "cli_common.hpp"
 #include "dynamic_series.hpp"
 #include "dynamic_sweep.hpp"
+#include "exit_codes.hpp"
 #include "fields_writer.hpp"
 #include "gnuplot_figures.hpp"
 #include "interrupt_handler.hpp"

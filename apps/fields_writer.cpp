@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <string>
 
-#include "cli_common.hpp"
 #include "output_files.hpp"
 
 namespace dc::cli {

@@ -8,8 +8,8 @@
 #include <memory>
 #include <utility>
 
-#include "cli_common.hpp"
 #include "errors.hpp"
+#include "exit_codes.hpp"
 #include "interrupt.hpp"
 
 #ifdef DYNCONTACT_WITH_FE

@@ -12,8 +12,8 @@
 #include <sstream>
 #include <vector>
 
-#include "cli_common.hpp"
 #include "errors.hpp"
+#include "exit_codes.hpp"
 #include "gnuplot_figures.hpp"
 #include "hertz.hpp"
 #include "interrupt.hpp"

@@ -10,7 +10,6 @@
 #include <string>
 
 #include "analytic_reference.hpp"
-#include "cli_common.hpp"
 #include "gnuplot_figures.hpp"
 #include "output_files.hpp"
 

@@ -4,7 +4,6 @@
 #include <filesystem>
 
 #include "analytic_reference.hpp"
-#include "cli_common.hpp"
 #include "output_files.hpp"
 
 #ifndef DYNCONTACT_VERSION

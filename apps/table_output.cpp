@@ -6,7 +6,6 @@
 #include <functional>
 #include <sstream>
 
-#include "cli_common.hpp"
 #include "gnuplot_figures.hpp"
 #include "output_files.hpp"
 

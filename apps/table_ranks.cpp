@@ -13,7 +13,6 @@
 #include <mpi.h>
 #endif
 
-#include "cli_common.hpp"
 #include "errors.hpp"
 #include "interrupt.hpp"
 
@@ -153,16 +152,6 @@ LaunchRank launch_rank() {
     }
   }
   return r;
-}
-
-int report_input_errors_on_root(const std::function<int()>& command) {
-  const bool root = launch_rank().root();
-  try {
-    return command();
-  } catch (const InputError&) {
-    if (root) throw;
-    return kExitBadInput;
-  }
 }
 
 bool built_with_mpi() {

@@ -28,10 +28,6 @@ LaunchRank launch_rank();
 /// Whether this build can run across MPI ranks.
 bool built_with_mpi();
 
-/// Runs a command on this rank; under mpirun every rank reads the same input, so an InputError
-/// propagates from rank 0 only (the other ranks return the bad-input exit code quietly).
-int report_input_errors_on_root(const std::function<int()>& command);
-
 /// Runs work(u) for every u in [0, units). Returns, on rank 0, the results in unit order; on
 /// other ranks an empty vector. `done(finished, units)` is called on rank 0 (from this thread)
 /// as results arrive. `work` must not throw (a unit reports its own failure in its result);

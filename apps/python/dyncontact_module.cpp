@@ -15,12 +15,12 @@
 
 #include "blas_threads.hpp"
 #include "case_model.hpp"
-#include "cli_common.hpp"
 #include "errors.hpp"
 #include "fields_writer.hpp"
 #include "linear_operator.hpp"
 #include "module_common.hpp"
 #include "output_files.hpp"
+#include "output_folder.hpp"
 #include "python_limits.hpp"
 #include "python_runs.hpp"
 #include "result_limits.hpp"

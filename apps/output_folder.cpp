@@ -1,4 +1,6 @@
-// Loading a case for the subcommands: file, name, overrides, backend, validation.
+// The output folder of a run: created, locked and cleared of an earlier run's result files.
+#include "output_folder.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -9,30 +11,10 @@
 #include <system_error>
 #include <vector>
 
-#include "cli_common.hpp"
 #include "errors.hpp"
 #include "output_files.hpp"
 
 namespace dc::cli {
-
-Case load_case(const std::string& path, const std::vector<std::string>& overrides, const std::string& backend) {
-  nlohmann::json doc = read_case_file(path);
-  if (doc.is_object() && !doc.contains("name")) {
-    const std::string stem = std::filesystem::path(path).stem().string();
-    doc["name"] = stem.empty() ? std::string("case") : stem;
-  }
-  for (const auto& assignment : overrides) apply_override(doc, assignment);
-  if (!backend.empty()) {
-    if (!doc.is_object()) throw InputError("case", "expected an object at the top level");
-    if (!doc.contains("solver") || doc["solver"].is_null()) doc["solver"] = nlohmann::json::object();
-    if (!doc["solver"].is_object()) throw InputError("solver", "expected an object");
-    doc["solver"]["backend"] = backend;
-  }
-  // Relative table paths were resolved against the case file's folder by read_case_file;
-  // paths given with --set are relative to the working directory.
-  return build_case(doc, ".");
-}
-
 namespace {
 
 bool numbered(const std::string& name, const std::string& stem, const std::string& ext) {
@@ -101,17 +83,6 @@ OutputFolder open_output_folder(const Case& c, const std::string& cli_out, const
     if (ec) throw InputError(key, "cannot remove the earlier result '" + file.string() + "': " + ec.message());
   }
   return folder;
-}
-
-std::string prepare_output_dir(const Case& c, const std::string& cli_out) {
-  OutputFolder folder = open_output_folder(c, cli_out);
-  static std::vector<std::unique_ptr<OutputFolderLock>> held;  // released when the process ends
-  held.push_back(std::move(folder.lock));
-  return folder.dir;
-}
-
-void not_implemented(ProblemKind kind) {
-  throw InputError("problem", std::string("'") + to_string(kind) + "' is not implemented yet");
 }
 
 }  // namespace dc::cli
