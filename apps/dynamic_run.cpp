@@ -1,5 +1,6 @@
 #include "dynamic_run.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -9,14 +10,18 @@
 #include "dynamic_series.hpp"
 #include "dynamic_sweep.hpp"
 #include "exit_codes.hpp"
+#include "fe_body_estimate.hpp"
 #include "fields_writer.hpp"
 #include "gnuplot_figures.hpp"
 #include "interrupt_handler.hpp"
 #include "output_files.hpp"
+#include "progress.hpp"
 #include "result_limits.hpp"
 #include "summary_writer.hpp"
 #ifdef DYNCONTACT_WITH_FE
 #include "body_snapshots.hpp"
+#include "elastic_body.hpp"
+#include "finite_body_contact.hpp"
 #endif
 
 namespace dc::cli {
@@ -24,6 +29,8 @@ namespace {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
+
+json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 /// The contact fields of a step (fields.csv's columns); zero without contact.
 StaticFields step_fields(const Case& c, const dynamics::ContactState& cs) {
@@ -35,30 +42,73 @@ StaticFields step_fields(const Case& c, const dynamics::ContactState& cs) {
   return normal_fields(std::vector<double>(c.grid.size(), 0.0), 1e-9);
 }
 
-/// One figure per plotted quantity, every run's curves in it (`runs`: time series file and
-/// label; one run without a label for a single run).
-std::vector<GnuplotFigure> figures(const Case& c, const std::vector<std::pair<std::string, std::string>>& runs) {
-  std::vector<GnuplotFigure> out;
-  for (const DynamicPlotSeries& s : dynamic_plot_series(c.dimension)) {
-    std::ostringstream b;
-    b << "set datafile separator \",\"\nset key top right noenhanced\nset grid\nset xlabel \"time (s)\"\n"
-      << "set ylabel \"" << s.ylabel << "\"\nset title \"" << c.name << "\" noenhanced\nplot ";
-    // A sweep: a colour per run, a dash pattern per column.
-    for (std::size_t r = 0; r < runs.size(); ++r)
-      for (std::size_t k = 0; k < s.columns.size(); ++k) {
-        const auto& [file, label] = runs[r];
-        b << (r + k == 0 ? "" : ", ") << "\"" << file << "\" using 1:" << s.columns[k].first
-          << " skip 1 with lines lw 2";
-        if (runs.size() > 1) b << " lc " << r + 1 << " dt " << k + 1;
-        b << " title \"" << (label.empty() ? s.columns[k].second : label + ": " + s.columns[k].second) << "\"";
-      }
-    b << "\n";
-    out.push_back({s.stem, b.str()});
+}  // namespace
+
+DynamicOutcome simulate_dynamic(const Case& c, bool progress,
+                                const std::function<void(const dynamics::DynamicSample&)>& on_step) {
+  DynamicOutcome out;
+  check_fe_body_fits(c);
+#ifdef DYNCONTACT_WITH_FE
+  dynamics::DynamicSimulation sim(c, dynamics::make_finite_body(c));
+#else
+  dynamics::DynamicSimulation sim(c);  // an fe_body: an input error saying how to build with it
+#endif
+  std::ostringstream series;
+  series << kTimeseriesColumns;
+  const auto start = std::chrono::steady_clock::now();
+  Progress line("dynamic", progress);
+  const double t_end = c.dynamic->t_end;
+  out.result = sim.run([&](const dynamics::DynamicSample& s) {
+    append_timeseries_row(series, s);
+    if (on_step) on_step(s);
+    if (progress) line.time(s.state.time, t_end);
+  });
+  line.finish();
+  out.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.timeseries = series.str();
+
+  const dynamics::DynamicResult& r = out.result;
+  const auto& sp = *c.dynamic;
+  json summary = summary_header(c);
+  summary["status"] = r.completed ? "completed" : r.interrupted ? "interrupted" : "stopped";
+  summary["message"] = r.status;
+  summary["steps"] = r.steps;
+  summary["rejected_steps"] = r.rejected_steps;
+  summary["final"] = {{"time", r.final.time}, {"position", vec(r.final.position)},
+                      {"velocity", vec(r.final.velocity)}, {"omega", vec(r.final.omega)}};
+  summary["timeseries"] = "timeseries.csv";
+  summary["models"] = {{"normal_model", to_string(sp.normal_model)},
+                       {"contact_model", to_string(sp.contact_model)},
+                       {"contact_model_used", r.contact_model},
+                       {"scheme", sp.bdf2 ? "bdf2" : "bdf1"},
+                       {"friction", c.friction ? to_string(c.friction->law) : "none (frictionless)"}};
+  summary["solver"] = {{"backend", to_string(c.solver.backend)},
+                       {"backends_used", r.backends},
+                       {"fallback_steps", r.fallback_steps},
+                       {"status", r.completed ? "converged" : "stopped"},
+                       {"newton_iterations", r.newton_iterations},
+                       {"contact_solves", r.contact_solves},
+                       {"time_s", out.elapsed},
+                       {"certificate", {{"worst", r.worst_certificate}, {"last", r.last_certificate}}}};
+  summary["balances"] = {{"momentum", r.momentum_imbalance}, {"energy", r.energy_imbalance}};
+  out.limits = r.limits;
+  summary["limits"] = limits_json(out.limits);
+#ifdef DYNCONTACT_WITH_FE
+  if (const dynamics::FiniteBody* body = sim.finite_body()) {  // as for problem "finite"
+    summary["body_dofs"] = body->elastic_body().dofs();
+    summary["body_elements"] = body->elastic_body().mesh().elements.size();
+    summary["max_body_displacement"] = body->max_displacement();
+    summary["mesh_time_s"] = body->mesh_seconds();
+    summary["factorisation_time_s"] = body->elastic_body().factorisation_seconds();
+    summary["body"] = {{"mass", sim.body().mass()},
+                       {"inertia", {sim.body().inertia_body()(0, 0), sim.body().inertia_body()(1, 1),
+                                    sim.body().inertia_body()(2, 2)}},
+                       {"radius", body->centre_height()}};
   }
+#endif
+  out.summary = std::move(summary);
   return out;
 }
-
-}  // namespace
 
 int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   json snapshots = json::array();
@@ -88,7 +138,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
 #endif
   if (c.output.plots && !r.interrupted) {  // an interrupted run writes its data, not figures
     json plots = json::array();
-    for (const auto& img : render_gnuplot(dir, c.name, figures(c, {{"timeseries.csv", ""}})))
+    for (const auto& img : render_gnuplot(dir, c.name, timeseries_figures(c, {{"timeseries.csv", ""}})))
       plots.push_back(fs::path(img).filename().string());
     files["plots"] = plots;
   }
@@ -135,7 +185,7 @@ int run_dynamic_sweep(const Case& c, const std::string& dir, bool quiet) {
     std::vector<std::pair<std::string, std::string>> runs;
     for (std::size_t k = 0; k < out.files.size(); ++k) runs.emplace_back(out.files[k], out.labels[k]);
     json plots = json::array();
-    for (const auto& img : render_gnuplot(dir, c.name, figures(c, runs))) plots.push_back(fs::path(img).filename().string());
+    for (const auto& img : render_gnuplot(dir, c.name, timeseries_figures(c, runs))) plots.push_back(fs::path(img).filename().string());
     files["plots"] = plots;
   }
   summary["files"] = files;

@@ -1,11 +1,36 @@
 #pragma once
 // `dyncontact solve` for problem "dynamic" (CASES.md): the moving massive body with the contact
-// solved in every step; summary.json, timeseries.csv, plots of every series, progress on stderr.
+// solved in every step; summary.json, timeseries.csv (dynamic_series.hpp), plots of every series,
+// progress on stderr. The run without its files is simulate_dynamic (also the Python module's).
+#include <functional>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "case_model.hpp"
+#include "dynamic_simulation.hpp"
+#include "result_limits.hpp"
 
 namespace dc::cli {
+
+/// The run of a "dynamic" case without its files: summary.json's content (without "files") and
+/// timeseries.csv's text. run_dynamic writes them; the Python module returns them (the time
+/// series as NumPy columns).
+struct DynamicOutcome {
+  dynamics::DynamicResult result;
+  nlohmann::json summary;  ///< summary.json without "files" (CASES.md "dynamic")
+  std::string timeseries;  ///< timeseries.csv: a header line, one row per accepted step
+  double elapsed = 0.0;    ///< wall time of the run (s)
+  std::vector<ResultLimit> limits;  ///< before and after the run (dynamic_limits.hpp); also summary["limits"]
+};
+
+/// Runs the case; `on_step` (optional) after every accepted step, e.g. to write snapshots; a
+/// progress line on stderr when `progress`. Never throws for non-convergence (the summary's
+/// status says where and why the run stopped); throws InputError for what dynamic_limits_before
+/// refuses before the run. The result limits are in `limits` and summary["limits"].
+DynamicOutcome simulate_dynamic(const Case& c, bool progress,
+                                const std::function<void(const dynamics::DynamicSample&)>& on_step = {});
 
 /// Runs the case into `dir`; returns the exit code (0, or kExitUnconverged when the run stopped
 /// early: the time series so far is written and summary.json says when and why).

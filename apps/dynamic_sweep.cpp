@@ -1,7 +1,7 @@
 #include "dynamic_sweep.hpp"
 
 #include "dynamic_limits.hpp"
-#include "dynamic_series.hpp"
+#include "dynamic_run.hpp"
 #include "errors.hpp"
 #include "progress.hpp"
 #include "table_ranks.hpp"

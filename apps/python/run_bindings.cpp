@@ -1,7 +1,7 @@
 // The runs in time for Python: the dynamic simulation of a "dynamic" case (the C++ name,
 // DynamicSimulation) and the runs of a paper_cylinder case, returned as the summary dict with the
 // time series as NumPy columns (the columns of timeseries.csv). The runs and their summaries are
-// the command line's (apps/dynamic_series.hpp, apps/paper_cylinder_run.hpp).
+// the command line's (apps/dynamic_run.hpp, apps/paper_cylinder_run.hpp).
 #include <pybind11/stl.h>
 
 #include <cmath>
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "case_model.hpp"
-#include "dynamic_series.hpp"
+#include "dynamic_run.hpp"
 #include "dynamic_sweep.hpp"
 #include "module_common.hpp"
 #include "paper_cylinder_run.hpp"
