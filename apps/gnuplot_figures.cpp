@@ -18,7 +18,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "interrupt_handler.hpp"
+#include "interrupt_signals.hpp"
 #include "output_files.hpp"
 
 namespace dc::cli {

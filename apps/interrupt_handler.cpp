@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "interrupt.hpp"
+#include "interrupt_signals.hpp"
 #include "output_files.hpp"
 
 namespace dc::cli {
@@ -19,17 +20,6 @@ namespace {
 
 std::mutex g_last_file_mutex;
 std::string g_last_path, g_last_text;
-
-/// SIGINT and SIGTERM: blocked in the main thread and every thread it starts, and taken by the
-/// watchdog with sigtimedwait, so no library's handler (Gmsh's, METIS's: GKlib takes SIGTERM for
-/// its own errors) can swallow them.
-sigset_t interrupt_signals() {
-  sigset_t set;
-  sigemptyset(&set);
-  sigaddset(&set, SIGINT);
-  sigaddset(&set, SIGTERM);
-  return set;
-}
 
 /// For a signal delivered to a thread started before main (a library's, with every signal open):
 /// the flag only (async-signal-safe); the watchdog sees it.
@@ -95,11 +85,6 @@ void install_interrupt_handlers() {
     sigaction(SIGTERM, &action, nullptr);
     std::thread(watchdog).detach();
   });
-}
-
-void unblock_interrupt_signals() {
-  const sigset_t set = interrupt_signals();
-  pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
 }
 
 void set_interrupt_last_file(const std::string& path, const std::string& text) {

@@ -1,6 +1,7 @@
 #pragma once
 // SIGINT/SIGTERM for the command line: a watchdog thread takes them (sigwait) and raises dc's
-// interrupt flag (core/interrupt.hpp); a second signal ends the program at once.
+// interrupt flag (core/interrupt.hpp); a second signal ends the program at once. The signals and
+// their unblocking in a child process: interrupt_signals.hpp.
 #include <string>
 
 namespace dc::cli {
@@ -12,9 +13,6 @@ inline constexpr double kInterruptGraceSeconds = 0.5;
 /// Blocks SIGINT and SIGTERM in the calling thread (and so in every thread it starts) and starts
 /// the watchdog that takes them (once, at start-up, before any other thread).
 void install_interrupt_handlers();
-
-/// For a child process between fork and exec: SIGINT and SIGTERM delivered again (async-signal-safe).
-void unblock_interrupt_signals();
 
 /// A file the watchdog writes (whole: a temporary renamed into place) before it ends the process,
 /// e.g. an "interrupted" summary.json; an empty path clears it. Set before the work it covers.
