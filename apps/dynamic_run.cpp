@@ -33,13 +33,13 @@ namespace fs = std::filesystem;
 json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 /// The contact fields of a step (fields.csv's columns); zero without contact.
-StaticFields step_fields(const Case& c, const dynamics::ContactState& cs) {
+output::StaticFields step_fields(const Case& c, const dynamics::ContactState& cs) {
   if (cs.fields) {
     const TangentialSolution& t = *cs.fields;
     return {t.normal.pressure, t.tx, t.ty, t.sx, t.sy, t.bound, t.state, 0.0};
   }
-  if (cs.pressure) return normal_fields(*cs.pressure, 1e-9);
-  return normal_fields(std::vector<double>(c.grid.size(), 0.0), 1e-9);
+  if (cs.pressure) return output::normal_fields(*cs.pressure, 1e-9);
+  return output::normal_fields(std::vector<double>(c.grid.size(), 0.0), 1e-9);
 }
 
 }  // namespace
@@ -54,12 +54,12 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
   dynamics::DynamicSimulation sim(c);  // an fe_body: an input error saying how to build with it
 #endif
   std::ostringstream series;
-  series << kTimeseriesColumns;
+  series << output::kTimeseriesColumns;
   const auto start = std::chrono::steady_clock::now();
   Progress line("dynamic", progress);
   const double t_end = c.dynamic->t_end;
   out.result = sim.run([&](const dynamics::DynamicSample& s) {
-    append_timeseries_row(series, s);
+    output::append_timeseries_row(series, s);
     if (on_step) on_step(s);
     if (progress) line.time(s.state.time, t_end);
   });
@@ -69,7 +69,7 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
 
   const dynamics::DynamicResult& r = out.result;
   const auto& sp = *c.dynamic;
-  json summary = summary_header(c);
+  json summary = output::summary_header(c);
   summary["status"] = r.completed ? "completed" : r.interrupted ? "interrupted" : "stopped";
   summary["message"] = r.status;
   summary["steps"] = r.steps;
@@ -114,12 +114,12 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   json snapshots = json::array();
   const int every = c.output.snapshot_every;
 #ifdef DYNCONTACT_WITH_FE
-  BodySnapshots body_series(dir);  // an fe_body: body_NNNN.vtu per snapshot and body.pvd
+  output::BodySnapshots body_series(dir);  // an fe_body: body_NNNN.vtu per snapshot and body.pvd
 #endif
   const DynamicOutcome out = simulate_dynamic(c, !quiet, [&](const dynamics::DynamicSample& s) {
     if (every > 0 && s.step % every == 0) {
       const std::string name = "fields_" + std::to_string(s.step) + ".csv";
-      write_fields(dir, c.grid, step_fields(c, s.contact_state), name);
+      output::write_fields(dir, c.grid, step_fields(c, s.contact_state), name);
       json snapshot = {{"step", s.step}, {"time", s.state.time}, {"file", name}};
 #ifdef DYNCONTACT_WITH_FE
       if (s.finite_body) snapshot["body"] = body_series.write(*s.finite_body, s.state);
@@ -129,7 +129,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   });
   const dynamics::DynamicResult& r = out.result;
   const double elapsed = out.elapsed;
-  write_file_whole((fs::path(dir) / "timeseries.csv").string(), out.timeseries);
+  output::write_file_whole((fs::path(dir) / "timeseries.csv").string(), out.timeseries);
   json summary = out.summary;
   json files = {{"summary", "summary.json"}, {"timeseries", "timeseries.csv"}};
   if (!snapshots.empty()) files["snapshots"] = snapshots;
@@ -138,12 +138,12 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
 #endif
   if (c.output.plots && !r.interrupted) {  // an interrupted run writes its data, not figures
     json plots = json::array();
-    for (const auto& img : render_gnuplot(dir, c.name, timeseries_figures(c, {{"timeseries.csv", ""}})))
+    for (const auto& img : output::render_gnuplot(dir, c.name, output::timeseries_figures(c, {{"timeseries.csv", ""}})))
       plots.push_back(fs::path(img).filename().string());
     files["plots"] = plots;
   }
   summary["files"] = files;
-  const std::string path = write_summary(dir, summary);
+  const std::string path = output::write_summary(dir, summary);
   if (!quiet) {
     std::printf("%s: %s, %d steps (%d rejected), contact model %s, %.3g s; worst certificate %.2e\n", c.name.c_str(),
                 r.completed ? "completed" : r.interrupted ? "interrupted" : "stopped", r.steps, r.rejected_steps, r.contact_model.c_str(), elapsed,
@@ -178,18 +178,20 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
 int run_dynamic_sweep(const Case& c, const std::string& dir, bool quiet) {
   DynamicSweepOutcome out = simulate_dynamic_sweep(c, quiet);
   if (!out.root) return kExitOk;
-  for (std::size_t k = 0; k < out.files.size(); ++k) write_file_whole((fs::path(dir) / out.files[k]).string(), out.texts[k]);
+  for (std::size_t k = 0; k < out.files.size(); ++k)
+    output::write_file_whole((fs::path(dir) / out.files[k]).string(), out.texts[k]);
   json& summary = out.summary;
   json files = {{"summary", "summary.json"}, {"timeseries", out.files}};
   if (c.output.plots && !out.interrupted) {  // an interrupted sweep writes its data, not figures
     std::vector<std::pair<std::string, std::string>> runs;
     for (std::size_t k = 0; k < out.files.size(); ++k) runs.emplace_back(out.files[k], out.labels[k]);
     json plots = json::array();
-    for (const auto& img : render_gnuplot(dir, c.name, timeseries_figures(c, runs))) plots.push_back(fs::path(img).filename().string());
+    for (const auto& img : output::render_gnuplot(dir, c.name, output::timeseries_figures(c, runs)))
+      plots.push_back(fs::path(img).filename().string());
     files["plots"] = plots;
   }
   summary["files"] = files;
-  const std::string path = write_summary(dir, summary);
+  const std::string path = output::write_summary(dir, summary);
   if (!quiet) {
     for (const json& r : summary["runs"])
       std::printf("%s %s: %s%s\n", c.name.c_str(), r["label"].get<std::string>().c_str(),

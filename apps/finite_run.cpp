@@ -36,7 +36,8 @@ namespace {
 /// The tangential steps (shift, torsion, histories) on the finite body; the summary of the last
 /// step with "steps" for a history, as for the tangential problem.
 nlohmann::json solve_tangential_steps(const Case& c, FiniteContact& fc, Progress& reporter,
-                                      StaticFields& last_fields, Eigen::VectorXd& body_u, SolverReport& report) {
+                                      output::StaticFields& last_fields, Eigen::VectorXd& body_u,
+                                      SolverReport& report) {
   TangentialProblem& problem = fc.tangential_problem(FrictionLaw::from_spec(*c.friction));
   const TangentialSpec& t = *c.tangential;
   const std::vector<TangentialLoad> loads = t.has_history ? t.history : std::vector<TangentialLoad>{t.load};
@@ -59,7 +60,7 @@ nlohmann::json solve_tangential_steps(const Case& c, FiniteContact& fc, Progress
 }
 
 /// The mean size of the face's elements over the contact (elements with p above the threshold).
-double contact_face_element_size(const fe::ContactFace& face, const StaticFields& fields) {
+double contact_face_element_size(const fe::ContactFace& face, const output::StaticFields& fields) {
   double sum = 0.0;
   int n = 0;
   for (std::size_t k = 0; k < fields.p.size(); ++k)
@@ -87,7 +88,7 @@ FiniteRun solve_finite_on(const Case& c, const FeBodySpec& body, bool progress) 
     std::fprintf(stderr, "body: %zu dofs, %zu elements; meshed in %.3g s, factorised in %.3g s\n", fc.body().dofs(),
                  fc.body().mesh().elements.size(), fc.mesh_seconds(), fc.body().factorisation_seconds());
   nlohmann::json& s = out.run.summary;
-  StaticFields fields;
+  output::StaticFields fields;
   SolverReport& report = out.run.report;
   out.run.normal = c.normal;
   {
@@ -98,8 +99,8 @@ FiniteRun solve_finite_on(const Case& c, const FeBodySpec& body, bool progress) 
       out.run.normal = c.tangential->has_history ? c.tangential->history.back().normal : c.tangential->load.normal;
     } else {
       FiniteNormalSolution sol = fc.solve_normal(c.normal, c.solver, reporter.callback());
-      fields = normal_fields(sol.contact.pressure, std::max(c.solver.certificate_tol, 1e-12));
-      s = normal_summary(c, sol.contact, fields);
+      fields = output::normal_fields(sol.contact.pressure, std::max(c.solver.certificate_tol, 1e-12));
+      s = output::normal_summary(c, sol.contact, fields);
       out.body_u = sol.body_displacement;
       report = sol.contact.report;
     }
@@ -184,22 +185,22 @@ int run_finite(const Case& c, const std::string& dir, bool quiet) {
   const FiniteContact& fc = *f.contact;
   nlohmann::json files = {{"summary", "summary.json"}, {"body", "body.vtu"}};
   if (c.output.fields) {
-    write_fields(dir, c.grid, f.run.fields.back());
+    output::write_fields(dir, c.grid, f.run.fields.back());
     files["fields"] = "fields.csv";
   }
-  write_body_vtu((std::filesystem::path(dir) / "body.vtu").string(), fc.body().mesh(), f.body_u,
+  output::write_body_vtu((std::filesystem::path(dir) / "body.vtu").string(), fc.body().mesh(), f.body_u,
                  fc.body().element_stress(f.body_u));
   if (c.output.plots && !f.run.interrupted) {  // as for the local problems: the contact fields
     Case plotted = c;
     plotted.normal = f.run.normal;
     nlohmann::json plots = nlohmann::json::array();
-    for (const auto& p : write_static_plots(dir, plotted, f.run.fields.back()))
+    for (const auto& p : output::write_static_plots(dir, plotted, f.run.fields.back()))
       plots.push_back(std::filesystem::path(p).filename().string());
     files["plots"] = plots;
   }
   s["files"] = files;
   const std::vector<ResultLimit> limits = attach_result_limits(c, s);
-  const std::string summary_path = write_summary(dir, s);
+  const std::string summary_path = output::write_summary(dir, s);
   if (!quiet) {
     std::printf("%s: %s (%s, %d iterations, %.3g s; certificate %.2e)\n", c.name.c_str(), to_string(report.status),
                 report.backend.c_str(), report.iterations, report.time_s, report.certificate.worst());

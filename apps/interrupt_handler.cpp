@@ -30,7 +30,7 @@ void write_last_file() {
   std::lock_guard<std::mutex> lock(g_last_file_mutex);
   if (g_last_path.empty()) return;
   try {
-    write_file_whole(g_last_path, g_last_text);
+    output::write_file_whole(g_last_path, g_last_text);
   } catch (const std::exception&) {  // the process ends now either way
   }
 }
@@ -39,7 +39,7 @@ void write_last_file() {
 /// own, unless it sits in a non-polling section (meshing, a factorisation) past the grace period;
 /// then the process ends here, with the last file written. A second signal ends it at once.
 void watchdog() {
-  const sigset_t set = interrupt_signals();
+  const sigset_t set = output::interrupt_signals();
   const timespec poll{0, 50'000'000};
   while (!interrupt_requested()) {
     const int signal = sigtimedwait(&set, nullptr, &poll);
@@ -75,7 +75,7 @@ void watchdog() {
 void install_interrupt_handlers() {
   static std::once_flag once;
   std::call_once(once, [] {
-    const sigset_t set = interrupt_signals();
+    const sigset_t set = output::interrupt_signals();
     pthread_sigmask(SIG_BLOCK, &set, nullptr);  // this thread and every thread started from it
     struct sigaction action {};
     action.sa_handler = on_interrupt_signal;

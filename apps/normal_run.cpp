@@ -20,8 +20,8 @@ NormalRun run_normal(const Case& c, bool progress) {
   }
   // A solver leaves round-off pressures outside the contact; those within the certificate
   // tolerance of the peak count as free.
-  run.fields = normal_fields(run.solution.pressure, std::max(c.solver.certificate_tol, 1e-12));
-  run.summary = normal_summary(c, run.solution, run.fields);
+  run.fields = output::normal_fields(run.solution.pressure, std::max(c.solver.certificate_tol, 1e-12));
+  run.summary = output::normal_summary(c, run.solution, run.fields);
   return run;
 }
 

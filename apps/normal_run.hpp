@@ -12,7 +12,7 @@ namespace dc::cli {
 
 struct NormalRun {
   NormalSolution solution;
-  StaticFields fields;
+  output::StaticFields fields;
   nlohmann::json summary;  ///< summary.json content (without "files")
   bool converged() const { return solution.report.status == SolveStatus::converged; }
 };

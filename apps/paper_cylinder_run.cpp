@@ -366,7 +366,8 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
   PaperCylinderOutcome out = simulate_paper_cylinder(c, quiet);
   if (!out.root) return kExitOk;
   namespace fs = std::filesystem;
-  for (std::size_t k = 0; k < out.files.size(); ++k) write_file_whole((fs::path(dir) / out.files[k]).string(), out.texts[k]);
+  for (std::size_t k = 0; k < out.files.size(); ++k)
+    output::write_file_whole((fs::path(dir) / out.files[k]).string(), out.texts[k]);
   json& summary = out.summary;
   const bool interrupted = out.interrupted, all_ok = out.all_ok;
   json out_files = {{"summary", "summary.json"}, {"timeseries", out.files}};
@@ -374,7 +375,7 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
   const std::vector<std::string>& labels = out.labels;
 
   if (c.output.plots && !interrupted) {  // an interrupted run writes its data, not figures
-    std::vector<GnuplotFigure> figures;
+    std::vector<output::GnuplotFigure> figures;
     const char* names[][3] = {{"F_bar", "20", "friction force |F|/({/Symbol m}P)"},
                               {"l_bar", "21", "adhesion half-length 1 - d/l"},
                               {"v_bar", "22", "rigid-slip velocity |v|/({/Symbol m}{/Symbol e}V(0))"}};
@@ -397,11 +398,12 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
       figures.push_back({n[0], b.str()});
     }
     json plots = json::array();
-    for (const auto& img : render_gnuplot(dir, c.name, figures)) plots.push_back(fs::path(img).filename().string());
+    for (const auto& img : output::render_gnuplot(dir, c.name, figures))
+      plots.push_back(fs::path(img).filename().string());
     out_files["plots"] = plots;
   }
   summary["files"] = out_files;
-  const std::string path = write_summary(dir, summary);
+  const std::string path = output::write_summary(dir, summary);
   if (!quiet) std::printf("wrote %s\n", path.c_str());
   if (interrupted) {
     std::cerr << "interrupted after " << out.files.size() << " of " << out.planned

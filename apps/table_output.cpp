@@ -119,10 +119,10 @@ std::vector<std::string> table_plots(const std::string& dir, const Case& c, cons
       curves.add(label(other_name, other[io]) + (ns > 1 ? ", " + label("phi", axes.spin[is]) : ""), pts);
     }
     const std::string file = stem + ".dat";
-    write_file_whole((std::filesystem::path(dir) / file).string(), curves.data.str());
-    return GnuplotFigure{stem, curves.body(file, title, xlabel, ylabel)};
+    output::write_file_whole((std::filesystem::path(dir) / file).string(), curves.data.str());
+    return output::GnuplotFigure{stem, curves.body(file, title, xlabel, ylabel)};
   };
-  std::vector<GnuplotFigure> figures;
+  std::vector<output::GnuplotFigure> figures;
   if (nx > 1)
     figures.push_back(figure(
         axes.creepage_x, axes.creepage_y, "eta",
@@ -134,7 +134,7 @@ std::vector<std::string> table_plots(const std::string& dir, const Case& c, cons
         [&](std::size_t k, std::size_t io, std::size_t is) { return at(io, k, is).Fy_mu_P; }, "table_Fy",
         "Lateral creep force", "creepage eta (-)", "F_y / (mu P)"));
   if (figures.empty()) return {};
-  return render_gnuplot(dir, c.name, figures);
+  return output::render_gnuplot(dir, c.name, figures);
 }
 
 }  // namespace dc::cli

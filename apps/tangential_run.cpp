@@ -58,20 +58,21 @@ const SolverReport& TangentialRun::report() const {
   return steps.back().report;
 }
 
-StaticFields tangential_fields(const TangentialSolution& s, double relative_threshold) {
-  StaticFields f = normal_fields(s.normal.pressure, relative_threshold);
+output::StaticFields tangential_fields(const TangentialSolution& s, double relative_threshold) {
+  output::StaticFields f = output::normal_fields(s.normal.pressure, relative_threshold);
   f.tx = s.tx;
   f.ty = s.ty;
   f.sx = s.sx;
   f.sy = s.sy;
   f.bound = s.bound;
   for (std::size_t e = 0; e < f.state.size(); ++e)
-    if (f.state[e] != kFree) f.state[e] = (e < s.state.size() && s.state[e] == kStick) ? kStick : kSlip;
+    if (f.state[e] != output::kFree)
+      f.state[e] = (e < s.state.size() && s.state[e] == output::kStick) ? output::kStick : output::kSlip;
   return f;
 }
 
-nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, const StaticFields& f) {
-  nlohmann::json s = normal_summary(c, sol.normal, f);
+nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, const output::StaticFields& f) {
+  nlohmann::json s = output::normal_summary(c, sol.normal, f);
   s["normal_solver"] = s["solver"];
   s["solver"] = to_json(sol.report);
   const std::string regime = c.tangential ? to_string(c.tangential->regime) : "";
@@ -95,8 +96,8 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   int n_stick = 0, n_slip = 0;
   double capacity = 0.0;
   for (std::size_t e = 0; e < f.state.size(); ++e) {
-    n_stick += f.state[e] == kStick;
-    n_slip += f.state[e] == kSlip;
+    n_stick += f.state[e] == output::kStick;
+    n_slip += f.state[e] == output::kSlip;
     if (e < sol.bound.size()) capacity += sol.bound[e];
   }
   s["n_stick"] = n_stick;

@@ -14,14 +14,14 @@
 namespace dc::cli {
 
 struct TangentialRun {
-  std::vector<TangentialSolution> steps;  ///< one, or one per history step
-  std::vector<StaticFields> fields;       ///< per step
-  std::vector<NormalSpec> normal;         ///< the normal load of each step
-  bool interrupted = false;               ///< an interrupt came: `steps` are those finished
-  nlohmann::json summary;                 ///< summary.json content (without "files"): the last
-                                          ///< step's keys, plus "steps" with a history
-  bool converged() const;                 ///< every step converged
-  double total_time_s() const;            ///< solver time of all steps (s)
+  std::vector<TangentialSolution> steps;     ///< one, or one per history step
+  std::vector<output::StaticFields> fields;  ///< per step
+  std::vector<NormalSpec> normal;            ///< the normal load of each step
+  bool interrupted = false;                  ///< an interrupt came: `steps` are those finished
+  nlohmann::json summary;                    ///< summary.json content (without "files"): the last
+                                             ///< step's keys, plus "steps" with a history
+  bool converged() const;                    ///< every step converged
+  double total_time_s() const;               ///< solver time of all steps (s)
   /// The report to show: the first step that did not converge, else the last.
   const SolverReport& report() const;
 };
@@ -34,24 +34,25 @@ TangentialRun run_tangential(const Case& c, bool progress);
 /// the states 0 free / 1 stick / 2 slip. An element is in contact when p exceeds
 /// `relative_threshold` times the peak (as for the normal problem); its stick/slip state is the
 /// solver's (an element in contact without friction capacity slips).
-StaticFields tangential_fields(const TangentialSolution& solution, double relative_threshold);
+output::StaticFields tangential_fields(const TangentialSolution& solution, double relative_threshold);
 
 /// The keys of one tangential step (CASES.md): the normal keys of `c` (whose `normal` is the
 /// step's load) plus tangential_force, twisting_moment, creepage, spin, rigid_shift, rotation,
 /// n_stick, n_slip, stick_area, the outer-loop and marching counts (a step of a rolling history
 /// adds its rolled `distance`; one of distance 0 is quasi-static: rigid_shift, no creepage);
 /// `solver` is the tangential report (its certificate holds the normal residuals too).
-nlohmann::json tangential_summary(const Case& c, const TangentialSolution& solution, const StaticFields& fields);
+nlohmann::json tangential_summary(const Case& c, const TangentialSolution& solution,
+                                  const output::StaticFields& fields);
 
 /// A solved static case, whichever problem it was: what `solve` writes and `compare` compares.
 struct StaticRun {
-  nlohmann::json summary;            ///< summary.json content (without "files")
-  std::vector<StaticFields> fields;  ///< one per step; the last is fields.csv
-  NormalSpec normal;                 ///< the normal load of the last step (closed-form curves)
-  SolverReport report;               ///< see TangentialRun::report()
+  nlohmann::json summary;                    ///< summary.json content (without "files")
+  std::vector<output::StaticFields> fields;  ///< one per step; the last is fields.csv
+  NormalSpec normal;                         ///< the normal load of the last step (closed-form curves)
+  SolverReport report;                       ///< see TangentialRun::report()
   bool converged = false;
-  bool history = false;              ///< a loading history: summary "steps", fields_<k>.csv
-  bool interrupted = false;          ///< an interrupt came during a history: the steps finished
+  bool history = false;                      ///< a loading history: summary "steps", fields_<k>.csv
+  bool interrupted = false;                  ///< an interrupt came during a history: the steps finished
 };
 
 /// Runs a normal or tangential case (run_normal / run_tangential).

@@ -32,8 +32,8 @@ Case load_case(const std::string& path, const std::vector<std::string>& override
 }
 
 std::string prepare_output_dir(const Case& c, const std::string& cli_out) {
-  OutputFolder folder = open_output_folder(c, cli_out);
-  static std::vector<std::unique_ptr<OutputFolderLock>> held;  // released when the process ends
+  output::OutputFolder folder = output::open_output_folder(c, cli_out);
+  static std::vector<std::unique_ptr<output::OutputFolderLock>> held;  // released when the process ends
   held.push_back(std::move(folder.lock));
   return folder.dir;
 }

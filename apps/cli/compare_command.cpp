@@ -154,8 +154,8 @@ int run_compare(const CompareArgs& args) {
     item["summary"] = e.run.summary;
     double dp = 0.0, da = 0.0, df = 0.0, dt = 0.0, dft = 0.0;
     if (first) {
-      const StaticFields& f = e.run.fields.back();
-      const StaticFields& f0 = first->run.fields.back();
+      const output::StaticFields& f = e.run.fields.back();
+      const output::StaticFields& f0 = first->run.fields.back();
       const nlohmann::json& s0 = first->run.summary;
       dp = field_difference(f.p, f0.p);
       da = relative(number(e.run.summary, "approach"), number(s0, "approach"));
@@ -182,7 +182,7 @@ int run_compare(const CompareArgs& args) {
   }
   if (first) std::printf("(d_*: largest relative difference from %s)\n", first->backend.c_str());
   const std::string path = (std::filesystem::path(dir) / "compare.json").string();
-  write_file_whole(path, list.dump(2) + "\n");
+  output::write_file_whole(path, list.dump(2) + "\n");
   std::printf("wrote %s\n", path.c_str());
   std::fflush(stdout);
   if (report_limits(limits, dir)) return kExitBadInput;

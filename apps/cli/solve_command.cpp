@@ -79,7 +79,7 @@ void print_tangential(const Case& c, const nlohmann::json& s) {
 
 /// The summary of a run stopped before anything was finished.
 nlohmann::json interrupted_summary(const Case& c) {
-  nlohmann::json header = summary_header(c);
+  nlohmann::json header = output::summary_header(c);
   header["status"] = "interrupted";
   header["files"] = {{"summary", "summary.json"}};
   return header;
@@ -119,7 +119,7 @@ int run_solve(const SolveArgs& args) {
     try {
       return c.problem == ProblemKind::dynamic ? run_dynamic(c, dir, args.quiet) : run_finite(c, dir, args.quiet);
     } catch (const Interrupted&) {  // before anything was finished (e.g. while meshing the body)
-      const std::string path = write_summary(dir, interrupted_summary(c));
+      const std::string path = output::write_summary(dir, interrupted_summary(c));
       std::cerr << "interrupted before a result was finished; wrote " << path << '\n';
       return interrupted_exit_code();
     }
@@ -129,7 +129,7 @@ int run_solve(const SolveArgs& args) {
   try {
     run = run_static(c, !args.quiet);
   } catch (const Interrupted&) {  // nothing finished: a summary that says so
-    const std::string path = write_summary(dir, interrupted_summary(c));
+    const std::string path = output::write_summary(dir, interrupted_summary(c));
     std::cerr << "interrupted before a result was finished; wrote " << path << '\n';
     return interrupted_exit_code();
   }
@@ -141,26 +141,26 @@ int run_solve(const SolveArgs& args) {
       nlohmann::json per_step = nlohmann::json::array();
       for (std::size_t k = 0; k < run.fields.size(); ++k) {
         const std::string name = "fields_" + std::to_string(k) + ".csv";
-        write_fields(dir, c.grid, run.fields[k], name);
+        output::write_fields(dir, c.grid, run.fields[k], name);
         per_step.push_back(name);
         s["steps"][k]["fields"] = name;
       }
       files["fields_steps"] = per_step;
     }
-    write_fields(dir, c.grid, run.fields.back());
+    output::write_fields(dir, c.grid, run.fields.back());
     files["fields"] = "fields.csv";
   }
   if (c.output.plots && !run.interrupted) {  // an interrupted run writes its data, not figures
     Case plotted = c;
     plotted.normal = run.normal;  // the closed-form curve of the last step's load
     nlohmann::json plots = nlohmann::json::array();
-    for (const auto& p : write_static_plots(dir, plotted, run.fields.back()))
+    for (const auto& p : output::write_static_plots(dir, plotted, run.fields.back()))
       plots.push_back(std::filesystem::path(p).filename().string());
     files["plots"] = plots;
   }
   s["files"] = files;
   const std::vector<ResultLimit> limits = attach_result_limits(c, s);
-  const std::string summary_path = write_summary(dir, s);
+  const std::string summary_path = output::write_summary(dir, s);
 
   const SolverReport& r = run.report;
   if (!args.quiet) {

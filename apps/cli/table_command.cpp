@@ -83,7 +83,7 @@ int run_table(const TableArgs& args, bool root) {
   }
   namespace fs = std::filesystem;
   const std::string csv = (fs::path(dir) / "table.csv").string();
-  write_file_whole(csv, table_csv(rows));
+  output::write_file_whole(csv, table_csv(rows));
   // The figures (none when interrupted: the data so far), then table.json last: a table.json
   // is there only when everything before it was written.
   const std::vector<std::string> images =
@@ -91,7 +91,7 @@ int run_table(const TableArgs& args, bool root) {
   nlohmann::json meta = table_json(c, axes, rows);
   meta["status"] = interrupted ? "interrupted" : "completed";
   meta["limits"] = limits_json(limits);
-  write_file_whole((fs::path(dir) / "table.json").string(), meta.dump(2) + "\n");
+  output::write_file_whole((fs::path(dir) / "table.json").string(), meta.dump(2) + "\n");
   if (interrupted) {
     std::cerr << "interrupted after " << rows.size() << " of " << axes.size() << " points; wrote " << csv
               << ", table.json\n";

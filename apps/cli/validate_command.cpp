@@ -128,7 +128,7 @@ int run_validate(const ValidateArgs& args) {
   }
   std::printf("  solver:   backend %s, tol %.3g, certificate tolerance %.3g, at most %d iterations\n",
               to_string(c.solver.backend), c.solver.tol, c.solver.certificate_tol, c.solver.max_iter);
-  if (const auto ref = analytic_reference(c)) {
+  if (const auto ref = output::analytic_reference(c)) {
     const char* label = ref->kind == "boussinesq_flat_punch" ? "Boussinesq" : "Hertz";
     if (two_d)
       std::printf("  %s:    a = %.4g m (%.1f strips across), p0 = %.4g Pa\n", label, ref->semi_axis_x,

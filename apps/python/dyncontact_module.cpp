@@ -46,7 +46,7 @@ namespace {
 
 using namespace dc::python;
 
-py::dict fields_dict(const dc::Grid& g, const dc::cli::StaticFields& f) {
+py::dict fields_dict(const dc::Grid& g, const dc::output::StaticFields& f) {
   std::vector<double> x(g.size()), y(g.size());
   for (int j = 0; j < g.ny; ++j)
     for (int i = 0; i < g.nx; ++i) {
@@ -78,9 +78,9 @@ py::dict solve(const py::object& case_arg, const py::object& out, bool progress)
                                         "' is run by the command line (dyncontact solve); solve() takes normal, "
                                         "tangential, dynamic and paper_cylinder cases");
   // The folder is locked for the call (another run into it is refused before this one solves).
-  dc::cli::OutputFolder folder;
+  dc::output::OutputFolder folder;
   if (!out.is_none())
-    folder = dc::cli::open_output_folder(c, py::str(py::module_::import("os").attr("fspath")(out)), "out");
+    folder = dc::output::open_output_folder(c, py::str(py::module_::import("os").attr("fspath")(out)), "out");
   dc::cli::StaticRun run;
   {
     py::gil_scoped_release release;
@@ -90,9 +90,9 @@ py::dict solve(const py::object& case_arg, const py::object& out, bool progress)
   dc::cli::attach_result_limits(c, summary);  // as `dyncontact solve` writes them
   std::string advice = "; the result is in this exception's .result";
   if (folder.lock) {  // summary.json last: complete or absent
-    dc::cli::write_fields(folder.dir, c.grid, run.fields.back());
+    dc::output::write_fields(folder.dir, c.grid, run.fields.back());
     summary["files"] = {{"summary", "summary.json"}, {"fields", "fields.csv"}};
-    dc::cli::write_summary(folder.dir, summary);
+    dc::output::write_summary(folder.dir, summary);
     advice = "; the results are written to " + folder.dir + " and are in this exception's .result";
   }
   py::dict result = to_python(summary);

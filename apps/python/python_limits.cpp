@@ -113,7 +113,7 @@ nlohmann::json contact_limits(const Grid& grid, const std::vector<double>& press
   c.allow_edge_contact = allow_edge_contact;
   c.profile.type = ProfileType::table;  // heights given as values: no radius of curvature
   nlohmann::json measures;
-  cli::add_contact_measures(measures, grid, cli::normal_fields(pressure, std::max(certificate_tol, 1e-12)));
+  output::add_contact_measures(measures, grid, output::normal_fields(pressure, std::max(certificate_tol, 1e-12)));
   return limits_json(result_limits(c, cli::measured_contact_size(c, measures)));
 }
 

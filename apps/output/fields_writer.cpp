@@ -6,7 +6,7 @@
 
 #include "output_files.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 
 std::string write_fields(const std::string& dir, const Grid& grid, const StaticFields& f, const std::string& file) {
   const std::string path = (std::filesystem::path(dir) / file).string();
@@ -35,4 +35,4 @@ std::string write_fields(const std::string& dir, const Grid& grid, const StaticF
   return path;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::output

@@ -14,7 +14,7 @@
 #include "errors.hpp"
 #include "output_files.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 namespace {
 
 bool numbered(const std::string& name, const std::string& stem, const std::string& ext) {
@@ -85,4 +85,4 @@ OutputFolder open_output_folder(const Case& c, const std::string& cli_out, const
   return folder;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::output

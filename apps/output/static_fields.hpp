@@ -7,7 +7,7 @@
 
 #include "grid.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 
 /// Element states of fields.csv.
 enum ElementState : int { kFree = 0, kStick = 1, kSlip = 2 };
@@ -42,4 +42,4 @@ ContactMeasures contact_measures(const Grid& grid, const StaticFields& fields);
 /// contact_half_width (2-D), plus extras (contact_extent, contact_touches_boundary, ...).
 void add_contact_measures(nlohmann::json& summary, const Grid& grid, const StaticFields& fields);
 
-}  // namespace dc::cli
+}  // namespace dc::output

@@ -6,7 +6,7 @@
 // (removing it would let two runs lock two different files of the same name).
 #include <string>
 
-namespace dc::cli {
+namespace dc::output {
 
 class OutputFolderLock {
  public:
@@ -24,4 +24,4 @@ class OutputFolderLock {
   int fd_ = -1;
 };
 
-}  // namespace dc::cli
+}  // namespace dc::output

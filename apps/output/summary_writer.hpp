@@ -8,7 +8,7 @@
 #include "normal_problem.hpp"
 #include "static_fields.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 
 /// schema, name, problem, dimension and the grid/material description every summary has.
 nlohmann::json summary_header(const Case& c);
@@ -21,4 +21,4 @@ nlohmann::json normal_summary(const Case& c, const NormalSolution& solution, con
 /// Writes `summary` as indented JSON to dir/summary.json; returns the path.
 std::string write_summary(const std::string& dir, const nlohmann::json& summary);
 
-}  // namespace dc::cli
+}  // namespace dc::output

@@ -2,7 +2,7 @@
 
 #include <pthread.h>
 
-namespace dc::cli {
+namespace dc::output {
 
 sigset_t interrupt_signals() {
   sigset_t set;
@@ -17,4 +17,4 @@ void unblock_interrupt_signals() {
   pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
 }
 
-}  // namespace dc::cli
+}  // namespace dc::output

@@ -9,7 +9,7 @@
 #include "finite_body.hpp"
 #include "rigid_body.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 
 class BodySnapshots {
  public:
@@ -25,5 +25,5 @@ class BodySnapshots {
   std::vector<std::pair<double, std::string>> files_;  // time, file
 };
 
-}  // namespace dc::cli
+}  // namespace dc::output
 #endif

@@ -13,7 +13,7 @@
 #include "gnuplot_figures.hpp"
 #include "output_files.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 namespace {
 
 /// Map images are drawn from at most this many cells per axis.
@@ -182,4 +182,4 @@ std::vector<std::string> write_static_plots(const std::string& dir, const Case& 
   return render_gnuplot(dir, c.name, figures);
 }
 
-}  // namespace dc::cli
+}  // namespace dc::output

@@ -24,10 +24,10 @@ class OutputError : public std::runtime_error {
   int errno_;
 };
 
-namespace cli {
+namespace output {
 
 /// The prefix of every temporary name; a file starting with it is a temporary (stale once its
-/// run has ended: prepare_output_dir removes them).
+/// run has ended: open_output_folder removes them).
 inline constexpr std::string_view kPartialPrefix = ".partial-";
 
 /// ".partial-<pid>-": what this process puts before a file's name for its temporary.
@@ -44,5 +44,5 @@ void write_file_whole(const std::string& path, std::string_view text);
 /// Renames a complete temporary into place (`path`); throws OutputError (the temporary removed).
 void commit_partial(const std::string& partial, const std::string& path);
 
-}  // namespace cli
+}  // namespace output
 }  // namespace dc

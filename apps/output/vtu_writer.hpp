@@ -9,7 +9,7 @@
 
 #include "body_mesh.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 
 /// Von Mises equivalent stress of a Voigt stress (11, 22, 33, 23, 13, 12).
 double von_mises(const Eigen::Matrix<double, 6, 1>& s);
@@ -18,5 +18,5 @@ double von_mises(const Eigen::Matrix<double, 6, 1>& s);
 void write_body_vtu(const std::string& path, const fe::BodyMesh& mesh, const Eigen::VectorXd& displacement,
                     const std::vector<Eigen::Matrix<double, 6, 1>>& stress);
 
-}  // namespace dc::cli
+}  // namespace dc::output
 #endif

@@ -10,7 +10,7 @@
 
 #include "errors.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 namespace {
 
 /// The process id the holder wrote into the lock file ("" when none).
@@ -65,4 +65,4 @@ OutputFolderLock::~OutputFolderLock() {
   if (fd_ >= 0) ::close(fd_);  // closing the last descriptor releases the lock
 }
 
-}  // namespace dc::cli
+}  // namespace dc::output

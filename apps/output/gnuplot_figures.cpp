@@ -21,7 +21,7 @@
 #include "interrupt_signals.hpp"
 #include "output_files.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 namespace {
 
 // Said once per process, by whichever thread draws first.
@@ -162,4 +162,4 @@ std::vector<std::string> render_gnuplot(const std::string& dir, const std::strin
   return images;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::output

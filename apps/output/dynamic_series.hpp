@@ -10,7 +10,7 @@
 #include "dynamic_simulation.hpp"
 #include "gnuplot_figures.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 
 /// timeseries.csv's header line.
 inline constexpr const char* kTimeseriesColumns =
@@ -34,4 +34,4 @@ std::vector<DynamicPlotSeries> dynamic_plot_series(int dimension);
 /// label; one run without a label for a single run).
 std::vector<GnuplotFigure> timeseries_figures(const Case& c, const std::vector<std::pair<std::string, std::string>>& runs);
 
-}  // namespace dc::cli
+}  // namespace dc::output

@@ -8,7 +8,7 @@
 #include <cstring>
 #include <filesystem>
 
-namespace dc::cli {
+namespace dc::output {
 namespace {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what, int err, const std::string& partial) {
@@ -53,4 +53,4 @@ void commit_partial(const std::string& partial, const std::string& path) {
   if (std::rename(partial.c_str(), path.c_str()) != 0) fail(path, "cannot rename its temporary into place", errno, partial);
 }
 
-}  // namespace dc::cli
+}  // namespace dc::output

@@ -7,7 +7,7 @@
 #include "case_model.hpp"
 #include "output_lock.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 
 /// Whether `name` is one of the result files a run writes (summary.json, fields[_k].csv,
 /// timeseries[_k].csv, compare.json, the plots and their data, body.vtu, body_<k>.vtu and
@@ -28,4 +28,4 @@ struct OutputFolder {
 /// result files of an earlier run (only those). `out_key` names the folder given (Python: out).
 OutputFolder open_output_folder(const Case& c, const std::string& cli_out, const std::string& out_key = "--out");
 
-}  // namespace dc::cli
+}  // namespace dc::output

@@ -4,7 +4,7 @@
 // process (gnuplot, gnuplot_figures.cpp) gets them back before exec.
 #include <signal.h>
 
-namespace dc::cli {
+namespace dc::output {
 
 /// SIGINT and SIGTERM: blocked in the main thread and every thread it starts, and taken by the
 /// watchdog with sigtimedwait, so no library's handler (Gmsh's, METIS's: GKlib takes SIGTERM for
@@ -14,4 +14,4 @@ sigset_t interrupt_signals();
 /// For a child process between fork and exec: SIGINT and SIGTERM delivered again (async-signal-safe).
 void unblock_interrupt_signals();
 
-}  // namespace dc::cli
+}  // namespace dc::output

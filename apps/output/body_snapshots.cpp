@@ -9,7 +9,7 @@
 #include "output_files.hpp"
 #include "vtu_writer.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 
 std::string BodySnapshots::write(const dynamics::FiniteBody& body, const dynamics::RigidBodyState& state) {
   const fe::ElasticBody& elastic = body.elastic_body();
@@ -32,5 +32,5 @@ std::string BodySnapshots::write(const dynamics::FiniteBody& body, const dynamic
   return name;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::output
 #endif

@@ -10,10 +10,10 @@
 #include "case_model.hpp"
 #include "static_fields.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 
 /// Returns the image files produced (empty when gnuplot is missing); throws OutputError when
 /// one fails (gnuplot_figures.hpp).
 std::vector<std::string> write_static_plots(const std::string& dir, const Case& c, const StaticFields& fields);
 
-}  // namespace dc::cli
+}  // namespace dc::output

@@ -6,7 +6,7 @@
 
 #include "output_files.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 
 double von_mises(const Eigen::Matrix<double, 6, 1>& s) {
   const double d = (s(0) - s(1)) * (s(0) - s(1)) + (s(1) - s(2)) * (s(1) - s(2)) + (s(2) - s(0)) * (s(2) - s(0));
@@ -46,5 +46,5 @@ void write_body_vtu(const std::string& path, const fe::BodyMesh& mesh, const Eig
   write_file_whole(path, out.str());
 }
 
-}  // namespace dc::cli
+}  // namespace dc::output
 #endif

@@ -5,7 +5,7 @@
 
 #include "hertz.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 
 double AnalyticReference::pressure(double x, double y) const {
   if (kind == "boussinesq_flat_punch") {
@@ -93,4 +93,4 @@ std::optional<AnalyticReference> analytic_reference(const Case& c) {
   return r;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::output

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
-namespace dc::cli {
+namespace dc::output {
 
 void append_timeseries_row(std::ostream& out, const dynamics::DynamicSample& s) {
   const auto& st = s.state;
@@ -56,4 +56,4 @@ std::vector<GnuplotFigure> timeseries_figures(const Case& c, const std::vector<s
   return out;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::output

@@ -7,10 +7,10 @@
 #include "grid.hpp"
 #include "static_fields.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 
 /// Writes dir/`file` (fields.csv; fields_<k>.csv for the steps of a history); returns the path.
 std::string write_fields(const std::string& dir, const Grid& grid, const StaticFields& fields,
                          const std::string& file = "fields.csv");
 
-}  // namespace dc::cli
+}  // namespace dc::output

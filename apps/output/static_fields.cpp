@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace dc::cli {
+namespace dc::output {
 
 StaticFields normal_fields(const std::vector<double>& pressure, double relative_threshold) {
   StaticFields f;
@@ -77,4 +77,4 @@ void add_contact_measures(nlohmann::json& s, const Grid& grid, const StaticField
       grid.dimension == 3 ? nlohmann::json::array({m.n_across_x, m.n_across_y}) : nlohmann::json(m.n_across_x);
 }
 
-}  // namespace dc::cli
+}  // namespace dc::output

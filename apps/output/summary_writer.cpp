@@ -10,7 +10,7 @@
 #define DYNCONTACT_VERSION "unknown"
 #endif
 
-namespace dc::cli {
+namespace dc::output {
 namespace {
 
 nlohmann::json material_json(const Elastic& m) {
@@ -82,4 +82,4 @@ std::string write_summary(const std::string& dir, const nlohmann::json& summary)
   return path;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::output

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace dc::cli {
+namespace dc::output {
 
 struct GnuplotFigure {
   std::string stem;  ///< image file name without extension
@@ -19,4 +19,4 @@ struct GnuplotFigure {
 std::vector<std::string> render_gnuplot(const std::string& dir, const std::string& case_name,
                                         const std::vector<GnuplotFigure>& figures);
 
-}  // namespace dc::cli
+}  // namespace dc::output

@@ -8,7 +8,7 @@
 
 #include "case_model.hpp"
 
-namespace dc::cli {
+namespace dc::output {
 
 struct AnalyticReference {
   std::string kind;        ///< hertz_sphere | hertz_elliptic | hertz_cylinder_2d | boussinesq_flat_punch
@@ -30,4 +30,4 @@ struct AnalyticReference {
 /// under force control; the flat punch in 3-D. Otherwise none.
 std::optional<AnalyticReference> analytic_reference(const Case& c);
 
-}  // namespace dc::cli
+}  // namespace dc::output
