@@ -19,10 +19,10 @@ DynamicSweepOutcome simulate_dynamic_sweep(const Case& c, bool quiet) {
       throw InputError(e.key(), std::string(e.what()).substr(e.key().size() + 2) + " (sweep run " + p.label + ")");
     }
   }
-  const LaunchRank launched = launch_rank();
+  const table::LaunchRank launched = table::launch_rank();
   Progress progress("sweep", launched.root() && !quiet);
   // One unit per run: its summary, its time series and how it ended (null: not run, interrupted).
-  const std::vector<json> units = run_distributed(
+  const std::vector<json> units = table::run_distributed(
       points.size(),
       [&](std::size_t k) -> json {
         const DynamicOutcome run = simulate_dynamic(points[k].run, false);

@@ -305,11 +305,11 @@ PaperCylinderOutcome simulate_paper_cylinder(const Case& c, bool quiet) {
   validate_paper_cylinder(c);
   const std::vector<SweepPoint> specs = sweep_points(c);
   const Setup first = setup_of(c);
-  const LaunchRank launched = launch_rank();
+  const table::LaunchRank launched = table::launch_rank();
 
   // The runs over the cores or the ranks (table_ranks.hpp), gathered in sweep order.
   Progress progress("sweep", launched.root() && !quiet && specs.size() > 1);
-  const std::vector<json> units = run_distributed(
+  const std::vector<json> units = table::run_distributed(
       specs.size(), [&](std::size_t k) { return sweep_unit(c, specs, k); },
       [&](std::size_t done, std::size_t total) { progress.count(done, total, "runs"); });
   progress.finish();

@@ -49,7 +49,7 @@ TEST_P(TableRanks, AFailingUnitIsReportedAndTheOthersKeptInUnitOrder) {
     EXPECT_EQ(units, kUnits);
     progress.push_back(finished);
   };
-  const std::vector<json> results = dc::cli::run_distributed(kUnits, work, done);
+  const std::vector<json> results = dc::table::run_distributed(kUnits, work, done);
 
   ASSERT_EQ(results.size(), kUnits);
   for (std::size_t u = 0; u < kUnits; ++u) {
@@ -87,7 +87,7 @@ TEST(TableRanksInterrupt, NoUnitStartsAfterAnInterrupt) {
     if (u == 3) dc::request_interrupt(0);
     return {{"unit", u}};
   };
-  const std::vector<json> results = dc::cli::run_distributed(10, work, {});
+  const std::vector<json> results = dc::table::run_distributed(10, work, {});
   dc::clear_interrupt();
   EXPECT_EQ(started, (std::vector<int>{0, 1, 2, 3}));
   ASSERT_EQ(results.size(), 10u);
@@ -110,7 +110,7 @@ TEST(TableRanksInterrupt, AnInterruptedUnitHasNoResult) {
     }
     return {{"unit", u}};
   };
-  const std::vector<json> results = dc::cli::run_distributed(6, work, {});
+  const std::vector<json> results = dc::table::run_distributed(6, work, {});
   dc::clear_interrupt();
   ASSERT_EQ(results.size(), 6u);
   EXPECT_TRUE(results[1].is_null());
@@ -119,7 +119,7 @@ TEST(TableRanksInterrupt, AnInterruptedUnitHasNoResult) {
 
 TEST(TableRanksLaunch, NoUnitsIsAnEmptyResult) {
   bool reported = false;
-  const auto results = dc::cli::run_distributed(0, [](std::size_t) { return json(); },
+  const auto results = dc::table::run_distributed(0, [](std::size_t) { return json(); },
                                                 [&](std::size_t finished, std::size_t units) {
                                                   EXPECT_EQ(finished, 0u);
                                                   EXPECT_EQ(units, 0u);
@@ -130,16 +130,16 @@ TEST(TableRanksLaunch, NoUnitsIsAnEmptyResult) {
 }
 
 TEST(TableRanksLaunch, TheRankComesFromTheLauncher) {
-  EXPECT_TRUE(dc::cli::launch_rank().root());
+  EXPECT_TRUE(dc::table::launch_rank().root());
   const ScopedEnv rank("OMPI_COMM_WORLD_RANK", "3"), size("OMPI_COMM_WORLD_SIZE", "4");
-  const dc::cli::LaunchRank r = dc::cli::launch_rank();
+  const dc::table::LaunchRank r = dc::table::launch_rank();
   EXPECT_EQ(r.rank, 3);
   EXPECT_EQ(r.size, 4);
   EXPECT_FALSE(r.root());
 }
 
 TEST(TableRanksLaunch, MpirunOfABuildWithoutMpiIsAnInputError) {
-  ASSERT_FALSE(dc::cli::built_with_mpi());  // this test's copy of the spreader
+  ASSERT_FALSE(dc::table::built_with_mpi());  // this test's copy of the spreader
   const ScopedEnv rank("OMPI_COMM_WORLD_RANK", "0"), size("OMPI_COMM_WORLD_SIZE", "2");
   bool ran = false;
   const auto work = [&](std::size_t) {
@@ -147,7 +147,7 @@ TEST(TableRanksLaunch, MpirunOfABuildWithoutMpiIsAnInputError) {
     return json();
   };
   try {
-    dc::cli::run_distributed(4, work, {});
+    dc::table::run_distributed(4, work, {});
     FAIL() << "expected an input error";
   } catch (const dc::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("without MPI"), std::string::npos) << e.what();

@@ -43,7 +43,7 @@ void not_implemented(ProblemKind kind) {
 }
 
 int report_input_errors_on_root(const std::function<int()>& command) {
-  const bool root = launch_rank().root();
+  const bool root = table::launch_rank().root();
   try {
     return command();
   } catch (const InputError&) {

@@ -102,7 +102,7 @@ int run_solve(const SolveArgs& args) {
   const Case c = load_case(args.case_path, args.sets, args.backend);
   // Under mpirun a sweep's runs are spread over the ranks (rank 0 writes); any other case is
   // solved by rank 0 alone.
-  const bool root = launch_rank().root();
+  const bool root = table::launch_rank().root();
   // What a dynamic run is known to get wrong before it starts (InputError: exit 2, nothing written).
   if (c.problem == ProblemKind::dynamic && !c.sweep) dynamics::dynamic_limits_before(c);
   if (c.problem == ProblemKind::paper_cylinder)

@@ -36,7 +36,7 @@ struct TableArgs {
 
 /// The option's values, or the case's own value when the option is not given.
 std::vector<double> axis(const std::string& option, const std::string& text, double case_value) {
-  return text.empty() ? std::vector<double>{case_value} : parse_table_range(option, text);
+  return text.empty() ? std::vector<double>{case_value} : table::parse_table_range(option, text);
 }
 
 int run_table(const TableArgs& args, bool root) {
@@ -44,11 +44,11 @@ int run_table(const TableArgs& args, bool root) {
   if (c.problem != ProblemKind::tangential || !c.tangential)
     throw InputError("problem", "a creep-force table needs a tangential case with \"regime\": \"rolling\"");
   const auto& modes = c.tangential->rolling.modes;
-  TableAxes axes;
+  table::TableAxes axes;
   axes.creepage_x = axis("--creepage", args.creepage, modes[0].value);
   axes.creepage_y = axis("--lateral", args.lateral, c.dimension == 2 ? 0.0 : modes[1].value);
   axes.spin = axis("--spin", args.spin, c.dimension == 2 ? 0.0 : modes[2].value);
-  check_table_case(c, axes);
+  table::check_table_case(c, axes);
   // The contact every point shares (the same load): its result limits (grid edge, a/R,
   // resolution) before the table; an error refuses the table (exit 2, nothing written).
   NormalRun contact = run_normal(c, false);
@@ -66,29 +66,29 @@ int run_table(const TableArgs& args, bool root) {
 
   Progress progress("table of " + std::to_string(axes.size()) + " points", root && !args.quiet);
   const std::size_t per_line = axes.creepage_x.size();
-  const std::vector<nlohmann::json> lines = run_distributed(
-      axes.lines(), [&](std::size_t line) { return solve_table_line(c, axes, line); },
+  const std::vector<nlohmann::json> lines = table::run_distributed(
+      axes.lines(), [&](std::size_t line) { return table::solve_table_line(c, axes, line); },
       [&](std::size_t done, std::size_t) { progress.count(done * per_line, axes.size()); });
   progress.finish();
   if (!root) return kExitOk;
 
   // Interrupted: the lines before the first one not finished (whole lines, in table order).
-  std::vector<TableRow> rows;
+  std::vector<table::TableRow> rows;
   bool interrupted = false;
   for (std::size_t l = 0; l < lines.size() && !interrupted; ++l) {
     interrupted = lines[l].is_null();
     if (interrupted) break;
-    const std::vector<TableRow> r = rows_from_line(axes, l, lines[l]);
+    const std::vector<table::TableRow> r = table::rows_from_line(axes, l, lines[l]);
     rows.insert(rows.end(), r.begin(), r.end());
   }
   namespace fs = std::filesystem;
   const std::string csv = (fs::path(dir) / "table.csv").string();
-  output::write_file_whole(csv, table_csv(rows));
+  output::write_file_whole(csv, table::table_csv(rows));
   // The figures (none when interrupted: the data so far), then table.json last: a table.json
   // is there only when everything before it was written.
   const std::vector<std::string> images =
-      c.output.plots && !interrupted ? table_plots(dir, c, axes, rows) : std::vector<std::string>{};
-  nlohmann::json meta = table_json(c, axes, rows);
+      c.output.plots && !interrupted ? table::table_plots(dir, c, axes, rows) : std::vector<std::string>{};
+  nlohmann::json meta = table::table_json(c, axes, rows);
   meta["status"] = interrupted ? "interrupted" : "completed";
   meta["limits"] = limits_json(limits);
   output::write_file_whole((fs::path(dir) / "table.json").string(), meta.dump(2) + "\n");
@@ -99,7 +99,7 @@ int run_table(const TableArgs& args, bool root) {
   }
 
   std::size_t bad = 0;
-  for (const TableRow& r : rows) bad += r.status != "converged";
+  for (const table::TableRow& r : rows) bad += r.status != "converged";
   std::printf("table %s: %zu points (%zu creepage_x x %zu creepage_y x %zu spin), %zu converged\n", c.name.c_str(),
               rows.size(), axes.creepage_x.size(), axes.creepage_y.size(), axes.spin.size(), rows.size() - bad);
   std::printf("wrote %s, table.json", csv.c_str());
@@ -144,7 +144,7 @@ void add_table_command(CLI::App& app, int& exit_code) {
   sub->add_option("-s,--set", args->sets, "override a case key: path=value (repeatable)")->allow_extra_args(false);
   sub->add_flag("-q,--quiet", args->quiet, "no progress line");
   sub->callback([args, &exit_code] {
-    exit_code = report_input_errors_on_root([&] { return run_table(*args, launch_rank().root()); });
+    exit_code = report_input_errors_on_root([&] { return run_table(*args, table::launch_rank().root()); });
   });
 }
 

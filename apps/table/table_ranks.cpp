@@ -16,7 +16,7 @@
 #include "errors.hpp"
 #include "interrupt.hpp"
 
-namespace dc::cli {
+namespace dc::table {
 namespace {
 
 /// The integer in environment variable `name`, or `fallback` when unset or not a number.
@@ -218,4 +218,4 @@ std::vector<nlohmann::json> run_distributed(std::size_t units, const std::functi
   return gathered.take();
 }
 
-}  // namespace dc::cli
+}  // namespace dc::table

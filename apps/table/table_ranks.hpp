@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace dc::cli {
+namespace dc::table {
 
 /// This process's place in an MPI job started by a launcher (mpirun, srun), read from the
 /// launcher's environment without starting MPI: {rank, size}; {0, 1} when not launched so.
@@ -39,4 +39,4 @@ bool built_with_mpi();
 std::vector<nlohmann::json> run_distributed(std::size_t units, const std::function<nlohmann::json(std::size_t)>& work,
                                             const std::function<void(std::size_t, std::size_t)>& done);
 
-}  // namespace dc::cli
+}  // namespace dc::table

@@ -9,7 +9,7 @@
 #include "gnuplot_figures.hpp"
 #include "output_files.hpp"
 
-namespace dc::cli {
+namespace dc::table {
 namespace {
 
 /// A number for table.csv: 12 significant digits, nan when not finite.
@@ -137,4 +137,4 @@ std::vector<std::string> table_plots(const std::string& dir, const Case& c, cons
   return output::render_gnuplot(dir, c.name, figures);
 }
 
-}  // namespace dc::cli
+}  // namespace dc::table

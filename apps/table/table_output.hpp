@@ -8,7 +8,7 @@
 #include "case_model.hpp"
 #include "table_points.hpp"
 
-namespace dc::cli {
+namespace dc::table {
 
 /// table.csv content: creepage_x, creepage_y, spin, Fx, Fy, Mz, Fx_mu_P, Fy_mu_P, n_stick,
 /// certificate, status (failed points: nan for the numbers).
@@ -23,4 +23,4 @@ nlohmann::json table_json(const Case& c, const TableAxes& axes, const std::vecto
 std::vector<std::string> table_plots(const std::string& dir, const Case& c, const TableAxes& axes,
                                      const std::vector<TableRow>& rows);
 
-}  // namespace dc::cli
+}  // namespace dc::table

@@ -12,7 +12,7 @@
 
 #include "case_model.hpp"
 
-namespace dc::cli {
+namespace dc::table {
 
 /// The table's values: rows run over spin, then creepage_y, then creepage_x (fastest).
 struct TableAxes {
@@ -45,4 +45,4 @@ nlohmann::json solve_table_line(const Case& c, const TableAxes& axes, std::size_
 /// a result {"error": message}.
 std::vector<TableRow> rows_from_line(const TableAxes& axes, std::size_t line, const nlohmann::json& result);
 
-}  // namespace dc::cli
+}  // namespace dc::table

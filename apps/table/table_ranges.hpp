@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace dc::cli {
+namespace dc::table {
 
 /// Parses `text` for `option` (e.g. "--creepage"). Throws InputError naming the option and
 /// the reason: not a number, count < 1 or over kMaxTableValues, start != stop with count 1,
@@ -13,4 +13,4 @@ std::vector<double> parse_table_range(const std::string& option, const std::stri
 
 inline constexpr int kMaxTableValues = 10000;  ///< values per range
 
-}  // namespace dc::cli
+}  // namespace dc::table

@@ -7,7 +7,7 @@
 #include "errors.hpp"
 #include "tangential_problem.hpp"
 
-namespace dc::cli {
+namespace dc::table {
 namespace {
 
 /// The traction of a solution as a warm start (RollingLoad::warm_start: tau_x, then tau_y in 3-D).
@@ -126,4 +126,4 @@ std::vector<TableRow> rows_from_line(const TableAxes& axes, std::size_t line, co
   return rows;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::table

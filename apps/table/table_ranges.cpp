@@ -9,7 +9,7 @@
 
 #include "errors.hpp"
 
-namespace dc::cli {
+namespace dc::table {
 namespace {
 
 /// The whole of `s` as a finite number (throws InputError for `option` otherwise).
@@ -65,4 +65,4 @@ std::vector<double> parse_table_range(const std::string& option, const std::stri
   return values;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::table
