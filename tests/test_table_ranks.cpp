@@ -1,4 +1,4 @@
-// The work spreader of `table` and sweeps (apps/table_ranks.cpp, built here without MPI): every
+// The work spreader of `table` and sweeps (apps/table/table_ranks.cpp, here without MPI): every
 // unit runs once, results come back in unit order whichever thread finished first, a unit that
 // throws becomes {"error": message} with the others kept, progress is reported up to the total,
 // and a launch by mpirun of a build without MPI is an input error rather than N copies of the job.
@@ -139,7 +139,7 @@ TEST(TableRanksLaunch, TheRankComesFromTheLauncher) {
 }
 
 TEST(TableRanksLaunch, MpirunOfABuildWithoutMpiIsAnInputError) {
-  ASSERT_FALSE(dc::table::built_with_mpi());  // this test's copy of the spreader
+  ASSERT_FALSE(dc::table::built_with_mpi());  // no MPI transport: the program alone installs one
   const ScopedEnv rank("OMPI_COMM_WORLD_RANK", "0"), size("OMPI_COMM_WORLD_SIZE", "2");
   bool ran = false;
   const auto work = [&](std::size_t) {

@@ -18,6 +18,9 @@
 #include "interrupt.hpp"
 #include "interrupt_handler.hpp"
 #include "output_files.hpp"
+#ifdef DYNCONTACT_WITH_MPI
+#include "table_ranks_mpi.hpp"
+#endif
 
 #ifndef DYNCONTACT_VERSION
 #define DYNCONTACT_VERSION "unknown"
@@ -28,6 +31,9 @@ namespace dc::cli {
 int run_program(int argc, char** argv) {
   int exit_code = kExitOk;
   install_interrupt_handlers();
+#ifdef DYNCONTACT_WITH_MPI
+  table::use_mpi_ranks();  // `mpirun -n N dyncontact ...`: a table's lines, a sweep's runs over the ranks
+#endif
   // A file-size limit (ulimit -f) makes a write fail with EFBIG, an OutputError like a full disk,
   // instead of killing the program mid-file.
   std::signal(SIGXFSZ, SIG_IGN);

@@ -5,13 +5,11 @@
 #include <condition_variable>
 #include <cstdlib>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
-
-#ifdef DYNCONTACT_WITH_MPI
-#include <mpi.h>
-#endif
+#include <utility>
 
 #include "errors.hpp"
 #include "interrupt.hpp"
@@ -98,45 +96,11 @@ class Gathered {
   std::size_t finished_ = 0;
 };
 
-#ifdef DYNCONTACT_WITH_MPI
-constexpr int kTagResult = 1;  // rank -> 0: {"unit": u, "result": r} (u = -1: first request)
-constexpr int kTagAssign = 2;  // 0 -> rank: the next unit, -1: stop
-
-/// Rank 0: answers pending requests (storing the results they carry) without blocking.
-/// Returns the number of ranks that were told to stop.
-int serve_requests(UnitQueue& queue, Gathered& gathered) {
-  int stopped = 0;
-  for (;;) {
-    int flag = 0;
-    MPI_Status status;
-    MPI_Iprobe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &flag, &status);
-    if (!flag) return stopped;
-    int size = 0;
-    MPI_Get_count(&status, MPI_CHAR, &size);
-    std::string text(static_cast<std::size_t>(size), '\0');
-    MPI_Recv(text.data(), size, MPI_CHAR, status.MPI_SOURCE, kTagResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    const nlohmann::json message = nlohmann::json::parse(text);
-    const long long unit = message.at("unit").get<long long>();
-    if (unit >= 0) gathered.put(static_cast<std::size_t>(unit), message.at("result").dump());
-    long long next = queue.take();
-    MPI_Send(&next, 1, MPI_LONG_LONG, status.MPI_SOURCE, kTagAssign, MPI_COMM_WORLD);
-    if (next < 0) ++stopped;
-  }
+/// The transport between ranks that run_distributed uses under a launcher (none: threads only).
+std::unique_ptr<RankTransport>& installed_transport() {
+  static std::unique_ptr<RankTransport> transport;
+  return transport;
 }
-
-/// Ranks other than 0: ask for a unit, solve it, send its result with the next request.
-void remote_worker(const std::function<nlohmann::json(std::size_t)>& work) {
-  nlohmann::json message = {{"unit", -1}};
-  for (;;) {
-    const std::string text = message.dump();
-    MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
-    long long unit = -1;
-    MPI_Recv(&unit, 1, MPI_LONG_LONG, 0, kTagAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    if (unit < 0) return;
-    message = {{"unit", unit}, {"result", run_unit(work, static_cast<std::size_t>(unit))}};
-  }
-}
-#endif
 
 }  // namespace
 
@@ -154,35 +118,26 @@ LaunchRank launch_rank() {
   return r;
 }
 
-bool built_with_mpi() {
-#ifdef DYNCONTACT_WITH_MPI
-  return true;
-#else
-  return false;
-#endif
-}
+void install_rank_transport(std::unique_ptr<RankTransport> transport) { installed_transport() = std::move(transport); }
+
+bool built_with_mpi() { return installed_transport() != nullptr; }
 
 std::vector<nlohmann::json> run_distributed(std::size_t units, const std::function<nlohmann::json(std::size_t)>& work,
                                             const std::function<void(std::size_t, std::size_t)>& done) {
   const LaunchRank launched = launch_rank();
+  RankTransport* const transport = installed_transport().get();
   int rank = 0, size = 1;
-#ifdef DYNCONTACT_WITH_MPI
   if (launched.size > 1) {
-    int provided = 0;
-    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    if (transport == nullptr)
+      throw InputError("mpirun", "this dyncontact was built without MPI (DYNCONTACT_WITH_MPI off): run it without "
+                                 "mpirun (it uses the cores of this machine with threads), or rebuild with Open MPI");
+    const LaunchRank joined = transport->start();
+    rank = joined.rank;
+    size = joined.size;
   }
-#else
-  if (launched.size > 1)
-    throw InputError("mpirun", "this dyncontact was built without MPI (DYNCONTACT_WITH_MPI off): run it without "
-                               "mpirun (it uses the cores of this machine with threads), or rebuild with Open MPI");
-#endif
   if (rank != 0) {
-#ifdef DYNCONTACT_WITH_MPI
-    remote_worker(work);
-    MPI_Finalize();
-#endif
+    transport->work([&](std::size_t unit) { return run_unit(work, unit); });
+    transport->finish();
     return {};
   }
 
@@ -203,18 +158,18 @@ std::vector<nlohmann::json> run_distributed(std::size_t units, const std::functi
   const auto all_finished = [&] {
     return finished == units || (interrupt_requested() && finished == queue.handed_out());
   };
+  const std::function<long long()> next_unit = [&] { return queue.take(); };
+  const std::function<void(std::size_t, const std::string&)> store = [&](std::size_t unit, const std::string& text) {
+    gathered.put(unit, text);
+  };
   while (!all_finished() || remote_active > 0) {
-#ifdef DYNCONTACT_WITH_MPI
-    if (size > 1) remote_active -= serve_requests(queue, gathered);
-#endif
+    if (size > 1) remote_active -= transport->serve(next_unit, store);
     finished = gathered.wait(std::chrono::milliseconds(size > 1 ? 2 : 200), finished);
     if (finished != reported && done) done(finished, units);
     reported = finished;
   }
   for (auto& t : pool) t.join();
-#ifdef DYNCONTACT_WITH_MPI
-  if (size > 1) MPI_Finalize();
-#endif
+  if (size > 1) transport->finish();
   return gathered.take();
 }
 
