@@ -14,7 +14,7 @@ void use_one_blas_thread() {
   if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
   // OpenBLAS starts its worker threads when it is loaded, before main, with every signal open:
   // they would take the SIGINT/SIGTERM the command line leaves to its watchdog
-  // (apps/interrupt_handler.hpp). With one thread they are idle: stopped here (a later
+  // (apps/runs/interrupt_handler.hpp). With one thread they are idle: stopped here (a later
   // multi-threaded call starts them again, from the calling thread).
   using Shutdown = int (*)();
   if (auto stop = reinterpret_cast<Shutdown>(dlsym(RTLD_DEFAULT, "blas_thread_shutdown_"))) stop();

@@ -32,7 +32,7 @@ void read_dimensionless(const JsonBlock& d, PaperCylinderSpec& s) {
 }
 
 /// body, loads, time of the dimensional inputs; the model's own limits on the derived
-/// parameters are checked where they are converted (apps/paper_cylinder_run).
+/// parameters are checked where they are converted (apps/runs/paper_cylinder_run).
 void read_dimensional(const JsonBlock& top, const Case& c, PaperCylinderSpec& s) {
   PaperCylinderBody& b = s.body;
   const JsonBlock body = top.child("body");

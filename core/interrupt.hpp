@@ -24,7 +24,7 @@ void clear_interrupt() noexcept;
 void throw_if_interrupted();
 
 /// A single call that cannot poll the flag (a mesher's, a sparse factorisation's): while one is
-/// open, the command line's watchdog (apps/interrupt_handler.hpp) ends the process when an
+/// open, the command line's watchdog (apps/runs/interrupt_handler.hpp) ends the process when an
 /// interrupt is not noticed within its grace period. Opening one throws Interrupted when the
 /// flag is already raised. Not nested across threads: the innermost description is kept.
 class NonPollingSection {

@@ -1,4 +1,4 @@
-// The result limits of problem "dynamic" (apps/dynamic_limits.hpp): what is known wrong before
+// The result limits of problem "dynamic" (dynamics/dynamic_limits.hpp): what is known wrong before
 // the run is refused with exit 2 naming the key (validate says so too), what a run shows at any
 // step is in summary.json's "limits" with exit 2, and what the case accepts is recorded as such.
 #include <gtest/gtest.h>

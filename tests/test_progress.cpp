@@ -1,4 +1,4 @@
-// The progress line of long commands (apps/progress.cpp): the count of finished points, steps or
+// The progress line of long commands (apps/runs/progress.cpp): the count of finished points, steps or
 // simulated time with the time left from the finished share, and for one solve the time left
 // from the rate at which its residual falls towards the residual it stops at.
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 namespace {
 
 using dc::ProgressInfo;
-using dc::cli::Progress;
+using dc::runs::Progress;
 
 /// The seconds of "about N s left" in `line`, or -1 when the line has none.
 double seconds_left(const std::string& line) {

@@ -48,7 +48,7 @@ int report_input_errors_on_root(const std::function<int()>& command) {
     return command();
   } catch (const InputError&) {
     if (root) throw;
-    return kExitBadInput;
+    return runs::kExitBadInput;
   }
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Shared by the subcommands: loading a case with command-line overrides, the output folder,
-// input errors under mpirun. The exit codes: exit_codes.hpp.
+// input errors under mpirun. The exit codes: runs/exit_codes.hpp.
 #include <functional>
 #include <string>
 #include <vector>
@@ -15,8 +15,8 @@ namespace dc::cli {
 Case load_case(const std::string& path, const std::vector<std::string>& overrides,
                const std::string& backend = "");
 
-/// open_output_folder (output_folder.hpp) for the command line: the folder stays locked until
-/// the process ends.
+/// open_output_folder (output/output_folder.hpp) for the command line: the folder stays locked
+/// until the process ends.
 std::string prepare_output_dir(const Case& c, const std::string& cli_out);
 
 /// Message for the problem kinds that have no solver in this build.

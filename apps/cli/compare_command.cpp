@@ -37,7 +37,7 @@ struct CompareArgs {
 struct Entry {
   std::string backend;
   bool ok = false;  ///< produced a result (whatever its status)
-  StaticRun run;
+  runs::StaticRun run;
   std::string error;  ///< what the backend threw, if it did
 };
 
@@ -106,7 +106,7 @@ int run_compare(const CompareArgs& args) {
     Entry e;
     e.backend = b;
     try {
-      e.run = run_static(c, !args.quiet);
+      e.run = runs::run_static(c, !args.quiet);
       throw_if_interrupted();  // a part of a history is no comparison: main() says "interrupted"
       e.ok = true;
     } catch (const InputError&) {
@@ -126,7 +126,7 @@ int run_compare(const CompareArgs& args) {
   std::printf("\n");
   // The limits of the result (grid edge, a/R) are the case's, whichever backend: judged on the first.
   std::vector<ResultLimit> limits;
-  if (first) limits = result_limits(base, measured_contact_size(base, first->run.summary));
+  if (first) limits = result_limits(base, runs::measured_contact_size(base, first->run.summary));
   for (auto& e : entries) {
     nlohmann::json item;
     item["backend"] = e.backend;
@@ -185,12 +185,12 @@ int run_compare(const CompareArgs& args) {
   output::write_file_whole(path, list.dump(2) + "\n");
   std::printf("wrote %s\n", path.c_str());
   std::fflush(stdout);
-  if (report_limits(limits, dir)) return kExitBadInput;
+  if (runs::report_limits(limits, dir)) return runs::kExitBadInput;
   if (!all_converged) {
     std::cerr << "error: solver: not every backend converged (see " << path << ")\n";
-    return kExitUnconverged;
+    return runs::kExitUnconverged;
   }
-  return kExitOk;
+  return runs::kExitOk;
 }
 
 }  // namespace

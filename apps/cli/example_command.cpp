@@ -23,17 +23,17 @@ struct ExampleArgs {
 
 int run_example(const ExampleArgs& args) {
   if (args.list || args.name.empty()) {
-    for (const auto& e : bundled_examples()) std::printf("%-20s %s\n", e.name, e.summary);
-    return kExitOk;
+    for (const auto& e : runs::bundled_examples()) std::printf("%-20s %s\n", e.name, e.summary);
+    return runs::kExitOk;
   }
-  const BundledExample* e = find_example(args.name);
+  const runs::BundledExample* e = runs::find_example(args.name);
   if (!e) throw InputError("example", "unknown example '" + args.name + "' (see `dyncontact example --list`)");
   // Usually redirected into a file (`> case.json`): a full disk is an output error, not a success.
   if (std::fputs(e->text, stdout) < 0 || std::fflush(stdout) != 0) {
     const int err = errno;
     throw OutputError("standard output", std::string("cannot write the example: ") + std::strerror(err), err);
   }
-  return kExitOk;
+  return runs::kExitOk;
 }
 
 }  // namespace

@@ -29,8 +29,8 @@
 namespace dc::cli {
 
 int run_program(int argc, char** argv) {
-  int exit_code = kExitOk;
-  install_interrupt_handlers();
+  int exit_code = runs::kExitOk;
+  runs::install_interrupt_handlers();
 #ifdef DYNCONTACT_WITH_MPI
   table::use_mpi_ranks();  // `mpirun -n N dyncontact ...`: a table's lines, a sweep's runs over the ranks
 #endif
@@ -68,43 +68,43 @@ int run_program(int argc, char** argv) {
     if (argc > 1 && argv[1][0] != '-' && !is_subcommand(argv[1])) {
       std::cerr << "error: unknown subcommand '" << argv[1]
                 << "' (expected solve, compare, validate, example or table; see dyncontact --help)\n";
-      return kExitBadInput;
+      return runs::kExitBadInput;
     }
     try {
       app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
       const int code = app.exit(e);
-      return code == 0 ? kExitOk : kExitBadInput;
+      return code == 0 ? runs::kExitOk : runs::kExitBadInput;
     }
     return exit_code;
   } catch (const dc::Interrupted&) {  // a subcommand that had nothing finished to write
     std::cout.flush();
     std::cerr << "interrupted\n";
-    return interrupted_exit_code();
+    return runs::interrupted_exit_code();
   } catch (const dc::InputError& e) {
     std::cout.flush();
     std::cerr << "error: " << e.what() << '\n';
-    return kExitBadInput;
+    return runs::kExitBadInput;
   } catch (const dc::OutputError& e) {
     std::cout.flush();
     std::cerr << "error: " << e.what() << '\n';  // the file, then why
-    return kExitOutput;
+    return runs::kExitOutput;
   } catch (const std::bad_alloc&) {
     std::cout.flush();
     std::cerr << "error: the case needs more memory than this machine has: reduce grid.nx and grid.ny (or "
                  "fe_body.elements, or a coarser fe_body.contact_size, for a finite-element body)\n";
-    return kExitBadInput;
+    return runs::kExitBadInput;
   } catch (const dc::SolverFailure& e) {
     std::cout.flush();
     std::cerr << "error: solver: " << e.what() << '\n';
-    return kExitUnconverged;
+    return runs::kExitUnconverged;
   } catch (const std::exception& e) {
     std::cout.flush();
     std::cerr << "error: internal: " << e.what() << '\n';
-    return kExitInternal;
+    return runs::kExitInternal;
   } catch (...) {
     std::cerr << "error: internal: unknown exception\n";
-    return kExitInternal;
+    return runs::kExitInternal;
   }
 }
 

@@ -90,10 +90,10 @@ nlohmann::json interrupted_summary(const Case& c) {
 class InterruptedSummaryOnWatchdog {
  public:
   InterruptedSummaryOnWatchdog(const Case& c, const std::string& dir) {
-    set_interrupt_last_file((std::filesystem::path(dir) / "summary.json").string(),
+    runs::set_interrupt_last_file((std::filesystem::path(dir) / "summary.json").string(),
                             interrupted_summary(c).dump(2) + "\n");
   }
-  ~InterruptedSummaryOnWatchdog() { set_interrupt_last_file("", ""); }
+  ~InterruptedSummaryOnWatchdog() { runs::set_interrupt_last_file("", ""); }
   InterruptedSummaryOnWatchdog(const InterruptedSummaryOnWatchdog&) = delete;
   InterruptedSummaryOnWatchdog& operator=(const InterruptedSummaryOnWatchdog&) = delete;
 };
@@ -106,10 +106,10 @@ int run_solve(const SolveArgs& args) {
   // What a dynamic run is known to get wrong before it starts (InputError: exit 2, nothing written).
   if (c.problem == ProblemKind::dynamic && !c.sweep) dynamics::dynamic_limits_before(c);
   if (c.problem == ProblemKind::paper_cylinder)
-    return run_paper_cylinder(c, root ? prepare_output_dir(c, args.out) : std::string(), args.quiet);
+    return runs::run_paper_cylinder(c, root ? prepare_output_dir(c, args.out) : std::string(), args.quiet);
   if (c.problem == ProblemKind::dynamic && c.sweep)
-    return run_dynamic_sweep(c, root ? prepare_output_dir(c, args.out) : std::string(), args.quiet);
-  if (!root) return kExitOk;
+    return runs::run_dynamic_sweep(c, root ? prepare_output_dir(c, args.out) : std::string(), args.quiet);
+  if (!root) return runs::kExitOk;
   if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential && c.problem != ProblemKind::dynamic &&
       c.problem != ProblemKind::finite)
     not_implemented(c.problem);
@@ -117,21 +117,22 @@ int run_solve(const SolveArgs& args) {
   const InterruptedSummaryOnWatchdog last_words(c, dir);
   if (c.problem == ProblemKind::dynamic || c.problem == ProblemKind::finite) {
     try {
-      return c.problem == ProblemKind::dynamic ? run_dynamic(c, dir, args.quiet) : run_finite(c, dir, args.quiet);
+      return c.problem == ProblemKind::dynamic ? runs::run_dynamic(c, dir, args.quiet)
+                                               : runs::run_finite(c, dir, args.quiet);
     } catch (const Interrupted&) {  // before anything was finished (e.g. while meshing the body)
       const std::string path = output::write_summary(dir, interrupted_summary(c));
       std::cerr << "interrupted before a result was finished; wrote " << path << '\n';
-      return interrupted_exit_code();
+      return runs::interrupted_exit_code();
     }
   }
 
-  StaticRun run;
+  runs::StaticRun run;
   try {
-    run = run_static(c, !args.quiet);
+    run = runs::run_static(c, !args.quiet);
   } catch (const Interrupted&) {  // nothing finished: a summary that says so
     const std::string path = output::write_summary(dir, interrupted_summary(c));
     std::cerr << "interrupted before a result was finished; wrote " << path << '\n';
-    return interrupted_exit_code();
+    return runs::interrupted_exit_code();
   }
   nlohmann::json& s = run.summary;
   if (run.interrupted) s["status"] = "interrupted";
@@ -159,7 +160,7 @@ int run_solve(const SolveArgs& args) {
     files["plots"] = plots;
   }
   s["files"] = files;
-  const std::vector<ResultLimit> limits = attach_result_limits(c, s);
+  const std::vector<ResultLimit> limits = runs::attach_result_limits(c, s);
   const std::string summary_path = output::write_summary(dir, s);
 
   const SolverReport& r = run.report;
@@ -184,20 +185,20 @@ int run_solve(const SolveArgs& args) {
   if (run.interrupted) {
     std::cerr << "interrupted after " << run.fields.size() << " finished step(s); results written to " << dir
               << '\n';
-    return interrupted_exit_code();
+    return runs::interrupted_exit_code();
   }
-  if (report_limits(limits, dir)) return kExitBadInput;
+  if (runs::report_limits(limits, dir)) return runs::kExitBadInput;
   if (!run.converged) {
     const std::string what = std::string(to_string(r.status)) + (r.message.empty() ? "" : ": " + r.message);
     if (c.solver.accept_unconverged) {
       std::cerr << "warning: solver: " << what << " (accepted: solver.accept_unconverged)\n";
-      return kExitOk;
+      return runs::kExitOk;
     }
     std::cerr << "error: solver: did not converge (" << what << "); results written to " << dir
               << " (set solver.accept_unconverged to accept them)\n";
-    return kExitUnconverged;
+    return runs::kExitUnconverged;
   }
-  return kExitOk;
+  return runs::kExitOk;
 }
 
 }  // namespace

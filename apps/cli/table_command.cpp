@@ -1,6 +1,6 @@
 // dyncontact table CASE.json --creepage A:B:N [--lateral ...] [--spin ...] [--out DIR]
 // A creep-force table: steady rolling at every combination of the values, spread over the
-// cores (threads) or, under mpirun, over the ranks (table_ranks.hpp).
+// cores (threads) or, under mpirun, over the ranks (table/table_ranks.hpp).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -51,26 +51,26 @@ int run_table(const TableArgs& args, bool root) {
   table::check_table_case(c, axes);
   // The contact every point shares (the same load): its result limits (grid edge, a/R,
   // resolution) before the table; an error refuses the table (exit 2, nothing written).
-  NormalRun contact = run_normal(c, false);
-  const std::vector<ResultLimit> limits = attach_result_limits(c, contact.summary);
+  runs::NormalRun contact = runs::run_normal(c, false);
+  const std::vector<ResultLimit> limits = runs::attach_result_limits(c, contact.summary);
   if (std::any_of(limits.begin(), limits.end(), [](const ResultLimit& l) { return l.error; })) {
     if (root)
       for (const ResultLimit& l : limits)
         std::cerr << (l.error ? "error: " : "warning: ") << l.key << ": the contact of the table's load: "
                   << l.message << '\n';
-    return kExitBadInput;
+    return runs::kExitBadInput;
   }
   // Only rank 0 writes; the folder is checked before anything is solved.
   const std::string dir = root ? prepare_output_dir(c, args.out) : std::string();
-  if (root) report_limits(limits, dir);  // warnings only
+  if (root) runs::report_limits(limits, dir);  // warnings only
 
-  Progress progress("table of " + std::to_string(axes.size()) + " points", root && !args.quiet);
+  runs::Progress progress("table of " + std::to_string(axes.size()) + " points", root && !args.quiet);
   const std::size_t per_line = axes.creepage_x.size();
   const std::vector<nlohmann::json> lines = table::run_distributed(
       axes.lines(), [&](std::size_t line) { return table::solve_table_line(c, axes, line); },
       [&](std::size_t done, std::size_t) { progress.count(done * per_line, axes.size()); });
   progress.finish();
-  if (!root) return kExitOk;
+  if (!root) return runs::kExitOk;
 
   // Interrupted: the lines before the first one not finished (whole lines, in table order).
   std::vector<table::TableRow> rows;
@@ -95,7 +95,7 @@ int run_table(const TableArgs& args, bool root) {
   if (interrupted) {
     std::cerr << "interrupted after " << rows.size() << " of " << axes.size() << " points; wrote " << csv
               << ", table.json\n";
-    return interrupted_exit_code();
+    return runs::interrupted_exit_code();
   }
 
   std::size_t bad = 0;
@@ -114,9 +114,9 @@ int run_table(const TableArgs& args, bool root) {
                   << rows[i].message << '\n';
     std::cerr << "error: solver: " << bad << " of " << rows.size()
               << " points not converged (status in table.csv, messages in table.json)\n";
-    return kExitUnconverged;
+    return runs::kExitUnconverged;
   }
-  return kExitOk;
+  return runs::kExitOk;
 }
 
 }  // namespace

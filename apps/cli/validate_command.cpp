@@ -110,15 +110,15 @@ int run_validate(const ValidateArgs& args) {
                               ? "; meshed again to the contact found when coarser than a third of its half-width"
                               : "");
     }
-    if (const auto e = estimate_fe_body(c)) {
+    if (const auto e = runs::estimate_fe_body(c)) {
       std::printf("  body:     about %.3g tetrahedra, %.3g dofs; about %.3g GB and %.2g s (one thread; a remesh to "
                   "the contact found can add to it)\n",
                   e->tetrahedra, e->dofs, e->memory_bytes / 1e9, e->seconds);
-      check_fe_body_fits(c);  // throws naming fe_body.elements or fe_body.contact_size
+      runs::check_fe_body_fits(c);  // throws naming fe_body.elements or fe_body.contact_size
     }
   }
   if (static_problem) {
-    const ResourceEstimate est = estimate_resources(c);
+    const runs::ResourceEstimate est = runs::estimate_resources(c);
     std::printf("  estimate: %s operator, about %.3g MB and %.2g s per solve%s\n            (%s)\n", est.operator_kind.c_str(),
                 est.memory_bytes / 1e6, est.seconds,
                 est.solves > 1 ? (", " + std::to_string(est.solves) + " solves").c_str() : "", est.basis.c_str());
@@ -157,7 +157,7 @@ int run_validate(const ValidateArgs& args) {
     if (2.0 * ref->semi_axis_x / g.dx < 6.0 || (!two_d && 2.0 * ref->semi_axis_y / g.dy < 6.0))
       std::fprintf(stderr, "warning: grid: fewer than 6 elements across the contact; refine the grid\n");
   }
-  if (c.problem == ProblemKind::paper_cylinder) validate_paper_cylinder(c);
+  if (c.problem == ProblemKind::paper_cylinder) runs::validate_paper_cylinder(c);
   else if (c.problem == ProblemKind::dynamic) {
     std::printf("dynamic: %.6g s in steps of %.6g s (%s), normal model %s, contact model %s, %s\n", c.dynamic->t_end,
                 c.dynamic->dt, c.dynamic->bdf2 ? "bdf2" : "bdf1", to_string(c.dynamic->normal_model),
@@ -180,12 +180,12 @@ int run_validate(const ValidateArgs& args) {
       std::printf("sweep: %zu runs over %s\n", points.size(), c.sweep->key.c_str());
     }
   }
-  else if (c.problem == ProblemKind::finite && !finite_supported())
+  else if (c.problem == ProblemKind::finite && !runs::finite_supported())
     std::printf("note: this build has no finite-element support (needs libgmsh-dev, libsuitesparse-dev)\n");
   else if (c.problem != ProblemKind::normal && c.problem != ProblemKind::tangential && c.problem != ProblemKind::finite)
     std::printf("note: the solver for problem '%s' is not implemented in this build yet\n", to_string(c.problem));
   std::printf("valid\n");
-  return kExitOk;
+  return runs::kExitOk;
 }
 
 }  // namespace

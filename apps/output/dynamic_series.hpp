@@ -1,6 +1,6 @@
 #pragma once
 // timeseries.csv of a "dynamic" run (a header line, one row per accepted step) and its figures,
-// one per plotted quantity. The run that fills it: dynamic_run.hpp (simulate_dynamic).
+// one per plotted quantity. The run that fills it: runs/dynamic_run.hpp (simulate_dynamic).
 #include <ostream>
 #include <string>
 #include <utility>

@@ -1,7 +1,7 @@
 #pragma once
 // The signals that interrupt a run: SIGINT and SIGTERM. The command line blocks them in its main
-// thread and every thread it starts, and its watchdog takes them (interrupt_handler.hpp); a child
-// process (gnuplot, gnuplot_figures.cpp) gets them back before exec.
+// thread and every thread it starts, and its watchdog takes them (runs/interrupt_handler.hpp);
+// a child process (gnuplot, gnuplot_figures.cpp) gets them back before exec.
 #include <signal.h>
 
 namespace dc::output {

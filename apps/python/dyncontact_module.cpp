@@ -1,7 +1,8 @@
 // The Python module `dyncontact`: solve a case (dict, JSON text or path) to a summary dict and
 // NumPy fields, the half-space operators, and the case model's input errors as Python
 // exceptions carrying the key. The solvers are the C++ ones (core/, nlp/), the run and its
-// summary the command line's (apps/tangential_run.hpp), so Python and `dyncontact solve` agree.
+// summary the command line's (apps/runs/tangential_run.hpp), so Python and `dyncontact solve`
+// agree.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -81,13 +82,13 @@ py::dict solve(const py::object& case_arg, const py::object& out, bool progress)
   dc::output::OutputFolder folder;
   if (!out.is_none())
     folder = dc::output::open_output_folder(c, py::str(py::module_::import("os").attr("fspath")(out)), "out");
-  dc::cli::StaticRun run;
+  dc::runs::StaticRun run;
   {
     py::gil_scoped_release release;
-    run = dc::cli::run_static(c, progress);
+    run = dc::runs::run_static(c, progress);
   }
   nlohmann::json summary = run.summary;
-  dc::cli::attach_result_limits(c, summary);  // as `dyncontact solve` writes them
+  dc::runs::attach_result_limits(c, summary);  // as `dyncontact solve` writes them
   std::string advice = "; the result is in this exception's .result";
   if (folder.lock) {  // summary.json last: complete or absent
     dc::output::write_fields(folder.dir, c.grid, run.fields.back());

@@ -1,5 +1,5 @@
 #pragma once
-// The module's exceptions and the result limits (apps/result_limits.hpp) in Python: bad input
+// The module's exceptions and the result limits (apps/runs/result_limits.hpp) in Python: bad input
 // raises InputError with .key; a result the program knows to be wrong (a limit that is an error,
 // as `dyncontact solve` exits 2 for) raises ResultLimitError carrying the limits and the result;
 // a limit that is only a warning (or accepted by the case) is a ResultLimitWarning.

@@ -1,7 +1,7 @@
 // The runs in time for Python: the dynamic simulation of a "dynamic" case (the C++ name,
 // DynamicSimulation) and the runs of a paper_cylinder case, returned as the summary dict with the
 // time series as NumPy columns (the columns of timeseries.csv). The runs and their summaries are
-// the command line's (apps/dynamic_run.hpp, apps/paper_cylinder_run.hpp).
+// the command line's (apps/runs/dynamic_run.hpp, apps/runs/paper_cylinder_run.hpp).
 #include <pybind11/stl.h>
 
 #include <cmath>
@@ -69,19 +69,19 @@ py::dict with_series(const nlohmann::json& summary, const std::vector<std::strin
 
 py::dict run_dynamic_case(const Case& c, bool progress) {
   if (c.sweep) {  // one run per value, each with its time series
-    cli::DynamicSweepOutcome out;
+    runs::DynamicSweepOutcome out;
     {
       py::gil_scoped_release release;
-      out = cli::simulate_dynamic_sweep(c, !progress);
+      out = runs::simulate_dynamic_sweep(c, !progress);
     }
     py::dict result = with_series(out.summary, out.files, out.texts);
     enforce_summary_limits(out.summary, result, kRunAdvice);
     return result;
   }
-  cli::DynamicOutcome out;
+  runs::DynamicOutcome out;
   {
     py::gil_scoped_release release;
-    out = cli::simulate_dynamic(c, progress);
+    out = runs::simulate_dynamic(c, progress);
   }
   py::dict result = to_python(out.summary);
   result["timeseries"] = csv_columns(out.timeseries);
@@ -90,10 +90,10 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
 }
 
 py::dict run_paper_cylinder_case(const Case& c, bool progress) {
-  cli::PaperCylinderOutcome out;
+  runs::PaperCylinderOutcome out;
   {
     py::gil_scoped_release release;
-    out = cli::simulate_paper_cylinder(c, !progress);
+    out = runs::simulate_paper_cylinder(c, !progress);
   }
   py::dict result = with_series(out.summary, out.files, out.texts);
   enforce_summary_limits(out.summary, result, kRunAdvice);

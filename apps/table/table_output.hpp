@@ -18,7 +18,7 @@ std::string table_csv(const std::vector<TableRow>& rows);
 /// creepage_y, spin, status, message}]} (rows counted from 0 in table.csv's order).
 nlohmann::json table_json(const Case& c, const TableAxes& axes, const std::vector<TableRow>& rows);
 
-/// The plots (gnuplot_figures.hpp) Fx/(mu P) against creepage_x and Fy/(mu P) against
+/// The plots (output/gnuplot_figures.hpp) Fx/(mu P) against creepage_x and Fy/(mu P) against
 /// creepage_y, one curve per line of the table (at most 8, evenly chosen); returns the images.
 std::vector<std::string> table_plots(const std::string& dir, const Case& c, const TableAxes& axes,
                                      const std::vector<TableRow>& rows);

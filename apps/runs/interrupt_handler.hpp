@@ -1,10 +1,10 @@
 #pragma once
 // SIGINT/SIGTERM for the command line: a watchdog thread takes them (sigwait) and raises dc's
 // interrupt flag (core/interrupt.hpp); a second signal ends the program at once. The signals and
-// their unblocking in a child process: interrupt_signals.hpp.
+// their unblocking in a child process: output/interrupt_signals.hpp.
 #include <string>
 
-namespace dc::cli {
+namespace dc::runs {
 
 /// How long an interrupt may go unnoticed inside a non-polling section (core/interrupt.hpp:
 /// meshing, a sparse factorisation) before the watchdog ends the process (exit 128 + signal).
@@ -21,4 +21,4 @@ void set_interrupt_last_file(const std::string& path, const std::string& text);
 /// The exit code of an interrupted run: 128 + the signal (130 SIGINT, 143 SIGTERM).
 int interrupted_exit_code();
 
-}  // namespace dc::cli
+}  // namespace dc::runs

@@ -8,7 +8,7 @@
 
 #include "case_model.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 
 struct FeBodyEstimate {
   double tetrahedra = 0.0;
@@ -32,4 +32,4 @@ double available_memory_bytes();
 /// available (the message gives both, and what to reduce).
 void check_fe_body_fits(const Case& c);
 
-}  // namespace dc::cli
+}  // namespace dc::runs

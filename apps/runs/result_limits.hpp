@@ -9,7 +9,7 @@
 #include "case_model.hpp"
 #include "contact_limits.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 
 /// The contact size of a solved static case from its summary (add_contact_measures keys).
 ContactSize measured_contact_size(const Case& c, const nlohmann::json& summary);
@@ -23,4 +23,4 @@ bool report_limits(const std::vector<ResultLimit>& limits, const std::string& di
 /// returned: one function for `solve` and Python's solve().
 std::vector<ResultLimit> attach_result_limits(const Case& c, nlohmann::json& summary);
 
-}  // namespace dc::cli
+}  // namespace dc::runs

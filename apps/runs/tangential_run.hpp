@@ -11,7 +11,7 @@
 #include "static_fields.hpp"
 #include "tangential_problem.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 
 struct TangentialRun {
   std::vector<TangentialSolution> steps;     ///< one, or one per history step
@@ -58,4 +58,4 @@ struct StaticRun {
 /// Runs a normal or tangential case (run_normal / run_tangential).
 StaticRun run_static(const Case& c, bool progress);
 
-}  // namespace dc::cli
+}  // namespace dc::runs

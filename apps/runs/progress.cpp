@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <iostream>
 
-namespace dc::cli {
+namespace dc::runs {
 
 Progress::Progress(std::string label, bool enabled)
     : label_(std::move(label)),
@@ -130,4 +130,4 @@ void Progress::finish() {
   }
 }
 
-}  // namespace dc::cli
+}  // namespace dc::runs

@@ -2,7 +2,7 @@
 
 #include <iostream>
 
-namespace dc::cli {
+namespace dc::runs {
 
 ContactSize measured_contact_size(const Case& c, const nlohmann::json& s) {
   ContactSize size;
@@ -35,4 +35,4 @@ std::vector<ResultLimit> attach_result_limits(const Case& c, nlohmann::json& sum
   return limits;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::runs

@@ -26,7 +26,7 @@
 #include "table_ranks.hpp"
 #include "tangential_problem.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 namespace {
 
 using nlohmann::json;
@@ -307,7 +307,7 @@ PaperCylinderOutcome simulate_paper_cylinder(const Case& c, bool quiet) {
   const Setup first = setup_of(c);
   const table::LaunchRank launched = table::launch_rank();
 
-  // The runs over the cores or the ranks (table_ranks.hpp), gathered in sweep order.
+  // The runs over the cores or the ranks (table/table_ranks.hpp), gathered in sweep order.
   Progress progress("sweep", launched.root() && !quiet && specs.size() > 1);
   const std::vector<json> units = table::run_distributed(
       specs.size(), [&](std::size_t k) { return sweep_unit(c, specs, k); },
@@ -417,4 +417,4 @@ int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet) {
   return kExitOk;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::runs

@@ -8,7 +8,7 @@
 #include "normal_problem.hpp"
 #include "static_fields.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 
 struct NormalRun {
   NormalSolution solution;
@@ -21,4 +21,4 @@ struct NormalRun {
 /// solve takes over a second.
 NormalRun run_normal(const Case& c, bool progress);
 
-}  // namespace dc::cli
+}  // namespace dc::runs

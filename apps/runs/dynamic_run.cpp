@@ -24,7 +24,7 @@
 #include "finite_body_contact.hpp"
 #endif
 
-namespace dc::cli {
+namespace dc::runs {
 namespace {
 
 using nlohmann::json;
@@ -224,4 +224,4 @@ int run_dynamic_sweep(const Case& c, const std::string& dir, bool quiet) {
   return kExitOk;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::runs

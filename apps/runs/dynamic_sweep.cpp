@@ -6,7 +6,7 @@
 #include "progress.hpp"
 #include "table_ranks.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 
 using nlohmann::json;
 
@@ -79,4 +79,4 @@ DynamicSweepOutcome simulate_dynamic_sweep(const Case& c, bool quiet) {
   return out;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::runs

@@ -6,7 +6,7 @@
 #include "progress.hpp"
 #include "summary_writer.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 
 NormalRun run_normal(const Case& c, bool progress) {
   NormalRun run;
@@ -25,4 +25,4 @@ NormalRun run_normal(const Case& c, bool progress) {
   return run;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::runs

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-namespace dc::cli {
+namespace dc::runs {
 
 struct BundledExample {
   const char* name;
@@ -15,4 +15,4 @@ const std::vector<BundledExample>& bundled_examples();
 /// nullptr when no example has that name.
 const BundledExample* find_example(const std::string& name);
 
-}  // namespace dc::cli
+}  // namespace dc::runs

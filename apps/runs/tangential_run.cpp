@@ -9,7 +9,7 @@
 #include "progress.hpp"
 #include "summary_writer.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 namespace {
 
 /// A solver leaves round-off pressures outside the contact; those within the certificate
@@ -178,4 +178,4 @@ StaticRun run_static(const Case& c, bool progress) {
   return out;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::runs

@@ -1,7 +1,8 @@
 #pragma once
 // `dyncontact solve` for problem "dynamic" (CASES.md): the moving massive body with the contact
-// solved in every step; summary.json, timeseries.csv (dynamic_series.hpp), plots of every series,
-// progress on stderr. The run without its files is simulate_dynamic (also the Python module's).
+// solved in every step; summary.json, timeseries.csv (output/dynamic_series.hpp), plots of every
+// series, progress on stderr. The run without its files is simulate_dynamic (also the Python
+// module's).
 #include <functional>
 #include <string>
 #include <vector>
@@ -12,7 +13,7 @@
 #include "dynamic_simulation.hpp"
 #include "result_limits.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 
 /// The run of a "dynamic" case without its files: summary.json's content (without "files") and
 /// timeseries.csv's text. run_dynamic writes them; the Python module returns them (the time
@@ -42,4 +43,4 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet);
 /// as run_dynamic's, over all runs.
 int run_dynamic_sweep(const Case& c, const std::string& dir, bool quiet);
 
-}  // namespace dc::cli
+}  // namespace dc::runs

@@ -4,7 +4,7 @@
 
 #include "linear_operator.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 
 ResourceEstimate estimate_resources(const Case& c) {
   ResourceEstimate e;
@@ -47,4 +47,4 @@ ResourceEstimate estimate_resources(const Case& c) {
   return e;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::runs

@@ -10,14 +10,14 @@
 
 #include "case_model.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 
 /// Checks the paper_cylinder blocks (dimensionless, time, traction_model, sweep); throws
 /// InputError naming the key.
 void validate_paper_cylinder(const Case& c);
 
 /// The runs of a case without its files. Its sweep's runs are spread over the cores, or over the
-/// ranks under mpirun (table_ranks.hpp: dynamic assignment, gathered in sweep order, the same
+/// ranks under mpirun (table/table_ranks.hpp: dynamic assignment, gathered in sweep order, the same
 /// content either way); progress with the time left on stderr unless `quiet`.
 struct PaperCylinderOutcome {
   bool root = true;                 ///< false on MPI ranks other than 0 (nothing else is set)
@@ -34,4 +34,4 @@ PaperCylinderOutcome simulate_paper_cylinder(const Case& c, bool quiet);
 /// early).
 int run_paper_cylinder(const Case& c, const std::string& dir, bool quiet);
 
-}  // namespace dc::cli
+}  // namespace dc::runs

@@ -14,7 +14,7 @@
 
 #include "quadratic_program.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 
 class Progress {
  public:
@@ -58,4 +58,4 @@ class Progress {
   std::thread thread_;
 };
 
-}  // namespace dc::cli
+}  // namespace dc::runs

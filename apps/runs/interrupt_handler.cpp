@@ -15,7 +15,7 @@
 #include "interrupt_signals.hpp"
 #include "output_files.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 namespace {
 
 std::mutex g_last_file_mutex;
@@ -25,7 +25,7 @@ std::string g_last_path, g_last_text;
 /// the flag only (async-signal-safe); the watchdog sees it.
 extern "C" void on_interrupt_signal(int signal) { dc::request_interrupt(signal); }
 
-/// Writes the last file whole (output_files.hpp); nothing on failure.
+/// Writes the last file whole (output/output_files.hpp); nothing on failure.
 void write_last_file() {
   std::lock_guard<std::mutex> lock(g_last_file_mutex);
   if (g_last_path.empty()) return;
@@ -98,4 +98,4 @@ int interrupted_exit_code() {
   return 128 + (signal > 0 ? signal : SIGINT);
 }
 
-}  // namespace dc::cli
+}  // namespace dc::runs

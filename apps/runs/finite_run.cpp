@@ -25,7 +25,7 @@
 #include "vtu_writer.hpp"
 #endif
 
-namespace dc::cli {
+namespace dc::runs {
 
 #ifdef DYNCONTACT_WITH_FE
 
@@ -238,4 +238,4 @@ StaticRun run_finite_static(const Case&, bool) { no_finite_support(); }
 
 #endif
 
-}  // namespace dc::cli
+}  // namespace dc::runs

@@ -5,7 +5,7 @@
 
 #include "case_model.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 
 struct ResourceEstimate {
   std::string operator_kind;  ///< "dense" or "fft" (what solver.operator / auto gives)
@@ -17,4 +17,4 @@ struct ResourceEstimate {
 
 ResourceEstimate estimate_resources(const Case& c);
 
-}  // namespace dc::cli
+}  // namespace dc::runs

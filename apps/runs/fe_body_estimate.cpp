@@ -12,7 +12,7 @@
 
 #include "errors.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 namespace {
 
 // Calibration on Gmsh meshes of the finite-hemisphere example (R = 10 mm, grid +-0.9 mm: contact
@@ -105,4 +105,4 @@ void check_fe_body_fits(const Case& c) {
                                " or a smaller grid (its reach sets the refined disk)");
 }
 
-}  // namespace dc::cli
+}  // namespace dc::runs

@@ -1,6 +1,6 @@
 #pragma once
 // The sweep of a "dynamic" case without its files: one dynamic run per value of the swept key,
-// spread over the cores, or over the ranks under mpirun (table_ranks.hpp: dynamic assignment,
+// spread over the cores, or over the ranks under mpirun (table/table_ranks.hpp: dynamic assignment,
 // gathered in sweep order, the same content either way). The command line writes the files
 // (dynamic_run.cpp); the Python module returns them.
 #include <cstddef>
@@ -11,7 +11,7 @@
 
 #include "case_model.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 
 struct DynamicSweepOutcome {
   bool root = true;                 ///< false on MPI ranks other than 0 (nothing else is set)
@@ -30,4 +30,4 @@ struct DynamicSweepOutcome {
 /// Every point is checked first (dynamic_limits_before: InputError naming the run's key).
 DynamicSweepOutcome simulate_dynamic_sweep(const Case& c, bool quiet);
 
-}  // namespace dc::cli
+}  // namespace dc::runs

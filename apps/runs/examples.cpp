@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace dc::cli {
+namespace dc::runs {
 
 const char* embedded_example_text(const std::string& name);  // generated: example_texts.cpp
 
@@ -50,4 +50,4 @@ const BundledExample* find_example(const std::string& name) {
   return nullptr;
 }
 
-}  // namespace dc::cli
+}  // namespace dc::runs

@@ -7,7 +7,7 @@
 #include "case_model.hpp"
 #include "tangential_run.hpp"
 
-namespace dc::cli {
+namespace dc::runs {
 
 /// Whether this build has finite-element support (DYNCONTACT_WITH_FE).
 bool finite_supported();
@@ -20,4 +20,4 @@ int run_finite(const Case& c, const std::string& dir, bool quiet);
 /// without "files".
 StaticRun run_finite_static(const Case& c, bool progress);
 
-}  // namespace dc::cli
+}  // namespace dc::runs
