@@ -70,15 +70,16 @@ RollingLoad rolling_load(const Opt& force, const Opt& approach, const Opt& creep
 SolverOptions solver_spec(const std::string& backend, double tol, double certificate_tol, int max_iter) {
   const std::optional<Backend> named = backend_from_string(backend);
   if (!named) throw InputError("backend", "expected auto, ipopt, nlopt or native, got '" + backend + "'");
-  if (!(tol > 0.0) || !std::isfinite(tol)) throw InputError("tol", "must be a positive number");
-  if (!(certificate_tol > 0.0) || !std::isfinite(certificate_tol))
-    throw InputError("certificate_tol", "must be a positive number");
-  if (max_iter < 1) throw InputError("max_iter", "must be at least 1");
   SolverOptions s;
   s.backend = *named;
   s.tol = tol;
   s.certificate_tol = certificate_tol;
   s.max_iter = max_iter;
+  // The case file's rule (SolverOptions::validate): "<field>: <reason>", the field the argument.
+  if (const std::string why = s.validate(); !why.empty()) {
+    const auto colon = why.find(": ");
+    throw InputError(why.substr(0, colon), why.substr(colon + 2));
+  }
   return s;
 }
 
@@ -146,7 +147,8 @@ FrictionLaw friction_of(const Opt& mu, const Opt& tresca) {
 
 constexpr const char* kSolverArgs =
     "Solver options (keywords): backend='auto' (auto, ipopt, nlopt, native), tol=1e-9,\n"
-    "certificate_tol=1e-6 (the largest accepted certificate residual), max_iter=1000.\n"
+    "certificate_tol=1e-6 (the largest accepted certificate residual), max_iter=1000; tol and\n"
+    "certificate_tol from 1e-16 to 0.1, as in a case file's solver block (else InputError).\n"
     "Non-convergence is not an exception: the solution's .converged and .report say so.\n"
     "A contact reaching the grid's edge (the pressure truncated: a wrong result) raises\n"
     "ResultLimitError (key 'grid', .result the solution) unless allow_edge_contact is True; fewer\n"

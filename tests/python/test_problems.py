@@ -123,6 +123,11 @@ def test_problem_input_errors_name_the_argument():
         (lambda: problem.step(force=P, angle=float("nan")), "angle"),
         (lambda: problem.steady_rolling(force=P, creepage_x=1e-3, velocity=0.0), "velocity"),
         (lambda: problem.step(force=P, backend="magic"), "backend"),
+        # The case file's solver rules (SolverOptions::validate), the same through Python.
+        (lambda: problem.step(force=P, tol=5.0), "tol"),
+        (lambda: problem.step(force=P, tol=float("nan")), "tol"),
+        (lambda: problem.step(force=P, certificate_tol=0.0), "certificate_tol"),
+        (lambda: problem.step(force=P, max_iter=0), "max_iter"),
         (lambda: problem.roll(-1.0, force=P), "tangential.distance"),
         (lambda: dyncontact.TangentialProblem(grid, STEEL, np.zeros(8 * 8)), "mu"),
         (lambda: dyncontact.NormalProblem(grid, STEEL, np.zeros(5)), "heights"),
