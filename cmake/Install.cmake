@@ -20,8 +20,9 @@
 #
 # The libraries are static by default and link FFTW3, Ipopt and NLopt PRIVATE; the exported
 # link interface still names them ($<LINK_ONLY:...>), so the config re-finds them: FFTW3 and
-# Ipopt through the find modules installed next to the config (pkg-config), NLopt, Eigen3
-# and nlohmann_json through their own CMake configs.
+# Ipopt through the find modules installed next to the config (pkg-config), NLopt and Eigen3
+# through their own CMake configs. No installed header includes nlohmann/json (the case layer,
+# apps/case/, is not installed).
 include(CMakePackageConfigHelpers)
 
 set(DYNCONTACT_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/dyncontact

@@ -1,19 +1,11 @@
 #include "elastic_stiffness.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 #include "errors.hpp"
+#include "number_text.hpp"
 
 namespace dc::fe {
-
-namespace {
-std::string fmt(double v) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-}  // namespace
 
 void check_stiffness(const Stiffness& C, const std::string& key) {
   if (!C.allFinite()) throw InputError(key, "stiffness has non-finite entries");
@@ -24,13 +16,13 @@ void check_stiffness(const Stiffness& C, const std::string& key) {
   const Eigen::SelfAdjointEigenSolver<Stiffness> eig(C);
   const double lmin = eig.eigenvalues().minCoeff();
   if (!(lmin > 1e-12 * scale))
-    throw InputError(key, "stiffness is not positive definite (smallest eigenvalue " + fmt(lmin) +
+    throw InputError(key, "stiffness is not positive definite (smallest eigenvalue " + six_digits(lmin) +
                               " Pa): not a stable elastic material");
 }
 
 Stiffness isotropic_stiffness(double E, double nu, const std::string& key) {
-  if (!(E > 0.0) || !std::isfinite(E)) throw InputError(key + ".E", "must be positive, got " + fmt(E));
-  if (!(nu > -1.0 && nu < 0.5)) throw InputError(key + ".nu", "must lie in (-1, 0.5), got " + fmt(nu));
+  if (!(E > 0.0) || !std::isfinite(E)) throw InputError(key + ".E", "must be positive, got " + six_digits(E));
+  if (!(nu > -1.0 && nu < 0.5)) throw InputError(key + ".nu", "must lie in (-1, 0.5), got " + six_digits(nu));
   const double lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
   const double mu = E / (2.0 * (1.0 + nu));
   Stiffness C = Stiffness::Zero();

@@ -83,4 +83,13 @@ double FrictionLaw::max_slope() const {
 
 std::string FrictionLaw::name() const { return to_string(kind_); }
 
+const char* to_string(FrictionLawKind law) {
+  switch (law) {
+    case FrictionLawKind::coulomb: return "coulomb";
+    case FrictionLawKind::tresca: return "tresca";
+    case FrictionLawKind::table: return "table";
+  }
+  return "unknown";
+}
+
 }  // namespace dc

@@ -4,9 +4,17 @@
 #include <string>
 #include <vector>
 
-#include "case_model.hpp"
-
 namespace dc {
+
+/// The friction bound f(p): "coulomb", "tresca" or "table" in the case file.
+enum class FrictionLawKind { coulomb, tresca, table };
+
+struct FrictionSpec {
+  FrictionLawKind law = FrictionLawKind::coulomb;
+  double mu = 0.0;
+  double bound = 0.0;                      ///< tresca
+  std::vector<double> pressure, bound_table;  ///< table
+};
 
 class FrictionLaw {
  public:
@@ -29,5 +37,8 @@ class FrictionLaw {
   double mu_ = 0.0, tresca_ = 0.0;
   std::vector<double> p_, f_;
 };
+
+/// "coulomb", "tresca", "table".
+const char* to_string(FrictionLawKind law);
 
 }  // namespace dc

@@ -9,7 +9,7 @@
 
 #include "grid.hpp"
 #include "influence.hpp"
-#include "solver_options.hpp"  // OperatorKind
+#include "operator_kind.hpp"
 
 namespace dc {
 

@@ -9,7 +9,7 @@
 
 namespace dc::dynamics {
 
-ContactWrench::ContactWrench(const Case& c, std::unique_ptr<FiniteBody> finite)
+ContactWrench::ContactWrench(const DynamicContactSpec& c, std::unique_ptr<FiniteBody> finite)
     : case_(c), spec_(*c.dynamic), solver_(c.solver), finite_(std::move(finite)) {
   if (c.friction) law_ = FrictionLaw::from_spec(*c.friction);
   if (c.fe_body && !finite_)

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "body_gap.hpp"
-#include "case_model.hpp"
+#include "dynamic_spec.hpp"
 #include "contact_sensitivity.hpp"
 #include "finite_body.hpp"
 #include "friction_law.hpp"
@@ -45,7 +45,7 @@ class ContactWrench {
  public:
   /// The case's grid, materials, profile, friction (optional: frictionless), body and models;
   /// with an fe_body, `finite` its body (finite_body.hpp; InputError("fe_body") when null).
-  explicit ContactWrench(const Case& c, std::unique_ptr<FiniteBody> finite = nullptr);
+  explicit ContactWrench(const DynamicContactSpec& c, std::unique_ptr<FiniteBody> finite = nullptr);
   ~ContactWrench();
 
   /// Starts a step of length dt at time t (the memory of the accepted state is kept).
@@ -81,7 +81,7 @@ class ContactWrench {
   /// Height of the centre of mass over the body's lowest point (the approach's reference).
   double centre_height() const;
 
-  const Case& case_;
+  const DynamicContactSpec& case_;
   const DynamicSpec& spec_;
   SolverOptions solver_;
   std::optional<BodyGap> gap_;                     // the profile's gap (rigid-body profile)

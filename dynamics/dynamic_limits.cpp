@@ -56,7 +56,25 @@ ContactSize measure(const Grid& g, const std::vector<double>& p, int& n_contact)
 
 }  // namespace
 
-std::optional<DynamicContactEstimate> estimate_dynamic_contact(const Case& c) {
+bool dynamic_sizing_load(const DynamicSpec& s, const ContactSpec& c, NormalSpec& load) {
+  double P = std::max(0.0, -s.force[2].value);
+  if (c.dimension == 3 && s.velocity[2] < 0.0 && c.profile.type != ProfileType::table &&
+      c.profile.type != ProfileType::flat_punch) {
+    // Hertz impact (Johnson 11.4): delta_max = (15 m v^2 / (16 E* sqrt(R)))^(2/5), P = 4/3 E* sqrt(R) delta^(3/2).
+    double A = 0.0, B = 0.0;
+    c.profile.quadratic_coefficients(A, B);
+    if (A > 0.0 && B > 0.0) {
+      const double R = 0.5 / std::sqrt(A * B);
+      P = std::max(P, hertz::sphere_impact(R, s.mass, s.velocity[2], c.materials.E_star()).force);
+    }
+  }
+  if (!(P > 0.0) || !std::isfinite(P)) return false;
+  load.control = Control::force;
+  load.value = P;
+  return true;
+}
+
+std::optional<DynamicContactEstimate> estimate_dynamic_contact(const DynamicContactSpec& c) {
   if (!c.dynamic || c.dimension != 3 || c.fe_body) return std::nullopt;
   if (c.profile.type == ProfileType::table || c.profile.type == ProfileType::flat_punch) return std::nullopt;
   double A = 0.0, B = 0.0;
@@ -82,7 +100,7 @@ std::optional<DynamicContactEstimate> estimate_dynamic_contact(const Case& c) {
   return e;
 }
 
-std::vector<ResultLimit> dynamic_limits_before(const Case& c) {
+std::vector<ResultLimit> dynamic_limits_before(const DynamicContactSpec& c) {
   std::vector<ResultLimit> out;
   const auto e = estimate_dynamic_contact(c);
   if (!e) return out;
@@ -130,7 +148,7 @@ std::vector<ResultLimit> dynamic_limits_before(const Case& c) {
   return out;
 }
 
-DynamicLimitTracker::DynamicLimitTracker(const Case& c) : case_(c) {
+DynamicLimitTracker::DynamicLimitTracker(const DynamicContactSpec& c) : case_(c) {
   if (const auto e = estimate_dynamic_contact(c)) reference_approach_ = e->approach;
 }
 
@@ -168,7 +186,7 @@ void DynamicLimitTracker::add(const DynamicSample& s) {
 }
 
 std::vector<ResultLimit> DynamicLimitTracker::limits(const DynamicResult& r) const {
-  const Case& c = case_;
+  const DynamicContactSpec& c = case_;
   const DynamicSpec& s = *c.dynamic;
   ContactSize size = largest_;
   size.edge_fraction = worst_edge_fraction_;

@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "case_model.hpp"
+#include "dynamic_spec.hpp"
 #include "contact_limits.hpp"
 #include "dynamic_simulation.hpp"
 
@@ -31,26 +31,31 @@ struct DynamicContactEstimate {
   double start_inside = 0.0;    ///< m, how far the body starts inside the half-space (0: outside)
 };
 
+/// The normal load that sizes a dynamic case's `grid.extent` when it has no `normal` block: the
+/// larger of the static vertical load (-loads.force.z) and, in 3-D, the peak force of a Hertz
+/// impact at the initial downward speed (Johnson 11.4); false when neither is positive.
+bool dynamic_sizing_load(const DynamicSpec& spec, const ContactSpec& c, NormalSpec& load);
+
 /// None for a case without a Hertz estimate (2-D, flat or table profiles, an fe_body).
-std::optional<DynamicContactEstimate> estimate_dynamic_contact(const Case& c);
+std::optional<DynamicContactEstimate> estimate_dynamic_contact(const DynamicContactSpec& c);
 
 /// Before anything is solved: throws InputError naming body.initial.position (starting inside
 /// the half-space beyond kStartInsideShare of the Hertz approach), time.dt (an impact with fewer
 /// than kMinStepsPerContact steps, unless time.allow_coarse_dt) or the key of an error limit of
 /// the estimated contact (grid, materials); returns the warnings.
-std::vector<ResultLimit> dynamic_limits_before(const Case& c);
+std::vector<ResultLimit> dynamic_limits_before(const DynamicContactSpec& c);
 
 /// Follows a run step by step; limits() after it.
 class DynamicLimitTracker {
  public:
-  explicit DynamicLimitTracker(const Case& c);
+  explicit DynamicLimitTracker(const DynamicContactSpec& c);
   void add(const DynamicSample& s);
   /// The limits of the run so far (grid edge at any step, a/R and resolution at the largest
   /// contact, penetration no element saw, short contacts, the energy balance of `r`).
   std::vector<ResultLimit> limits(const DynamicResult& r) const;
 
  private:
-  const Case& case_;
+  const DynamicContactSpec& case_;
   double reference_approach_ = 0.0;  ///< the Hertz estimate's, 0 without one
   ContactSize largest_{};            ///< at the step with the most elements in contact
   int largest_n_ = 0;

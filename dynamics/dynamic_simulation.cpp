@@ -10,7 +10,7 @@
 namespace dc::dynamics {
 namespace {
 
-StepperOptions stepper_options(const Case& c) {
+StepperOptions stepper_options(const DynamicContactSpec& c) {
   StepperOptions o;
   o.scheme = c.dynamic->bdf2 ? Scheme::bdf2 : Scheme::bdf1;
   // The contact resultant is accurate to about the contact solver's tolerance: ask the step's
@@ -59,7 +59,7 @@ DynamicSpec resolve_finite_body(const DynamicSpec& spec, const FiniteBody* finit
   return s;
 }
 
-DynamicSimulation::DynamicSimulation(const Case& c, std::unique_ptr<FiniteBody> finite)
+DynamicSimulation::DynamicSimulation(const DynamicContactSpec& c, std::unique_ptr<FiniteBody> finite)
     : before_limits_(dynamic_limits_before(c)),
       case_(c),
       spec_(resolve_finite_body(*c.dynamic, finite.get())),

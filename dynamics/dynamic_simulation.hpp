@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "case_model.hpp"
+#include "dynamic_spec.hpp"
 #include "contact_limits.hpp"
 #include "contact_wrench.hpp"
 #include "rigid_body.hpp"
@@ -56,7 +56,7 @@ class DynamicSimulation {
   /// `finite`: the body of a case with an fe_body (finite/finite_body_contact.hpp's
   /// make_finite_body); its mass, inertia and centre height are the mesh's. Throws InputError for
   /// what is known wrong before the run (dynamic_limits_before).
-  explicit DynamicSimulation(const Case& c, std::unique_ptr<FiniteBody> finite = nullptr);
+  explicit DynamicSimulation(const DynamicContactSpec& c, std::unique_ptr<FiniteBody> finite = nullptr);
   /// Runs to t_end; `on_step` after every accepted step (output, progress). Never throws for
   /// non-convergence, an interrupt or input a step cannot take: the result says where and why
   /// it stopped, with the steps before it, and its result limits (DynamicResult::limits).
@@ -70,7 +70,7 @@ class DynamicSimulation {
 
  private:
   std::vector<ResultLimit> before_limits_;  ///< the warnings of dynamic_limits_before
-  const Case& case_;
+  const DynamicContactSpec& case_;
   DynamicSpec spec_;  ///< the case's, with an fe_body's mass, inertia and radius from its mesh
   RigidBodyStepper stepper_;
   ContactWrench contact_;

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "case_model.hpp"
 #include "quadratic_program.hpp"
+#include "solver_options.hpp"
 
 namespace dc {
 

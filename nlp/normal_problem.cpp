@@ -236,9 +236,4 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
   return best;
 }
 
-NormalSolution solve_normal_case(const Case& c, const ProgressCallback& progress) {
-  NormalProblem problem(c.grid, c.materials, profile_heights(c.profile, c.grid), c.solver.operator_kind);
-  return problem.solve(c.normal, c.solver, progress);
-}
-
 }  // namespace dc

@@ -6,10 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "case_model.hpp"
+#include "grid.hpp"
 #include "linear_operator.hpp"
+#include "material.hpp"
 #include "normal_preconditioner.hpp"
+#include "normal_spec.hpp"
 #include "quadratic_program.hpp"
+#include "solver_options.hpp"
 #include "solver_report.hpp"
 
 namespace dc {
@@ -76,8 +79,5 @@ class NormalProblem {
   /// The native solver's FFT preconditioner: built at the first native solve, then reused.
   std::shared_ptr<const NormalPreconditioner> preconditioner_;
 };
-
-/// The whole normal case: grid, profile, operator, solve.
-NormalSolution solve_normal_case(const Case& c, const ProgressCallback& progress = {});
 
 }  // namespace dc

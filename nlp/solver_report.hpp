@@ -3,7 +3,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 
 #include "iteration_record.hpp"
 
@@ -57,12 +56,9 @@ struct SolverReport {
 const char* to_string(SolveStatus status);
 /// A number for messages: %.3g (never %f, which prints small residuals as 0.000001).
 std::string format_number(double value);
-nlohmann::json to_json(const Certificate& certificate);
 /// One line for stderr per failed attempt of a report whose answer came from a fallback (or that
 /// did not converge at all): "native: not_converged after 1000 iterations (iteration limit reached;
 /// relative change 3e-4 at the end, contact set 5321 (+12 -9)); ipopt took over". Empty otherwise.
 std::string fallback_warning(const SolverReport& report);
-/// The `solver` object of summary.json.
-nlohmann::json to_json(const SolverReport& report);
 
 }  // namespace dc

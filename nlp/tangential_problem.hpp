@@ -23,16 +23,13 @@
 #include <string>
 #include <vector>
 
-#include "case_model.hpp"
 #include "friction_law.hpp"
 #include "linear_operator.hpp"
 #include "normal_problem.hpp"
 #include "solver_report.hpp"
+#include "tangential_loads.hpp"
 
 namespace dc {
-
-// TangentialRegime, ModeControl, TangentialLoad, RollingLoad: the case model's typed loads
-// (core/case_tangential.hpp).
 
 struct OuterLoopReport {
   int iterations = 0;      ///< outer (p, tau) iterations
@@ -205,14 +202,5 @@ class TangentialProblem {
   std::shared_ptr<Impl> impl_;
   Grid grid_;
 };
-
-/// The tangential problem of a case (grid, materials, profile, friction, solver.operator), set up
-/// and in its unloaded state. Throws InputError("friction") when the case has no friction.
-TangentialProblem make_tangential_problem(const Case& c);
-
-/// The whole tangential case (CASES.md "tangential"): one solution, or one per history step.
-/// An interrupt (core/interrupt.hpp) during a history returns the steps finished before it;
-/// with none finished, Interrupted propagates.
-std::vector<TangentialSolution> solve_tangential_case(const Case& c, const ProgressCallback& progress = {});
 
 }  // namespace dc

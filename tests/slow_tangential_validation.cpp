@@ -11,6 +11,7 @@
 #include "contact_closed_forms.hpp"
 #include "hertz.hpp"
 #include "profile.hpp"
+#include "summary_entries.hpp"
 #include "tangential_problem.hpp"
 #include "tangential_support.hpp"
 
@@ -42,8 +43,8 @@ TEST(SlowTangentialValidation, KalkerLinearCreepCoefficients64) {
     load.modes = {amplitude(cx), amplitude(cy), amplitude(sp)};
     const TangentialSolution s = problem.steady_rolling(load, native_solver());
     EXPECT_NE(s.report.status, SolveStatus::failed) << s.report.message;
-    EXPECT_LT(s.report.certificate.friction_law, 1e-6) << to_json(s.report.certificate).dump();
-    EXPECT_LT(s.report.certificate.gap_function, 1e-4) << to_json(s.report.certificate).dump();
+    EXPECT_LT(s.report.certificate.friction_law, 1e-6) << dc::output::to_json(s.report.certificate).dump();
+    EXPECT_LT(s.report.certificate.gap_function, 1e-4) << dc::output::to_json(s.report.certificate).dump();
     return s;
   };
   const double G = e.G;

@@ -154,7 +154,7 @@ TEST(CaseReading, DeepNestingIsRejectedWhileParsing) {
   std::string objects;
   for (int k = 0; k < 100; ++k) objects += "{\"a\": ";
   expect_parse_error(objects + "1" + std::string(100, '}'), "a.a.a", "nested more than 64");
-  EXPECT_NO_THROW((void)parse_case_text("{\"x\": " + nested_arrays(kMaxJsonDepth - 1) + "}", "case.json"));
+  EXPECT_NO_THROW((void)parse_case_text("{\"x\": " + nested_arrays(case_json::kMaxJsonDepth - 1) + "}", "case.json"));
   json doc = json::object();
   try {
     apply_override(doc, "grid.x=" + nested_arrays(500));

@@ -19,6 +19,7 @@
 
 #include "blas_threads.hpp"
 #include "case_model.hpp"
+#include "solve_case.hpp"
 #include "contact_closed_forms.hpp"
 #include "hertz.hpp"
 #include "normal_problem.hpp"

@@ -17,6 +17,7 @@
 #include "errors.hpp"
 #include "output_files.hpp"
 #include "solver_report.hpp"
+#include "summary_entries.hpp"
 #include "summary_writer.hpp"
 #include "tangential_run.hpp"
 #include "interrupt.hpp"
@@ -149,8 +150,8 @@ int run_compare(const CompareArgs& args) {
     item["time_s"] = r.time_s;
     item["iterations"] = r.iterations;
     item["objective"] = r.objective;
-    item["certificate"] = to_json(r.certificate);
-    e.run.summary["limits"] = limits_json(limits);
+    item["certificate"] = output::to_json(r.certificate);
+    e.run.summary["limits"] = output::limits_json(limits);
     item["summary"] = e.run.summary;
     double dp = 0.0, da = 0.0, df = 0.0, dt = 0.0, dft = 0.0;
     if (first) {

@@ -20,6 +20,7 @@
 #include "output_files.hpp"
 #include "progress.hpp"
 #include "result_limits.hpp"
+#include "summary_entries.hpp"
 #include "table_output.hpp"
 #include "table_points.hpp"
 #include "table_ranges.hpp"
@@ -90,7 +91,7 @@ int run_table(const TableArgs& args, bool root) {
       c.output.plots && !interrupted ? table::table_plots(dir, c, axes, rows) : std::vector<std::string>{};
   nlohmann::json meta = table::table_json(c, axes, rows);
   meta["status"] = interrupted ? "interrupted" : "completed";
-  meta["limits"] = limits_json(limits);
+  meta["limits"] = output::limits_json(limits);
   output::write_file_whole((fs::path(dir) / "table.json").string(), meta.dump(2) + "\n");
   if (interrupted) {
     std::cerr << "interrupted after " << rows.size() << " of " << axes.size() << " points; wrote " << csv

@@ -5,6 +5,7 @@
 
 #include "analytic_reference.hpp"
 #include "output_files.hpp"
+#include "summary_entries.hpp"
 
 #ifndef DYNCONTACT_VERSION
 #define DYNCONTACT_VERSION "unknown"

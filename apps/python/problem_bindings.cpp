@@ -11,6 +11,7 @@
 #include "module_common.hpp"
 #include "normal_problem.hpp"
 #include "python_limits.hpp"
+#include "summary_entries.hpp"
 #include "tangential_problem.hpp"
 
 namespace dc::python {
@@ -127,7 +128,7 @@ const std::vector<double>& pressure_of(const TangentialResult& r) { return r.s.n
 template <typename Result>
 py::object checked(Result r, double certificate_tol, bool allow_edge_contact, const char* cls) {
   r.limits = contact_limits(r.grid, pressure_of(r), certificate_tol, allow_edge_contact);
-  warn_fallback(to_json(r.s.report));
+  warn_fallback(output::to_json(r.s.report));
   const nlohmann::json limits = r.limits;
   py::object result = py::cast(std::move(r));
   enforce_limits(limits, result, edge_advice(cls));
@@ -188,7 +189,7 @@ void bind_problems(py::module_& m) {
       .def_property_readonly("approach", [](const NormalResult& r) { return r.s.approach; }, "approach delta (m)")
       .def_property_readonly("force", [](const NormalResult& r) { return r.s.force; }, "sum p A (N; 2-D N/m)")
       .def_property_readonly("converged", [](const NormalResult& r) { return r.s.report.status == SolveStatus::converged; })
-      .def_property_readonly("report", [](const NormalResult& r) { return to_python(to_json(r.s.report)); },
+      .def_property_readonly("report", [](const NormalResult& r) { return to_python(output::to_json(r.s.report)); },
                              "the solver's report: backend, status, iterations, time_s, certificate, ...")
       .def_property_readonly("limits", [](const NormalResult& r) { return to_python(r.limits); }, kLimitsDoc);
 
@@ -265,7 +266,7 @@ void bind_problems(py::module_& m) {
         return r.s.report.status == SolveStatus::converged && r.s.normal.report.status == SolveStatus::converged &&
                r.s.outer.converged;
       })
-      .def_property_readonly("report", [](const TangentialResult& r) { return to_python(to_json(r.s.report)); },
+      .def_property_readonly("report", [](const TangentialResult& r) { return to_python(output::to_json(r.s.report)); },
                              "the tangential solver's report (its certificate holds the normal residuals too)")
       .def_property_readonly("limits", [](const TangentialResult& r) { return to_python(r.limits); }, kLimitsDoc);
 

@@ -8,6 +8,7 @@
 #include "python_values.hpp"
 #include "result_limits.hpp"
 #include "static_fields.hpp"
+#include "summary_entries.hpp"
 
 namespace dc::python {
 namespace {
@@ -114,7 +115,7 @@ nlohmann::json contact_limits(const Grid& grid, const std::vector<double>& press
   c.profile.type = ProfileType::table;  // heights given as values: no radius of curvature
   nlohmann::json measures;
   output::add_contact_measures(measures, grid, output::normal_fields(pressure, std::max(certificate_tol, 1e-12)));
-  return limits_json(result_limits(c, runs::measured_contact_size(c, measures)));
+  return output::limits_json(result_limits(c, runs::measured_contact_size(c, measures)));
 }
 
 }  // namespace dc::python

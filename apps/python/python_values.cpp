@@ -96,8 +96,8 @@ nlohmann::json walk(const py::handle& value, const std::string& key, int depth, 
   if (PyUnicode_Check(o)) return value.cast<std::string>();
   const bool dict = PyDict_Check(o), sequence = PyList_Check(o) || PyTuple_Check(o);
   if (dict || sequence) {
-    if (depth >= kMaxJsonDepth)
-      throw InputError(where(key), "nested more than " + std::to_string(kMaxJsonDepth) +
+    if (depth >= case_json::kMaxJsonDepth)
+      throw InputError(where(key), "nested more than " + std::to_string(case_json::kMaxJsonDepth) +
                                        " levels deep (lists and dicts); a case needs a few");
     if (sequence) {
       nlohmann::json out = nlohmann::json::array();

@@ -17,6 +17,7 @@
 #include "output_files.hpp"
 #include "progress.hpp"
 #include "result_limits.hpp"
+#include "summary_entries.hpp"
 #include "summary_writer.hpp"
 #ifdef DYNCONTACT_WITH_FE
 #include "body_snapshots.hpp"
@@ -92,7 +93,7 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
                        {"certificate", {{"worst", r.worst_certificate}, {"last", r.last_certificate}}}};
   summary["balances"] = {{"momentum", r.momentum_imbalance}, {"energy", r.energy_imbalance}};
   out.limits = r.limits;
-  summary["limits"] = limits_json(out.limits);
+  summary["limits"] = output::limits_json(out.limits);
 #ifdef DYNCONTACT_WITH_FE
   if (const dynamics::FiniteBody* body = sim.finite_body()) {  // as for problem "finite"
     summary["body_dofs"] = body->elastic_body().dofs();

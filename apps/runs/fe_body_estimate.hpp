@@ -1,6 +1,6 @@
 #pragma once
 // The size of an fe_body before it is meshed (`validate`, and the refusal of a body the machine
-// cannot hold): tetrahedra from the mesh size field (core/case_fe_body.hpp: the contact element
+// cannot hold): tetrahedra from the mesh size field (core/fe_body_spec.hpp: the contact element
 // size over the grid's disk, growing at kFaceSizeGrowth to the coarse size), dofs, the sparse
 // factor's memory and the solve's time, calibrated on Gmsh meshes of hemispheres (docs/limits.md).
 #include <optional>

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "progress.hpp"
+#include "solve_case.hpp"
 #include "summary_writer.hpp"
 
 namespace dc::runs {

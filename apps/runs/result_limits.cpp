@@ -1,4 +1,5 @@
 #include "result_limits.hpp"
+#include "summary_entries.hpp"
 
 #include <iostream>
 
@@ -31,7 +32,7 @@ bool report_limits(const std::vector<ResultLimit>& limits, const std::string& di
 
 std::vector<ResultLimit> attach_result_limits(const Case& c, nlohmann::json& summary) {
   std::vector<ResultLimit> limits = result_limits(c, measured_contact_size(c, summary));
-  summary["limits"] = limits_json(limits);
+  summary["limits"] = output::limits_json(limits);
   return limits;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// The result limits (core/contact_limits.hpp) of a static run from its summary.json, and their
+// The result limits (nlp/contact_limits.hpp) of a static run from its summary.json, and their
 // report on stderr.
 #include <string>
 #include <vector>

@@ -7,6 +7,8 @@
 #include "interrupt.hpp"
 #include "normal_run.hpp"
 #include "progress.hpp"
+#include "solve_case.hpp"
+#include "summary_entries.hpp"
 #include "summary_writer.hpp"
 
 namespace dc::runs {
@@ -74,7 +76,7 @@ output::StaticFields tangential_fields(const TangentialSolution& s, double relat
 nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, const output::StaticFields& f) {
   nlohmann::json s = output::normal_summary(c, sol.normal, f);
   s["normal_solver"] = s["solver"];
-  s["solver"] = to_json(sol.report);
+  s["solver"] = output::to_json(sol.report);
   const std::string regime = c.tangential ? to_string(c.tangential->regime) : "";
   // A rolling solution is reported by its creepage and spin, except a step of a rolling history
   // that rolls no distance (TangentialProblem::roll, no marching step): that one is quasi-static
@@ -145,7 +147,7 @@ TangentialRun run_tangential(const Case& c, bool progress) {
     run.summary["all_steps_converged"] = run.converged();
     // The history's solver is its worst step's (the first that did not converge, else the last).
     const SolverReport& worst = run.report();
-    run.summary["solver"] = to_json(worst);
+    run.summary["solver"] = output::to_json(worst);
     for (std::size_t k = 0; k < run.steps.size(); ++k)
       if (&run.steps[k].report == &worst) run.summary["solver"]["step"] = k;
     run.summary["solver"]["time_s"] = run.total_time_s();  // the whole history; each step's in "steps"

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "errors.hpp"
+#include "solve_case.hpp"
 #include "tangential_problem.hpp"
 
 namespace dc::table {

@@ -3,7 +3,7 @@
 // down, hemisphere curved face down), refined towards the lowest point where contact starts,
 // or any Gmsh file of tetrahedra. Errors name the fe_body key.
 #include "body_mesh.hpp"
-#include "case_fe_body.hpp"
+#include "fe_body_spec.hpp"
 
 namespace dc::fe {
 

@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "case_fe_body.hpp"
+#include "fe_body_spec.hpp"
 
 namespace dc::fe {
 

@@ -7,7 +7,7 @@
 
 namespace dc::dynamics {
 
-FiniteBodyContact::FiniteBodyContact(const Case& c) : grid_(c.grid), material_(c.fe_body->material) {
+FiniteBodyContact::FiniteBodyContact(const DynamicContactSpec& c) : grid_(c.grid), material_(c.fe_body->material) {
   const OperatorKind kind = c.solver.operator_kind == OperatorKind::dense ? OperatorKind::dense : OperatorKind::fft;
   contact_ = std::make_unique<FiniteContact>(*c.fe_body, c.grid, c.materials.base, kind);
   const fe::ElasticBody& body = contact_->body();
@@ -97,7 +97,7 @@ void FiniteBodyContact::accept(const std::vector<double>& tx, const std::vector<
     max_displacement_ = std::max(max_displacement_, displacement_.segment<3>(a).norm());
 }
 
-std::unique_ptr<FiniteBody> make_finite_body(const Case& c) {
+std::unique_ptr<FiniteBody> make_finite_body(const DynamicContactSpec& c) {
   if (!c.fe_body || !c.dynamic) return nullptr;
   return std::make_unique<FiniteBodyContact>(c);
 }

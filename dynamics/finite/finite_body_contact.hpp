@@ -17,7 +17,7 @@
 
 #include <Eigen/Dense>
 
-#include "case_model.hpp"
+#include "dynamic_spec.hpp"
 #include "finite_body.hpp"
 #include "finite_contact.hpp"
 
@@ -30,7 +30,7 @@ class FiniteBodyContact final : public FiniteBody {
   static constexpr double kMaxTilt = 0.05;
 
   /// Meshes and factorises the body (c.fe_body on c.grid over c.materials.base).
-  explicit FiniteBodyContact(const Case& c);
+  explicit FiniteBodyContact(const DynamicContactSpec& c);
 
   /// The rigid body of the mesh: its mass and inertia about its centre of mass.
   RigidBody rigid_body() const override;
@@ -83,6 +83,6 @@ class FiniteBodyContact final : public FiniteBody {
 };
 
 /// The finite body of a dynamic case with an fe_body (null without one).
-std::unique_ptr<FiniteBody> make_finite_body(const Case& c);
+std::unique_ptr<FiniteBody> make_finite_body(const DynamicContactSpec& c);
 
 }  // namespace dc::dynamics

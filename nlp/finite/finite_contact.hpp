@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "case_fe_body.hpp"
+#include "fe_body_spec.hpp"
 #include "contact_face.hpp"
 #include "elastic_body.hpp"
 #include "friction_law.hpp"

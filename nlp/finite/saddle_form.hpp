@@ -24,8 +24,8 @@
 
 #include <Eigen/Dense>
 
-#include "case_model.hpp"
 #include "contact_face.hpp"
+#include "contact_spec.hpp"
 #include "elastic_body.hpp"
 #include "linear_operator.hpp"
 #include "quadratic_program.hpp"

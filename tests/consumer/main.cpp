@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include <dyncontact/core/case_model.hpp>
+#include <dyncontact/apps/case/case_model.hpp>
 #include <dyncontact/core/errors.hpp>
 #include <dyncontact/core/grid.hpp>
 #include <dyncontact/core/hertz.hpp>

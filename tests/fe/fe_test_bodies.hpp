@@ -1,6 +1,6 @@
 #pragma once
 // Bodies shared by the finite-contact tests.
-#include "case_fe_body.hpp"
+#include "fe_body_spec.hpp"
 #include "elastic_stiffness.hpp"
 
 namespace dc::fe::testing {

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "case_fe_body.hpp"
+#include "fe_body_spec.hpp"
 #include "elastic_stiffness.hpp"
 #include "finite_contact.hpp"
 

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <string>
 
-#include "case_fe_body.hpp"
+#include "fe_body_spec.hpp"
 #include "elastic_stiffness.hpp"
 #include "gmsh_mesher.hpp"
 

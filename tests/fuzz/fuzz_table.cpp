@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "case_blocks.hpp"
+#include "case_readers.hpp"
 #include "fuzz_support.hpp"
 #include "grid.hpp"
 #include "profile.hpp"

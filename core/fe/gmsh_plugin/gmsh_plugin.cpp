@@ -79,7 +79,7 @@ void build_geometry(const FeBodySpec& s) {
 
 /// Element size fe_contact_element_size over the disk of `refine_radius` about the lowest point
 /// (where the contact grid lies: the face resolves the grid's fields there), growing from it at
-/// kFaceSizeGrowth per unit distance up to the coarse size (core/case_fe_body.hpp).
+/// kFaceSizeGrowth per unit distance up to the coarse size (core/fe_body_spec.hpp).
 
 /// A length for Gmsh's expression in full precision (std::to_string keeps six decimals: 0 for a
 /// micrometre body).

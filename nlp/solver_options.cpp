@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <utility>
 
-#include "json_block.hpp"
+#include "number_text.hpp"
 
 namespace dc {
 namespace {
@@ -35,7 +35,7 @@ std::optional<Enum> value_of(const std::string& name, const Name<Enum> (&names)[
 /// "" when `value` is in [lo, hi], else the case reader's message (JsonBlock::bounded).
 std::string outside(const char* field, double value, double lo, double hi) {
   if (value >= lo && value <= hi) return "";
-  return std::string(field) + ": must be from " + fmt(lo) + " to " + fmt(hi) + " (relative), got " + fmt(value);
+  return std::string(field) + ": must be from " + six_digits(lo) + " to " + six_digits(hi) + " (relative), got " + six_digits(value);
 }
 
 }  // namespace

@@ -8,14 +8,9 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include "dynamic_spec.hpp"  // ValueRate
 
 namespace dc {
-
-/// value + rate * t of one load component.
-struct ValueRate {
-  double value = 0.0, rate = 0.0;
-};
 
 /// Dimensional inputs (per unit length in 2-D).
 struct PaperCylinderBody {
@@ -37,12 +32,5 @@ struct PaperCylinderSpec {
   bool bdf2 = false;         ///< time.scheme
   std::string traction_model = "carter_poritsky";  ///< or "numerical"
 };
-
-struct Case;
-
-/// Reads the paper_cylinder blocks of `document`; `c` holds the already read common blocks
-/// (materials, friction). Throws InputError naming the key.
-PaperCylinderSpec read_paper_cylinder(const nlohmann::json& document, const Case& c);
-
 
 }  // namespace dc

@@ -1,9 +1,9 @@
 #pragma once
-// Typed, key-checked reading of one JSON object of a case file (the case model's only way
-// of reading JSON). Every bad value throws InputError naming the key path and the reason.
+// Typed, key-checked reading of one JSON object of a case file (the case layer's only way of
+// reading JSON; namespace dc::case_json, used by the readers read_*.cpp). Every bad value throws
+// InputError naming the key path and the reason.
 #include <cmath>
 #include <initializer_list>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,8 +11,9 @@
 #include <nlohmann/json.hpp>
 
 #include "errors.hpp"
+#include "number_text.hpp"
 
-namespace dc {
+namespace dc::case_json {
 
 using json = nlohmann::json;
 
@@ -24,16 +25,11 @@ inline std::string join(const std::string& prefix, const std::string& key) {
 /// The JSON type of a value, for messages.
 inline std::string describe(const json& j) { return j.type_name(); }
 
-/// A number with six significant digits, for messages.
 /// The largest length a case takes (m): radii, approaches, grid bounds of real bodies are far below.
 inline constexpr double kMaxLength = 1e9;
 
-inline std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
+/// A number with six significant digits, for messages.
+inline std::string fmt(double v) { return six_digits(v); }
 
 /// A finite number at `key` (InputError "must be a number" / "must be finite" otherwise).
 inline double finite_number(const json& v, const std::string& key) {
@@ -159,4 +155,4 @@ class JsonBlock {
   std::string path_;
 };
 
-}  // namespace dc
+}  // namespace dc::case_json

@@ -7,7 +7,7 @@
 
 #include "errors.hpp"
 
-namespace dc {
+namespace dc::case_json {
 namespace {
 
 using json = nlohmann::json;
@@ -110,4 +110,4 @@ json parse_json_checked(const std::string& text, const std::string& origin, cons
   return result;
 }
 
-}  // namespace dc
+}  // namespace dc::case_json

@@ -1,13 +1,12 @@
 #pragma once
-// The finite-element body of a case (CASES.md "fe_body"): shape or mesh file, mesh sizes,
-// materials per region (nonhomogeneous), density. Read from JSON here; core/fe builds it.
+// The finite-element body (CASES.md "fe_body"): shape or mesh file, mesh sizes, materials per
+// region (nonhomogeneous), density. Read by the case layer (apps/case/read_fe_body.cpp); core/fe
+// meshes it, nlp/finite and dynamics/finite solve with it.
 #include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "elastic_stiffness.hpp"
 #include "grid.hpp"
@@ -125,8 +124,5 @@ inline double fe_contact_element_size(const FeBodySpec& s) {
 /// elements (27k dofs; the contact's edge kept 0.3 a); the grid's disk at 0.6 gives 15 % with 12k
 /// dofs and 8 % with 20k.
 constexpr double kFaceSizeGrowth = 0.6;
-
-/// Reads the "fe_body" block (key prefix "fe_body"); paths relative to `case_dir`.
-FeBodySpec read_fe_body(const nlohmann::json& block, const std::string& case_dir);
 
 }  // namespace dc

@@ -9,7 +9,7 @@ namespace {
 
 /// Whether the profile's contact is unbounded along y (3-D cylinder without a length,
 /// quadratic with b = 0): it reaches the grid's y edges by construction.
-bool unbounded_profile(const Case& c) {
+bool unbounded_profile(const ContactSpec& c) {
   const ProfileSpec& p = c.profile;
   if (c.dimension != 3) return false;
   return (p.type == ProfileType::cylinder && p.length == 0.0) ||
@@ -18,7 +18,7 @@ bool unbounded_profile(const Case& c) {
 
 /// Radii of curvature along x and y (0: none, e.g. a flat punch or a table; an fe_body: its
 /// hemisphere's radius).
-void curvature_radii(const Case& c, double& rx, double& ry) {
+void curvature_radii(const ContactSpec& c, double& rx, double& ry) {
   rx = ry = 0.0;
   if (c.fe_body) {
     if (c.fe_body->shape == FeShape::hemisphere) rx = ry = c.fe_body->radius;
@@ -40,7 +40,7 @@ std::string format(const char* f, double a, double b = 0.0) {
 
 }  // namespace
 
-std::vector<ResultLimit> result_limits(const Case& c, const ContactSize& size) {
+std::vector<ResultLimit> result_limits(const ContactSpec& c, const ContactSize& size) {
   std::vector<ResultLimit> out;
   if (size.edge_fraction > 0.0) {
     ResultLimit l{"grid", "", false};
@@ -115,15 +115,6 @@ std::vector<ResultLimit> result_limits(const Case& c, const ContactSize& size) {
     }
     out.push_back(l);
   }
-  return out;
-}
-
-nlohmann::json limits_json(const std::vector<ResultLimit>& limits) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& l : limits) out.push_back({{"key", l.key},
-                   {"message", l.message},
-                   {"level", l.error ? "error" : "warning"},
-                   {"accepted", l.accepted}});
   return out;
 }
 

@@ -1,16 +1,21 @@
-// The tangential block of a case (core/case_tangential.hpp, read by the case model) solved:
-// one step, steady rolling, or a loading history with memory.
+// A case's problems built from its specs and solved: the normal problem, and the tangential
+// block (tangential_spec.hpp) as one step, steady rolling, or a loading history with memory.
+#include "solve_case.hpp"
+
 #include <chrono>
-#include <stdexcept>
 
 #include "errors.hpp"
 #include "interrupt.hpp"
 #include "profile.hpp"
-#include "tangential_problem.hpp"
 
 namespace dc {
 
-TangentialProblem make_tangential_problem(const Case& c) {
+NormalSolution solve_normal_case(const ContactSpec& c, const ProgressCallback& progress) {
+  NormalProblem problem(c.grid, c.materials, profile_heights(c.profile, c.grid), c.solver.operator_kind);
+  return problem.solve(c.normal, c.solver, progress);
+}
+
+TangentialProblem make_tangential_problem(const ContactSpec& c) {
   if (!c.friction) throw InputError("friction", "required for a tangential problem");
   return TangentialProblem(c.grid, c.materials, profile_heights(c.profile, c.grid), FrictionLaw::from_spec(*c.friction),
                            c.solver.operator_kind);

@@ -1,16 +1,19 @@
 #pragma once
 // The blocks of a "dynamic" case (CASES.md): the massive body (mass, inertia, initial motion),
 // the external loads (value + rate t per component), the time stepping and the contact models.
-// Read into DynamicSpec; the stepper and the contact wrench (dynamics/) never see JSON.
+// Read by the case layer (apps/case/read_dynamic.cpp); the stepper and the contact wrench take
+// DynamicSpec and never see JSON. DynamicContactSpec: what a dynamic run takes.
 #include <array>
-#include <string>
+#include <optional>
 
-#include <nlohmann/json.hpp>
-
-#include "case_paper_cylinder.hpp"
-#include "normal_spec.hpp"
+#include "contact_spec.hpp"
 
 namespace dc {
+
+/// value + rate * t of one load component.
+struct ValueRate {
+  double value = 0.0, rate = 0.0;
+};
 
 /// How the normal contact follows the body: `dynamic` - the approach from the body's height
 /// (3-D); `quasi_static` - the normal force from the vertical balance (the body's height does
@@ -44,16 +47,11 @@ struct DynamicSpec {
   bool has_mass = false, has_inertia = false, has_radius = false;
 };
 
-struct Case;
-
-/// Reads the dynamic blocks of `document` (body, loads, time, normal_model, contact_model);
-/// `c` holds the common blocks already read. Throws InputError naming the key.
-DynamicSpec read_dynamic(const nlohmann::json& document, const Case& c);
-
-/// The normal load that sizes a dynamic case's `grid.extent` when it has no `normal` block: the
-/// larger of the static vertical load (-loads.force.z) and, in 3-D, the peak force of a Hertz
-/// impact at the initial downward speed (Johnson 11.4); false when neither is positive.
-bool dynamic_sizing_load(const DynamicSpec& spec, const Case& c, NormalSpec& load);
+/// The contact (nlp/contact_spec.hpp) and the massive body's motion: what DynamicSimulation,
+/// ContactWrench and the dynamic limits take (the case layer's Case is one).
+struct DynamicContactSpec : ContactSpec {
+  std::optional<DynamicSpec> dynamic;  ///< problem dynamic
+};
 
 const char* to_string(NormalModel model);
 const char* to_string(ContactModel model);

@@ -1,11 +1,14 @@
 // The "tangential" block (CASES.md): regime, rigid-mode controls, rolling speed and the
 // loading history, read into TangentialSpec. Every bad input names its key path.
-#include "case_tangential.hpp"
+#include "case_readers.hpp"
 
 #include "errors.hpp"
 #include "json_block.hpp"
 
 namespace dc {
+
+using namespace case_json;
+
 namespace {
 
 /// [x, y] (3-D) or x / [x] / [x, 0] (2-D).

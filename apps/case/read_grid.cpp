@@ -5,12 +5,15 @@
 #include <string>
 #include <vector>
 
-#include "case_blocks.hpp"
+#include "case_readers.hpp"
 #include "errors.hpp"
 #include "hertz.hpp"
 #include "json_block.hpp"
 
 namespace dc {
+
+using namespace case_json;
+
 namespace {
 
 /// Hertz semi-axes (x, y) of the case's contact, for `extent` grids.

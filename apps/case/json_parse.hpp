@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace dc {
+namespace dc::case_json {
 
 /// The deepest nesting of arrays and objects a case may have (a case needs fewer than 10).
 inline constexpr int kMaxJsonDepth = 64;
@@ -16,4 +16,4 @@ inline constexpr int kMaxJsonDepth = 64;
 nlohmann::json parse_json_checked(const std::string& text, const std::string& origin,
                                   const std::string& base_path = "", bool ignore_comments = true);
 
-}  // namespace dc
+}  // namespace dc::case_json

@@ -8,11 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "case_blocks.hpp"
+#include "case_readers.hpp"
 #include "errors.hpp"
 #include "json_block.hpp"
 
 namespace dc {
+
+using namespace case_json;
+
 namespace {
 
 /// Reads the table file of a table profile (relative to `base_dir`).

@@ -1,15 +1,16 @@
 // The paper_cylinder blocks (CASES.md, docs/paper_cylinder.md) read into PaperCylinderSpec,
 // and the expansion of its sweep into one case per value.
-#include "case_paper_cylinder.hpp"
-
 #include <limits>
 
-#include "case_blocks.hpp"
+#include "case_readers.hpp"
 #include "case_model.hpp"
 #include "errors.hpp"
 #include "json_block.hpp"
 
 namespace dc {
+
+using namespace case_json;
+
 namespace {
 
 void read_dimensionless(const JsonBlock& d, PaperCylinderSpec& s) {

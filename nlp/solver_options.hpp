@@ -1,11 +1,11 @@
 #pragma once
 // The solver's options (as Ceres' Solver::Options): a public struct whose fields hold their
 // documented defaults, and one validity check. The case file's `solver` block is read into it
-// (core/case_model.cpp), the solvers in nlp/ and dynamics/ take it.
-// It lives in core/, not nlp/: the case model (core/case_model.hpp) holds one, and core/ sees
-// no nlp/ header (dyncontact_core does not link dyncontact_nlp).
+// (apps/case/read_solver.cpp), the solvers in nlp/ and dynamics/ take it.
 #include <optional>
 #include <string>
+
+#include "operator_kind.hpp"
 
 namespace dc {
 
@@ -22,13 +22,6 @@ enum class Hessian {
   automatic,       ///< "auto": exact up to a problem-size limit (SolveOptions::exact_hessian_limit)
   exact,           ///< "exact": the exact (dense) Hessian
   limited_memory,  ///< "limited-memory": the L-BFGS approximation
-};
-
-/// The half-space's compliance operator (core/linear_operator.hpp).
-enum class OperatorKind {
-  automatic,  ///< "auto": dense up to kDenseAutoLimit entries, else FFT
-  dense,      ///< "dense": the whole influence matrix
-  fft,        ///< "fft": matrix-free, by FFT convolution
 };
 
 struct SolverOptions {

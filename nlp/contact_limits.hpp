@@ -7,9 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "case_model.hpp"
+#include "contact_spec.hpp"
 
 namespace dc {
 
@@ -28,10 +26,6 @@ struct ContactSize {
   double face_element_size = 0.0;    ///< an fe_body's face elements over the contact (m; 0: none)
 };
 
-std::vector<ResultLimit> result_limits(const Case& c, const ContactSize& size);
-
-/// Summary entries: [{key, message, level ("error" or "warning"), accepted}]: a warning is
-/// accepted only when a key of the case accepted it (grid.allow_edge_contact, ...).
-nlohmann::json limits_json(const std::vector<ResultLimit>& limits);
+std::vector<ResultLimit> result_limits(const ContactSpec& c, const ContactSize& size);
 
 }  // namespace dc

@@ -1,35 +1,22 @@
 #pragma once
-// The case file contract (docs: shared spec CASES.md): JSON in, validated C++ values out.
-// Every bad input throws InputError naming the key path and the reason.
+// The case file contract (docs: shared spec CASES.md): JSON in, validated C++ values out. The
+// case layer (apps/case/, dyncontact_case) sits above the solvers: it reads a case into the typed
+// specs they take (ContactSpec, DynamicContactSpec, the tangential loads) and builds and solves
+// their problems (solve_case.hpp). Every bad input throws InputError naming the key path and
+// the reason.
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "case_fe_body.hpp"
-#include "case_dynamic.hpp"
-#include "case_paper_cylinder.hpp"
-#include "case_tangential.hpp"
-#include "grid.hpp"
-#include "material.hpp"
-#include "normal_spec.hpp"
-#include "profile.hpp"
-#include "solver_options.hpp"
+#include "dynamic_spec.hpp"
+#include "paper_cylinder_spec.hpp"
+#include "tangential_spec.hpp"
 
 namespace dc {
 
 enum class ProblemKind { normal, tangential, dynamic, paper_cylinder, finite };
-
-/// The friction bound f(p) (friction_law.hpp): "coulomb", "tresca" or "table" in the case file.
-enum class FrictionLawKind { coulomb, tresca, table };
-
-struct FrictionSpec {
-  FrictionLawKind law = FrictionLawKind::coulomb;
-  double mu = 0.0;
-  double bound = 0.0;                      ///< tresca
-  std::vector<double> pressure, bound_table;  ///< table
-};
 
 struct OutputSpec {
   std::string dir;       ///< empty: out/<name>
@@ -38,10 +25,12 @@ struct OutputSpec {
   int snapshot_every = 0;  ///< dynamic: the contact fields every k steps (0: none)
 };
 
-// Reading a block (the pattern every block follows; core/case_model.cpp):
-//  - a typed spec `<Block>Spec` and `<Block>Spec read_<block>(const json&, ...)` in
-//    core/case_<block>.{hpp,cpp}, reading only through JsonBlock (json_block.hpp): allow() the
-//    keys, typed getters, InputError(key path, reason) for every bad value;
+// Reading a block (the pattern every block follows):
+//  - a typed spec `<Block>Spec` in the layer that takes it (core/normal_spec.hpp, nlp/,
+//    dynamics/dynamic_spec.hpp, or here when only the runs take it), declared without JSON;
+//  - its reader `read_<block>(const json&, ...)` in apps/case/read_<block>.cpp, declared in
+//    case_readers.hpp, reading only through JsonBlock (json_block.hpp): allow() the keys, typed
+//    getters, InputError(key path, reason) for every bad value;
 //  - the spec held here as std::optional<<Block>Spec> (set when the block was read);
 //  - build_case() calls the reader, and kBlockUses (case_model.cpp) lists the problems that
 //    use the block: in any other problem the block is an error naming it.
@@ -54,25 +43,16 @@ struct SweepSpec {
   nlohmann::json values;  ///< a non-empty array, one run each
 };
 
-struct Case {
+/// A case: the specs the solvers take (materials, profile, grid, normal, friction, fe_body,
+/// solver: ContactSpec; dynamic: DynamicContactSpec), and what only the runs use.
+struct Case : DynamicContactSpec {
   std::string schema = "dyncontact/1";
   std::string name;
   std::string description;
   ProblemKind problem = ProblemKind::normal;
-  int dimension = 3;
-  MaterialPair materials;
-  ProfileSpec profile;
-  Grid grid;
-  bool allow_edge_contact = false;  ///< grid.allow_edge_contact: a contact truncated by the grid edge is accepted
-  bool allow_large_strain = false;  ///< materials.allow_large_strain: a contact as large as the body is accepted
-  NormalSpec normal;
-  std::optional<FrictionSpec> friction;
   std::optional<TangentialSpec> tangential;        ///< problem tangential
   std::optional<PaperCylinderSpec> paper_cylinder;  ///< problem paper_cylinder
-  std::optional<FeBodySpec> fe_body;                ///< problem finite
-  std::optional<DynamicSpec> dynamic;               ///< problem dynamic
   std::optional<SweepSpec> sweep;                   ///< problems paper_cylinder, dynamic
-  SolverOptions solver;                             ///< the `solver` block (solver_options.hpp)
   OutputSpec output;
   std::vector<std::string> blocks;  ///< the top-level keys the case file gave
   nlohmann::json source;            ///< the (overridden) JSON the case was read from (sweeps re-read it)
@@ -88,11 +68,8 @@ struct SweepPoint {
   Case run;
 };
 
-/// Reads the top-level `sweep` block (core/case_sweep.cpp).
-SweepSpec read_sweep(const nlohmann::json& block);
-
 /// The runs of a case's sweep, each its own validated case (its label "key = value", a
-/// "dimensionless." prefix left out); without a sweep the case itself (core/case_sweep.cpp).
+/// "dimensionless." prefix left out); without a sweep the case itself (read_sweep.cpp).
 std::vector<SweepPoint> sweep_points(const Case& c);
 
 /// Parses JSON text; `origin` (file name) is used in messages, malformed JSON reports its line.
@@ -105,7 +82,5 @@ void apply_override(nlohmann::json& document, const std::string& assignment);
 Case build_case(const nlohmann::json& document, const std::string& base_dir = ".");
 
 const char* to_string(ProblemKind kind);
-/// "coulomb", "tresca", "table".
-const char* to_string(FrictionLawKind law);
 
 }  // namespace dc

@@ -1,16 +1,16 @@
 // The dynamic blocks (CASES.md: body, loads, time, normal_model, contact_model) read into
-// DynamicSpec, and the load that sizes the grid of a dynamic case.
-#include "case_dynamic.hpp"
-
+// DynamicSpec.
 #include <cmath>
 
-#include "case_blocks.hpp"
 #include "case_model.hpp"
+#include "case_readers.hpp"
 #include "errors.hpp"
-#include "hertz.hpp"
 #include "json_block.hpp"
 
 namespace dc {
+
+using namespace case_json;
+
 namespace {
 
 /// [x, y, z], each component of magnitude at most `max` (`unit` for the message).
@@ -150,33 +150,5 @@ DynamicSpec read_dynamic(const nlohmann::json& document, const Case& c) {
   return s;
 }
 
-bool dynamic_sizing_load(const DynamicSpec& s, const Case& c, NormalSpec& load) {
-  double P = std::max(0.0, -s.force[2].value);
-  if (c.dimension == 3 && s.velocity[2] < 0.0 && c.profile.type != ProfileType::table &&
-      c.profile.type != ProfileType::flat_punch) {
-    // Hertz impact (Johnson 11.4): delta_max = (15 m v^2 / (16 E* sqrt(R)))^(2/5), P = 4/3 E* sqrt(R) delta^(3/2).
-    double A = 0.0, B = 0.0;
-    c.profile.quadratic_coefficients(A, B);
-    if (A > 0.0 && B > 0.0) {
-      const double R = 0.5 / std::sqrt(A * B);
-      P = std::max(P, hertz::sphere_impact(R, s.mass, s.velocity[2], c.materials.E_star()).force);
-    }
-  }
-  if (!(P > 0.0) || !std::isfinite(P)) return false;
-  load.control = Control::force;
-  load.value = P;
-  return true;
-}
-
-const char* to_string(NormalModel model) { return model == NormalModel::dynamic ? "dynamic" : "quasi_static"; }
-
-const char* to_string(ContactModel model) {
-  switch (model) {
-    case ContactModel::transient: return "transient";
-    case ContactModel::steady: return "steady";
-    case ContactModel::automatic: return "auto";
-  }
-  return "unknown";
-}
 
 }  // namespace dc

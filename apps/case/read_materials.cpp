@@ -1,0 +1,52 @@
+// The "materials" block (CASES.md): the body's and the half-space's elastic constants (E or G with
+// nu, or rigid), into MaterialPair (core/material.hpp).
+#include "case_readers.hpp"
+
+#include <string>
+
+#include "errors.hpp"
+#include "json_block.hpp"
+
+namespace dc {
+
+using namespace case_json;
+
+namespace {
+
+Elastic read_elastic(const json& j, const std::string& path) {
+  JsonBlock o(j, path);
+  o.allow({"E", "G", "nu", "rigid"});
+  if (o.boolean_or("rigid", false)) {
+    for (const char* k : {"E", "G", "nu"})
+      if (o.has(k)) throw InputError(o.key(k), "a rigid body takes no elastic constants");
+    return Elastic::make_rigid();
+  }
+  const bool hasE = o.has("E"), hasG = o.has("G");
+  if (hasE && hasG) throw InputError(o.key("G"), "give either E or G, not both");
+  if (!hasE && !hasG)
+    throw InputError(o.key("E"), "missing required key (give E or G with nu, or \"rigid\": true)");
+  const double nu = o.number("nu");
+  return hasE ? Elastic::from_E_nu(o.number("E"), nu, path) : Elastic::from_G_nu(o.number("G"), nu, path);
+}
+
+}  // namespace
+
+/// `body_from_mesh` (problem finite): the body's elasticity is its mesh's (fe_body), so the
+/// block gives the half-space ("base") only and the pair's body is rigid.
+MaterialPair read_materials(const json& j, bool body_from_mesh) {
+  JsonBlock o(j, "materials");
+  if (body_from_mesh) {
+    o.allow({"base", "allow_large_strain"});
+    return MaterialPair{Elastic::make_rigid(), read_elastic(o.at("base"), "materials.base")};
+  }
+  o.allow({"body", "base", "allow_large_strain"});
+  (void)o.boolean_or("allow_large_strain", false);  // read into Case by build_case
+  MaterialPair m;
+  m.body = read_elastic(o.at("body"), "materials.body");
+  m.base = read_elastic(o.at("base"), "materials.base");
+  if (m.body.rigid && m.base.rigid)
+    throw InputError("materials", "both bodies are rigid: at least one must be elastic");
+  return m;
+}
+
+}  // namespace dc

@@ -1,0 +1,23 @@
+#pragma once
+// The case layer's builders: a case's specs turned into the solvers' problems (nlp/) and solved.
+#include <vector>
+
+#include "case_model.hpp"
+#include "normal_problem.hpp"
+#include "tangential_problem.hpp"
+
+namespace dc {
+
+/// The whole normal case: grid, profile, operator, solve.
+NormalSolution solve_normal_case(const ContactSpec& c, const ProgressCallback& progress = {});
+
+/// The tangential problem of a case (grid, materials, profile, friction, solver.operator), set up
+/// and in its unloaded state. Throws InputError("friction") when the case has no friction.
+TangentialProblem make_tangential_problem(const ContactSpec& c);
+
+/// The whole tangential case (CASES.md "tangential"): one solution, or one per history step.
+/// An interrupt (core/interrupt.hpp) during a history returns the steps finished before it;
+/// with none finished, Interrupted propagates.
+std::vector<TangentialSolution> solve_tangential_case(const Case& c, const ProgressCallback& progress = {});
+
+}  // namespace dc
