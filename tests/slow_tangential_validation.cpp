@@ -20,7 +20,6 @@ namespace {
 
 namespace cf = closed_form;
 
-SolverOptions native_solver() { return test::native_tangential_solver(); }
 
 using test::amplitude;
 
@@ -41,7 +40,7 @@ TEST(SlowTangentialValidation, KalkerLinearCreepCoefficients64) {
     RollingLoad load;
     load.normal = {Control::force, P};
     load.modes = {amplitude(cx), amplitude(cy), amplitude(sp)};
-    const TangentialSolution s = problem.steady_rolling(load, native_solver());
+    const TangentialSolution s = problem.steady_rolling(load, test::native_tangential_solver());
     EXPECT_NE(s.report.status, SolveStatus::failed) << s.report.message;
     EXPECT_LT(s.report.certificate.friction_law, 1e-6) << dc::output::to_json(s.report.certificate).dump();
     EXPECT_LT(s.report.certificate.gap_function, 1e-4) << dc::output::to_json(s.report.certificate).dump();
@@ -80,7 +79,7 @@ std::vector<double> spence_history(double beta_over_mu, int steps) {
   for (int k = 0; k <= steps; ++k) {
     const double s_a = 0.5 + 0.5 * k / steps;
     load.normal = {Control::force, P_max * s_a * s_a * s_a};
-    const TangentialSolution s = problem.step(load, native_solver());
+    const TangentialSolution s = problem.step(load, test::native_tangential_solver());
     EXPECT_EQ(s.report.status, SolveStatus::converged) << s.report.message;
     double area = 0.0;
     for (double f : s.bound) area += f > 0.0 ? g.area() : 0.0;

@@ -22,11 +22,11 @@ namespace {
 using test::DenseMatrixOperator;
 using test::random_spd;
 
-using Backend = std::function<SolveOutcome(const QuadraticProgram&, const SolveOptions&)>;
+using BackendFunction = std::function<SolveOutcome(const QuadraticProgram&, const SolveOptions&)>;
 
 struct NamedBackend {
   std::string name;
-  Backend solve;
+  BackendFunction solve;
 };
 
 std::vector<NamedBackend> backends() {

@@ -28,7 +28,7 @@ json shift_case() {
 }
 
 /// build_case after `assignment` fails naming `key` (and the message contains `words`).
-void expect_bad(json doc, const std::string& assignment, const std::string& key, const std::string& words = "") {
+void expect_bad_override(json doc, const std::string& assignment, const std::string& key, const std::string& words = "") {
   SCOPED_TRACE(assignment);
   try {
     apply_override(doc, assignment);
@@ -73,40 +73,40 @@ TEST(CaseReading, TangentialBlockIsTyped) {
 // Everything the tangential solver used to reject only when solving is a reading error now.
 TEST(CaseReading, BadTangentialBlocksAreRejectedWhileReading) {
   const json d = shift_case();
-  expect_bad(d, "tangential.regime=skid", "tangential.regime", "unknown regime");
-  expect_bad(d, "tangential.regime=3", "tangential.regime", "required");
-  expect_bad(d, R"(tangential={"regime": "rolling", "creepage": [1e-4, 0], "velocity": 0})", "tangential.velocity",
+  expect_bad_override(d, "tangential.regime=skid", "tangential.regime", "unknown regime");
+  expect_bad_override(d, "tangential.regime=3", "tangential.regime", "required");
+  expect_bad_override(d, R"(tangential={"regime": "rolling", "creepage": [1e-4, 0], "velocity": 0})", "tangential.velocity",
              "positive");
-  expect_bad(d, R"(tangential={"regime": "rolling", "creepage": [1e-4, 0], "velocity": -2})", "tangential.velocity");
-  expect_bad(d, "tangential.history=[]", "tangential.history", "non-empty");
-  expect_bad(d, "tangential.history=\"steps\"", "tangential.history", "non-empty");
-  expect_bad(d, "tangential.history=[3]", "tangential.history[0]", "object");
-  expect_bad(d, R"(tangential.history=[{"force": [1, 0]}, {"forse": [1, 0]}])", "tangential.history[1].forse",
+  expect_bad_override(d, R"(tangential={"regime": "rolling", "creepage": [1e-4, 0], "velocity": -2})", "tangential.velocity");
+  expect_bad_override(d, "tangential.history=[]", "tangential.history", "non-empty");
+  expect_bad_override(d, "tangential.history=\"steps\"", "tangential.history", "non-empty");
+  expect_bad_override(d, "tangential.history=[3]", "tangential.history[0]", "object");
+  expect_bad_override(d, R"(tangential.history=[{"force": [1, 0]}, {"forse": [1, 0]}])", "tangential.history[1].forse",
              "unknown key");
-  expect_bad(d, "tangential.force=[1]", "tangential.force", "two components");
-  expect_bad(d, "tangential.force=[1, 2, 3]", "tangential.force", "[x, y]");
-  expect_bad(d, "tangential.force=5", "tangential.force", "two components");
-  expect_bad(d, "tangential.force=[\"a\", 0]", "tangential.force[0]", "must be a number");
-  expect_bad(d, R"(tangential={"regime": "shift", "force": [1, 0], "shift": [0, 0]})", "tangential.force", "not both");
-  expect_bad(d, R"(tangential={"regime": "torsion", "angle": 1e-3, "moment": 1})", "tangential.moment");
-  expect_bad(d, R"(tangential.history=[{"normal": {"force": -1}}])", "tangential.history[0].normal.force",
+  expect_bad_override(d, "tangential.force=[1]", "tangential.force", "two components");
+  expect_bad_override(d, "tangential.force=[1, 2, 3]", "tangential.force", "[x, y]");
+  expect_bad_override(d, "tangential.force=5", "tangential.force", "two components");
+  expect_bad_override(d, "tangential.force=[\"a\", 0]", "tangential.force[0]", "must be a number");
+  expect_bad_override(d, R"(tangential={"regime": "shift", "force": [1, 0], "shift": [0, 0]})", "tangential.force", "not both");
+  expect_bad_override(d, R"(tangential={"regime": "torsion", "angle": 1e-3, "moment": 1})", "tangential.moment");
+  expect_bad_override(d, R"(tangential.history=[{"normal": {"force": -1}}])", "tangential.history[0].normal.force",
              "positive");
-  expect_bad(d, "tangential.creepage=[0, 0]", "tangential.creepage", "unknown key");
-  expect_bad(d, R"(tangential={"regime": "rolling", "creepage": [0, 0], "max_steps": 0})", "tangential.max_steps");
+  expect_bad_override(d, "tangential.creepage=[0, 0]", "tangential.creepage", "unknown key");
+  expect_bad_override(d, R"(tangential={"regime": "rolling", "creepage": [0, 0], "max_steps": 0})", "tangential.max_steps");
 }
 
 TEST(CaseReading, BlocksTheProblemDoesNotUseAreErrors) {
   json normal = shift_case();
   normal["problem"] = "normal";
   normal.erase("tangential");
-  expect_bad(normal, "problem=normal", "friction", "not used by problem 'normal'");
+  expect_bad_override(normal, "problem=normal", "friction", "not used by problem 'normal'");
   normal.erase("friction");
   EXPECT_NO_THROW(build_case(normal));
-  expect_bad(normal, R"(tangential={"regime": "shift", "force": [1, 0]})", "tangential", "not used");
-  expect_bad(normal, R"(sweep={"normal.force": [1, 2]})", "sweep", "not used");
-  expect_bad(normal, R"(dimensionless={"gamma_bar": 1})", "dimensionless", "not used");
+  expect_bad_override(normal, R"(tangential={"regime": "shift", "force": [1, 0]})", "tangential", "not used");
+  expect_bad_override(normal, R"(sweep={"normal.force": [1, 2]})", "sweep", "not used");
+  expect_bad_override(normal, R"(dimensionless={"gamma_bar": 1})", "dimensionless", "not used");
   // A bad value in an unused block still names its own key first.
-  expect_bad(normal, R"(friction={"law": "coulomb", "mu": -1})", "friction.mu");
+  expect_bad_override(normal, R"(friction={"law": "coulomb", "mu": -1})", "friction.mu");
 }
 
 TEST(CaseReading, PaperCylinderBlocksAreTyped) {
@@ -125,9 +125,9 @@ TEST(CaseReading, PaperCylinderBlocksAreTyped) {
   ASSERT_EQ(points.size(), 2u);
   EXPECT_EQ(points[0].label, "gamma_bar = 0.1");
   EXPECT_EQ(*points[1].run.paper_cylinder->gamma_bar, 0.5);
-  expect_bad(doc, R"(body={"mass": 1})", "body", "dimensionless");
-  expect_bad(doc, "time.t_end=3", "time.t_end", "unknown key");
-  expect_bad(doc, R"(tangential={"regime": "shift"})", "tangential", "not used");
+  expect_bad_override(doc, R"(body={"mass": 1})", "body", "dimensionless");
+  expect_bad_override(doc, "time.t_end=3", "time.t_end", "unknown key");
+  expect_bad_override(doc, R"(tangential={"regime": "shift"})", "tangential", "not used");
 }
 
 // ---------------------------------------------------------------- the checked parser

@@ -25,7 +25,7 @@ using json = nlohmann::json;
 
 using dc::test::slurp;
 using Result = dc::test::CliResult;
-const auto& quote = dc::test::shell_quote;
+using dc::test::shell_quote;
 
 class Cli : public dc::test::CliTest {
  protected:
@@ -98,7 +98,7 @@ TEST_F(Cli, EveryExampleFileIsBundledAndValid) {
     const Result e = run("example " + name);
     ASSERT_EQ(e.code, 0) << e.err;
     EXPECT_EQ(e.out, slurp(entry.path()));
-    const Result v = run("validate " + quote(entry.path().string()));
+    const Result v = run("validate " + shell_quote(entry.path().string()));
     EXPECT_EQ(v.code, 0) << v.err;
   }
   EXPECT_GE(files, 12);

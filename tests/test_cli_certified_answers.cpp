@@ -20,13 +20,13 @@ namespace fs = std::filesystem;
 using json = nlohmann::json;
 using dc::test::slurp;
 using Result = dc::test::CliResult;
-const auto& quote = dc::test::shell_quote;
+using dc::test::shell_quote;
 
 class CliCertifiedAnswers : public dc::test::CliTest {
  protected:
   json summary(const std::string& folder) const { return json::parse(slurp(dir_ / folder / "summary.json")); }
   Result solve(const std::string& example, const std::string& sets, const std::string& out) const {
-    return run("solve " + quote(dc::test::example_path(example)) + " " + sets +
+    return run("solve " + shell_quote(dc::test::example_path(example)) + " " + sets +
                " --set 'output={\"plots\":false}' --out " + out + " -q");
   }
 };

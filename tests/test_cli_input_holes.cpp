@@ -18,8 +18,8 @@ namespace fs = std::filesystem;
 using json = nlohmann::json;
 using Result = dc::test::CliResult;
 using dc::test::slurp;
-const auto& quote = dc::test::shell_quote;
-const auto& example = dc::test::example_json;
+using dc::test::shell_quote;
+using dc::test::example_json;
 
 class CliInputHoles : public dc::test::CliTest {
  protected:
@@ -39,14 +39,14 @@ class CliInputHoles : public dc::test::CliTest {
 
 TEST_F(CliInputHoles, DeepNestingIsExit2NamingThePlace) {
   const std::string deep = std::string(1000000, '[') + std::string(1000000, ']');
-  json doc = example("hertz-sphere");
+  json doc = example_json("hertz-sphere");
   std::string text = doc.dump();
   text.insert(text.size() - 1, ", \"junk\": " + deep);
   const std::string file = write(text);
   expect_error("validate " + file, "junk[0][0]", "nested more than 64");
   expect_error("solve " + file, "junk[0][0]", "nested more than 64");
-  expect_error("validate " + quote(dc::test::example_path("hertz-sphere")) +
-                   " --set " + quote("grid.x=" + std::string(5000, '[') + std::string(5000, ']')),
+  expect_error("validate " + shell_quote(dc::test::example_path("hertz-sphere")) +
+                   " --set " + shell_quote("grid.x=" + std::string(5000, '[') + std::string(5000, ']')),
                "grid.x[0]", "nested");
 }
 
@@ -54,25 +54,25 @@ TEST_F(CliInputHoles, DeepNestingIsExit2NamingThePlace) {
 // the same way, before any tree is built.
 TEST_F(CliInputHoles, DeepOrHugeValuesAnywhereAreExit2) {
   const std::string deep = std::string(1000000, '[') + std::string(1000000, ']');
-  std::string text = example("paper-cylinder").dump();
+  std::string text = example_json("paper-cylinder").dump();
   text.replace(text.find("\"description\":"), 14, "\"description\": " + deep + ", \"x\":");
   expect_error("validate " + write(text), "description[0]", "nested more than 64");
-  const std::string sweep = write(example("paper-cylinder").dump(), "sweep.json");
+  const std::string sweep = write(example_json("paper-cylinder").dump(), "sweep.json");
   const std::string deep_arg = std::string(20000, '[') + std::string(20000, ']');  // one argument < 128 KiB
-  expect_error("solve " + sweep + " --set " + quote("sweep.dimensionless.gamma_bar=" + deep_arg),
+  expect_error("solve " + sweep + " --set " + shell_quote("sweep.dimensionless.gamma_bar=" + deep_arg),
                "sweep.dimensionless.gamma_bar[0]", "nested");
-  expect_error("validate " + sweep + " --set " + quote("description=" + deep_arg), "description[0]", "nested");
-  const std::string c = write(example("cattaneo-sphere").dump(), "c.json");
+  expect_error("validate " + sweep + " --set " + shell_quote("description=" + deep_arg), "description[0]", "nested");
+  const std::string c = write(example_json("cattaneo-sphere").dump(), "c.json");
   expect_error("validate " + c + " --set normal.force=1e999", "normal.force", "1e999");
-  expect_error("solve " + c + " --set " + quote(R"(tangential.force=[-1e999, 0])"), "tangential.force[0]", "1e999");
+  expect_error("solve " + c + " --set " + shell_quote(R"(tangential.force=[-1e999, 0])"), "tangential.force[0]", "1e999");
 }
 
 TEST_F(CliInputHoles, OutOfRangeNumbersAndDuplicateKeysNameTheKey) {
-  std::string text = example("hertz-sphere").dump(2);
+  std::string text = example_json("hertz-sphere").dump(2);
   const std::string file = write(text.replace(text.find("\"force\": 100.0"), 14, "\"force\": 1e999"));
   expect_error("validate " + file, "normal.force", "1e999");
   expect_error("solve " + file, "normal.force", "1e999");
-  std::string dup = example("hertz-sphere").dump(2);
+  std::string dup = example_json("hertz-sphere").dump(2);
   dup.replace(dup.find("\"nx\": 64"), 8, "\"nx\": 64, \"nx\": 16");
   expect_error("validate " + write(dup, "dup.json"), "grid.nx", "duplicate key");
 }
@@ -81,7 +81,7 @@ TEST_F(CliInputHoles, CommandLineMistakesAreSaid) {
   Result r = run("frobnicate");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("unknown subcommand 'frobnicate'"), std::string::npos) << r.err;
-  const std::string file = write(example("hertz-sphere").dump());
+  const std::string file = write(example_json("hertz-sphere").dump());
   r = run("solve " + file + " --out ''");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
@@ -89,9 +89,9 @@ TEST_F(CliInputHoles, CommandLineMistakesAreSaid) {
 }
 
 TEST_F(CliInputHoles, ValidateRejectsWhatSolveRejects) {
-  json c = example("cattaneo-sphere");
+  json c = example_json("cattaneo-sphere");
   auto bad = [&](const std::string& set, const std::string& key) {
-    expect_error("validate " + write(c.dump()) + " --set " + quote(set), key);
+    expect_error("validate " + write(c.dump()) + " --set " + shell_quote(set), key);
   };
   bad("tangential.regime=skid", "tangential.regime");
   bad(R"(tangential={"regime": "rolling", "creepage": [0, 0], "velocity": 0})", "tangential.velocity");
@@ -101,15 +101,15 @@ TEST_F(CliInputHoles, ValidateRejectsWhatSolveRejects) {
   bad("tangential.force=[1]", "tangential.force");
   bad("tangential.force=[1, 2, 3]", "tangential.force");
   // Blocks the problem does not use.
-  const std::string normal = write(example("hertz-sphere").dump(), "normal.json");
-  expect_error("validate " + normal + " --set " + quote(R"(friction={"law": "coulomb", "mu": 0.3})"), "friction",
+  const std::string normal = write(example_json("hertz-sphere").dump(), "normal.json");
+  expect_error("validate " + normal + " --set " + shell_quote(R"(friction={"law": "coulomb", "mu": 0.3})"), "friction",
                "not used by problem 'normal'");
-  expect_error("solve " + normal + " --set " + quote(R"(sweep={"normal.force": [1, 2]})"), "sweep", "not used");
+  expect_error("solve " + normal + " --set " + shell_quote(R"(sweep={"normal.force": [1, 2]})"), "sweep", "not used");
 }
 
 TEST_F(CliInputHoles, KnownWrongResultsAreNotSuccesses) {
-  const std::string file = write(example("hertz-sphere").dump());
-  const std::string small_grid = quote(R"(grid={"nx":32,"ny":32,"x":[-1e-4,1e-4],"y":[-1e-4,1e-4]})");
+  const std::string file = write(example_json("hertz-sphere").dump());
+  const std::string small_grid = shell_quote(R"(grid={"nx":32,"ny":32,"x":[-1e-4,1e-4],"y":[-1e-4,1e-4]})");
   // Truncated by the grid's edge: exit 2 naming grid, the share of the edge in the summary.
   expect_error("solve " + file + " -q --out edge --set " + small_grid, "grid", "edge of the grid");
   const json s = json::parse(slurp(dir_ / "edge" / "summary.json"));
@@ -139,7 +139,7 @@ TEST_F(CliInputHoles, KnownWrongResultsAreNotSuccesses) {
 // time_s is the whole solve: every marching step of a steady rolling by time marching (Ipopt
 // marches), not the last step's solve.
 TEST_F(CliInputHoles, TimeCountsTheWholeSolve) {
-  const std::string file = write(example("carter-2d").dump());
+  const std::string file = write(example_json("carter-2d").dump());
   const auto start = std::chrono::steady_clock::now();
   const Result r = run("solve " + file + " -q --out carter --backend ipopt --set grid.nx=20");
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -151,7 +151,7 @@ TEST_F(CliInputHoles, TimeCountsTheWholeSolve) {
 }
 
 TEST_F(CliInputHoles, CompareSaysWhyPaperCylinderHasNoBackends) {
-  const Result r = run("compare " + quote(dc::test::example_path("paper-cylinder")) +
+  const Result r = run("compare " + shell_quote(dc::test::example_path("paper-cylinder")) +
                        " --backends ipopt,native --out cmp");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("no contact backend to compare"), std::string::npos) << r.err;
@@ -159,7 +159,7 @@ TEST_F(CliInputHoles, CompareSaysWhyPaperCylinderHasNoBackends) {
 }
 
 TEST_F(CliInputHoles, OutputFolderCheckedBeforeSolvingAndOwned) {
-  json doc = example("hertz-sphere");
+  json doc = example_json("hertz-sphere");
   doc["grid"]["nx"] = 16;
   doc["grid"]["ny"] = 16;
   const std::string file = write(doc.dump());

@@ -28,9 +28,9 @@ using json = nlohmann::json;
 
 using dc::test::slurp;
 using Result = dc::test::CliResult;
-const auto& quote = dc::test::shell_quote;
+using dc::test::shell_quote;
 
-const auto& example = dc::test::example_json;
+using dc::test::example_json;
 
 /// Rows of fields.csv: the header, then the state column of every row.
 struct FieldsFile {
@@ -53,7 +53,7 @@ class CliTangential : public dc::test::CliTest {
  protected:
   /// Writes example `name` with `edit` applied (Ipopt, no plots) and returns the file name.
   std::string case_file(const std::string& name, const std::function<void(json&)>& edit = {}) const {
-    json doc = example(name);
+    json doc = example_json(name);
     doc["solver"]["backend"] = "ipopt";
     doc["output"] = {{"plots", false}};
     if (edit) edit(doc);
@@ -248,7 +248,7 @@ TEST_F(CliTangential, RollingHistoryWritesEveryStep) {
   ASSERT_EQ(s["steps"].size(), 5u);
   EXPECT_EQ(s["all_steps_converged"], true);
   const double a = carter_example_half_width(), dx = s["grid"]["dx"].get<double>();
-  const json history = example("cattaneo-carter-2d")["tangential"]["history"];
+  const json history = example_json("cattaneo-carter-2d")["tangential"]["history"];
   double total = 0.0;
   for (std::size_t k = 0; k < 5; ++k) {
     SCOPED_TRACE(k);

@@ -8,19 +8,17 @@
 
 #include "influence.hpp"
 #include "linear_operator.hpp"
+#include "solver_support.hpp"
 
 namespace dc {
 namespace {
 
-MaterialPair steel_on_aluminium() {
-  return {Elastic::from_E_nu(2.1e11, 0.3), Elastic::from_E_nu(7.0e10, 0.33)};
-}
 MaterialPair identical_steel() { return {Elastic::from_E_nu(2.1e11, 0.3), Elastic::from_E_nu(2.1e11, 0.3)}; }
 
 TEST(Influence, CentreOfUniformlyLoadedSquareMatchesLove) {
   // Johnson (3.5): the centre of a square of side s under uniform p sinks by
   // (1 - nu^2)/E * p * s * 4 ln(1 + sqrt 2) / pi; two bodies: 1/E*.
-  const auto m = steel_on_aluminium();
+  const auto m = test::steel_on_aluminium();
   const Grid g = Grid::make(3, 5, 5, -1e-3, 1e-3, -1e-3, 1e-3);
   const KernelTable t = influence_table(g, m, kZ, kZ);
   const double expected = g.dx * 4.0 * std::log(1.0 + std::sqrt(2.0)) / (std::numbers::pi * m.E_star());
@@ -29,7 +27,7 @@ TEST(Influence, CentreOfUniformlyLoadedSquareMatchesLove) {
 
 TEST(Influence, RectangleCornerSumMatchesQuadrature) {
   // Midpoint quadrature of each point kernel over an element away from the field point.
-  const auto m = steel_on_aluminium();
+  const auto m = test::steel_on_aluminium();
   const Grid g = Grid::make(3, 8, 6, 0.0, 8e-3, 0.0, 9e-3);
   const int di = 3, dj = -2;
   const int q = 400;
@@ -50,7 +48,7 @@ TEST(Influence, RectangleCornerSumMatchesQuadrature) {
 }
 
 TEST(Influence, FarFieldApproachesPointLoad) {
-  const auto m = steel_on_aluminium();
+  const auto m = test::steel_on_aluminium();
   const Grid g = Grid::make(3, 64, 64, 0.0, 64e-3, 0.0, 64e-3);
   for (Axis out : {kX, kY, kZ})
     for (Axis in : {kX, kY, kZ}) {
@@ -62,7 +60,7 @@ TEST(Influence, FarFieldApproachesPointLoad) {
 }
 
 TEST(Influence, TwoDimensionalStripsMatchLineLoads) {
-  const auto m = steel_on_aluminium();
+  const auto m = test::steel_on_aluminium();
   const Grid g = Grid::make(2, 100, 1, -5e-3, 5e-3, 0, 0);
   const double L = g.nx * g.dx;
   for (auto [out, in] : {std::pair{kZ, kZ}, {kX, kX}, {kX, kZ}, {kZ, kX}}) {
@@ -83,7 +81,7 @@ TEST(Influence, TwoDimensionalStripsMatchLineLoads) {
 TEST(Influence, FullOperatorIsSymmetricPositiveDefinite) {
   // Betti: the 3x3-block compliance of (tau_x, tau_y, p) is symmetric, and the elastic
   // energy t.Ct is positive; the kappa cross terms make the blocks couple.
-  const auto m = steel_on_aluminium();
+  const auto m = test::steel_on_aluminium();
   ASSERT_GT(std::abs(m.kappa()), 0.0);
   const Grid g = Grid::make(3, 6, 5, -1e-3, 1e-3, -1e-3, 1.5e-3);
   std::vector<KernelTable> blocks;
@@ -131,27 +129,27 @@ void expect_dense_equals_fft(const Grid& g, const MaterialPair& m, int n_out, in
 }
 
 TEST(Operator, DenseEqualsFftNormal3d) {
-  expect_dense_equals_fft(Grid::make(3, 13, 9, -1e-3, 1e-3, -2e-3, 1e-3), steel_on_aluminium(), 1, 1,
+  expect_dense_equals_fft(Grid::make(3, 13, 9, -1e-3, 1e-3, -2e-3, 1e-3), test::steel_on_aluminium(), 1, 1,
                           {{kZ, kZ}});
 }
 
 TEST(Operator, DenseEqualsFftTangentialBlocks) {
-  expect_dense_equals_fft(Grid::make(3, 10, 7, -1e-3, 1e-3, -1e-3, 1e-3), steel_on_aluminium(), 2, 2,
+  expect_dense_equals_fft(Grid::make(3, 10, 7, -1e-3, 1e-3, -1e-3, 1e-3), test::steel_on_aluminium(), 2, 2,
                           {{kX, kX}, {kX, kY}, {kY, kX}, {kY, kY}});
 }
 
 TEST(Operator, DenseEqualsFftCrossTerms) {
-  expect_dense_equals_fft(Grid::make(3, 8, 11, -1e-3, 1e-3, -1e-3, 1e-3), steel_on_aluminium(), 2, 1,
+  expect_dense_equals_fft(Grid::make(3, 8, 11, -1e-3, 1e-3, -1e-3, 1e-3), test::steel_on_aluminium(), 2, 1,
                           {{kX, kZ}, {kY, kZ}});
 }
 
 TEST(Operator, DenseEqualsFft2d) {
-  expect_dense_equals_fft(Grid::make(2, 37, 1, -1e-3, 1e-3, 0, 0), steel_on_aluminium(), 1, 1, {{kZ, kZ}});
+  expect_dense_equals_fft(Grid::make(2, 37, 1, -1e-3, 1e-3, 0, 0), test::steel_on_aluminium(), 1, 1, {{kZ, kZ}});
 }
 
 TEST(Operator, HalfSpaceBuildsEveryOperator) {
   const Grid g = Grid::make(3, 6, 6, -1e-3, 1e-3, -1e-3, 1e-3);
-  const HalfSpace hs(g, steel_on_aluminium());
+  const HalfSpace hs(g, test::steel_on_aluminium());
   EXPECT_EQ(hs.normal()->rows(), 36u);
   EXPECT_EQ(hs.tangential()->rows(), 72u);
   EXPECT_EQ(hs.tangential_from_normal()->rows(), 72u);

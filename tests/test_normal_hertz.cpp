@@ -15,11 +15,8 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-MaterialPair steel_on_aluminium() {
-  return {Elastic::from_E_nu(2.1e11, 0.3), Elastic::from_E_nu(7.0e10, 0.33)};
-}
 
-SolverOptions native_solver() { return test::native_solver_spec(5000); }
+SolverOptions native_normal_solver() { return test::native_solver_spec(5000); }
 
 struct HertzErrors {
   double approach, radius, peak;
@@ -34,7 +31,7 @@ HertzErrors sphere_errors(int n, double extent, const MaterialPair& m, double R,
   prof.type = ProfileType::sphere;
   prof.radius = R;
   NormalProblem problem(g, m, profile_heights(prof, g));
-  const NormalSolution s = problem.solve({Control::force, P}, native_solver());
+  const NormalSolution s = problem.solve({Control::force, P}, native_normal_solver());
   EXPECT_EQ(s.report.status, SolveStatus::converged) << s.report.message;
   EXPECT_LT(s.report.certificate.complementarity, 1e-6);
   double area = 0.0, peak = 0.0;
@@ -48,7 +45,7 @@ HertzErrors sphere_errors(int n, double extent, const MaterialPair& m, double R,
 }
 
 TEST(NormalHertz, SphereMatchesHertzAndConvergesUnderRefinement) {
-  const auto m = steel_on_aluminium();
+  const auto m = test::steel_on_aluminium();
   const HertzErrors coarse = sphere_errors(32, 1.25, m, 0.01, 100.0);
   const HertzErrors fine = sphere_errors(96, 1.25, m, 0.01, 100.0);
   // Tolerances the 96^2 grid (dx = a/38) meets: approach 0.5 %, radius 2 %, peak 1 %.
@@ -70,7 +67,7 @@ TEST(NormalHertz, OtherMaterialAndLoad) {
 }
 
 TEST(NormalHertz, EllipticContactMatchesHertzEllipticIntegrals) {
-  const auto m = steel_on_aluminium();
+  const auto m = test::steel_on_aluminium();
   const double Rx = 0.01, Ry = 0.04, P = 200.0;
   const auto hz = hertz::elliptic(1.0 / (2 * Rx), 1.0 / (2 * Ry), P, m.E_star());
   ASSERT_LT(hz.a, hz.b);
@@ -80,7 +77,7 @@ TEST(NormalHertz, EllipticContactMatchesHertzEllipticIntegrals) {
   prof.radius_x = Rx;
   prof.radius_y = Ry;
   NormalProblem problem(g, m, profile_heights(prof, g));
-  const NormalSolution s = problem.solve({Control::force, P}, native_solver());
+  const NormalSolution s = problem.solve({Control::force, P}, native_normal_solver());
   ASSERT_EQ(s.report.status, SolveStatus::converged);
   double peak = 0.0, x_extent = 0.0, y_extent = 0.0;
   for (int j = 0; j < g.ny; ++j)
@@ -100,7 +97,7 @@ TEST(NormalHertz, EllipticContactMatchesHertzEllipticIntegrals) {
 }
 
 TEST(NormalHertz, Cylinder2dHalfWidthAndPressure) {
-  const auto m = steel_on_aluminium();
+  const auto m = test::steel_on_aluminium();
   const double R = 0.02, P = 1e5;
   const auto hz = hertz::cylinder2d(R, P, m.E_star());
   double last_error = 1.0;
@@ -110,7 +107,7 @@ TEST(NormalHertz, Cylinder2dHalfWidthAndPressure) {
     prof.type = ProfileType::cylinder;
     prof.radius = R;
     NormalProblem problem(g, m, profile_heights(prof, g));
-    const NormalSolution s = problem.solve({Control::force, P}, native_solver());
+    const NormalSolution s = problem.solve({Control::force, P}, native_normal_solver());
     ASSERT_EQ(s.report.status, SolveStatus::converged);
     double peak = 0.0, width = 0.0, pressure_error = 0.0;
     for (int i = 0; i < g.nx; ++i) {
@@ -140,7 +137,7 @@ TEST(NormalHertz, FlatPunchLoadApproachMatchesBoussinesq) {
     prof.radius = a;
     const auto h = profile_heights(prof, g);
     NormalProblem problem(g, m, h);
-    const NormalSolution s = problem.solve({Control::approach, delta}, native_solver());
+    const NormalSolution s = problem.solve({Control::approach, delta}, native_normal_solver());
     ASSERT_EQ(s.report.status, SolveStatus::converged) << s.report.message;
     // Compare with the punch of the same loaded area (the grid's staircase edge).
     double area = 0.0;

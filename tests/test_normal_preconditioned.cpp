@@ -16,7 +16,6 @@
 namespace dc {
 namespace {
 
-MaterialPair steel_on_aluminium() { return {Elastic::from_E_nu(2.1e11, 0.3), Elastic::from_E_nu(7.0e10, 0.33)}; }
 
 struct SphereCase {
   Grid grid;
@@ -25,7 +24,7 @@ struct SphereCase {
 };
 
 SphereCase sphere(int n, double R = 0.01, double P = 100.0) {
-  const MaterialPair m = steel_on_aluminium();
+  const MaterialPair m = test::steel_on_aluminium();
   const auto hz = hertz::sphere(R, P, m.E_star());
   const double L = 1.3 * hz.a;
   const Grid g = Grid::make(3, n, n, -L, L, -L, L);
@@ -45,7 +44,7 @@ struct Program {
 
 Program program(const SphereCase& s, bool force_control, double value) {
   Program p;
-  p.C = HalfSpace(s.grid, steel_on_aluminium()).normal(OperatorKind::fft);
+  p.C = HalfSpace(s.grid, test::steel_on_aluminium()).normal(OperatorKind::fft);
   p.c0 = p.C->diagonal(0);
   p.Q = std::make_unique<ScaledOperator>(*p.C, 1.0 / p.c0);
   const std::size_t n = s.grid.size();
@@ -100,7 +99,7 @@ TEST(NormalPreconditioned, IterationsDoNotGrowWithTheGrid) {
   std::vector<int> iterations, plain;
   for (int n : {32, 64, 128}) {
     const SphereCase s = sphere(n);
-    NormalProblem problem(s.grid, steel_on_aluminium(), s.heights, OperatorKind::fft);
+    NormalProblem problem(s.grid, test::steel_on_aluminium(), s.heights, OperatorKind::fft);
     const NormalSolution sol = problem.solve({Control::force, 100.0}, test::native_solver_spec(1000));
     ASSERT_EQ(sol.report.status, SolveStatus::converged) << sol.report.message;
     EXPECT_LT(std::abs(*std::max_element(sol.pressure.begin(), sol.pressure.end()) / s.hz.p0 - 1.0), 0.02) << n;
@@ -123,7 +122,7 @@ TEST(NormalPreconditioned, IterationsDoNotGrowWithTheGrid) {
 
 TEST(NormalPreconditioned, WarmStartFromTheSolutionFinishesAtOnce) {
   const SphereCase s = sphere(48);
-  NormalProblem problem(s.grid, steel_on_aluminium(), s.heights, OperatorKind::fft);
+  NormalProblem problem(s.grid, test::steel_on_aluminium(), s.heights, OperatorKind::fft);
   const SolverOptions solver = test::native_solver_spec(1000);
   const NormalSolution cold = problem.solve({Control::force, 100.0}, solver);
   ASSERT_EQ(cold.report.status, SolveStatus::converged);

@@ -22,7 +22,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 MaterialPair steel() { return {Elastic::from_G_nu(82e9, 0.28), Elastic::from_G_nu(82e9, 0.28)}; }
 
-SolverOptions spec(Backend backend) {
+SolverOptions backend_alone(Backend backend) {
   SolverOptions s;
   s.backend = backend;
   s.fallback = false;  // the backend's own result: a failure must show
@@ -43,7 +43,7 @@ int hertz_iterations(const Grid& g) {
   const double L = g.dx * g.nx, a = 0.3 * L, R = 0.02;
   const double P = 4.0 * steel().E_star() * a * a * a / (3.0 * R);
   NormalProblem hertz(g, steel(), heights(g, [&](double x, double y) { return (x * x + y * y) / (2.0 * R); }));
-  const NormalSolution s = hertz.solve({Control::force, P}, spec(Backend::native));
+  const NormalSolution s = hertz.solve({Control::force, P}, backend_alone(Backend::native));
   EXPECT_EQ(s.report.status, SolveStatus::converged);
   return s.report.iterations;
 }
@@ -58,18 +58,18 @@ Outcome solve_both_ways(const Grid& g, const std::vector<double>& h, double appr
                         const char* label) {
   Outcome o;
   NormalProblem problem(g, steel(), h);
-  o.native = problem.solve({Control::approach, approach}, spec(Backend::native));
+  o.native = problem.solve({Control::approach, approach}, backend_alone(Backend::native));
   EXPECT_EQ(o.native.report.status, SolveStatus::converged) << label << ": " << o.native.report.message;
   EXPECT_EQ(o.native.report.backend, "native") << label;
   EXPECT_GT(o.native.force, 0.0) << label;
   NormalProblem cold(g, steel(), h);  // no warm start from the approach-controlled solve
-  const NormalSolution forced = cold.solve({Control::force, o.native.force}, spec(Backend::native));
+  const NormalSolution forced = cold.solve({Control::force, o.native.force}, backend_alone(Backend::native));
   EXPECT_EQ(forced.report.status, SolveStatus::converged) << label << " (force control): " << forced.report.message;
   // The approach of the force-controlled solve is the given one to the solver's tolerance.
   EXPECT_NEAR(forced.approach, approach, 1e-6 * approach) << label;
   if (with_ipopt) {
     NormalProblem reference(g, steel(), h);
-    o.ipopt = reference.solve({Control::approach, approach}, spec(Backend::ipopt));
+    o.ipopt = reference.solve({Control::approach, approach}, backend_alone(Backend::ipopt));
     EXPECT_EQ(o.ipopt.report.status, SolveStatus::converged) << label << ": " << o.ipopt.report.message;
     // The same force (an interior point's finish leaves ~1e-8 relative differences) and the same
     // pressures to 1e-5 of the peak.
@@ -147,7 +147,7 @@ TEST(NormalRealGaps, NearlyConformalBandWithWhiteNoise) {
   const std::vector<double> h = heights(g, with_noise(band, 0.4e-6, g, 7, 1));
   for (const NormalSpec control : {NormalSpec{Control::approach, 10e-6}, NormalSpec{Control::force, 5000.0}}) {
     NormalProblem problem(g, steel(), h);
-    const NormalSolution s = problem.solve(control, spec(Backend::native));
+    const NormalSolution s = problem.solve(control, backend_alone(Backend::native));
     EXPECT_EQ(s.report.status, SolveStatus::converged) << s.report.message;
     std::printf("[ gap ] white-noise band 96^2 (%s control): %d iterations\n",
                 control.control == Control::force ? "force" : "approach", s.report.iterations);

@@ -29,7 +29,7 @@ struct SmallSphere {
   }
 };
 
-SolverOptions spec(Backend backend) {
+SolverOptions tight_backend_options(Backend backend) {
   SolverOptions s;
   s.backend = backend;
   s.fallback = false;
@@ -102,7 +102,7 @@ TEST(NormalVariational, MinimiserSatisfiesContactConditions) {
   SmallSphere c;
   for (const Backend backend : {Backend::ipopt, Backend::native, Backend::nlopt}) {
     NormalProblem problem(c.grid, c.materials, c.heights);
-    const NormalSolution s = problem.solve({Control::force, c.force}, spec(backend));
+    const NormalSolution s = problem.solve({Control::force, c.force}, tight_backend_options(backend));
     ASSERT_EQ(s.report.status, SolveStatus::converged) << to_string(backend) << ": " << s.report.message;
     double p_max = 0.0;
     for (double p : s.pressure) p_max = std::max(p_max, p);
@@ -137,7 +137,7 @@ TEST(NormalVariational, ComplementaritySolutionMinimisesTheFunctional) {
     EXPECT_GE(functional(C, c.heights, p), f_star * (1 - 1e-14) - 1e-14 * std::abs(f_star));
   }
   // And the optimiser finds the same field.
-  const NormalSolution s = problem.solve({Control::force, c.force}, spec(Backend::ipopt));
+  const NormalSolution s = problem.solve({Control::force, c.force}, tight_backend_options(Backend::ipopt));
   for (std::size_t i = 0; i < p_star.size(); ++i) EXPECT_NEAR(s.pressure[i], p_star[i], 1e-5 * p_max);
 }
 
@@ -146,7 +146,7 @@ TEST(NormalVariational, BackendsAgree) {
   std::vector<NormalSolution> sols;
   for (const Backend backend : {Backend::ipopt, Backend::nlopt, Backend::native}) {
     NormalProblem problem(c.grid, c.materials, c.heights);
-    sols.push_back(problem.solve({Control::force, c.force}, spec(backend)));
+    sols.push_back(problem.solve({Control::force, c.force}, tight_backend_options(backend)));
     ASSERT_EQ(sols.back().report.status, SolveStatus::converged) << to_string(backend);
     EXPECT_EQ(sols.back().report.backend, to_string(backend));
   }
@@ -163,10 +163,10 @@ TEST(NormalVariational, ApproachControlIsTheSameProblem) {
   // Solving under the approach found by force control returns the same force.
   SmallSphere c;
   NormalProblem problem(c.grid, c.materials, c.heights);
-  const NormalSolution by_force = problem.solve({Control::force, c.force}, spec(Backend::native));
+  const NormalSolution by_force = problem.solve({Control::force, c.force}, tight_backend_options(Backend::native));
   for (const Backend backend : {Backend::ipopt, Backend::native}) {
     NormalProblem again(c.grid, c.materials, c.heights);
-    const NormalSolution by_approach = again.solve({Control::approach, by_force.approach}, spec(backend));
+    const NormalSolution by_approach = again.solve({Control::approach, by_force.approach}, tight_backend_options(backend));
     ASSERT_EQ(by_approach.report.status, SolveStatus::converged) << to_string(backend);
     EXPECT_NEAR(by_approach.force, c.force, 1e-5 * c.force) << to_string(backend);
   }
@@ -175,7 +175,7 @@ TEST(NormalVariational, ApproachControlIsTheSameProblem) {
 TEST(NormalVariational, CertificateRejectsAWrongField) {
   SmallSphere c;
   NormalProblem problem(c.grid, c.materials, c.heights);
-  const NormalSolution s = problem.solve({Control::force, c.force}, spec(Backend::native));
+  const NormalSolution s = problem.solve({Control::force, c.force}, tight_backend_options(Backend::native));
   EXPECT_LT(s.report.certificate.worst(), 1e-6);
   std::vector<double> wrong = s.pressure;
   for (double& p : wrong) p *= 1.01;  // 1 % too much: the force and complementarity fail
@@ -187,7 +187,7 @@ TEST(NormalVariational, CertificateRejectsAWrongField) {
 TEST(NormalVariational, IterationLimitIsReportedNotHidden) {
   SmallSphere c;
   NormalProblem problem(c.grid, c.materials, c.heights);
-  SolverOptions s = spec(Backend::native);
+  SolverOptions s = tight_backend_options(Backend::native);
   s.max_iter = 2;
   const NormalSolution sol = problem.solve({Control::force, c.force}, s);
   EXPECT_NE(sol.report.status, SolveStatus::converged);
@@ -197,7 +197,7 @@ TEST(NormalVariational, IterationLimitIsReportedNotHidden) {
 TEST(NormalVariational, AutoFallsBackAndSaysSo) {
   SmallSphere c;
   NormalProblem problem(c.grid, c.materials, c.heights);
-  SolverOptions s = spec(Backend::automatic);
+  SolverOptions s = tight_backend_options(Backend::automatic);
   s.fallback = true;
   const NormalSolution sol = problem.solve({Control::force, c.force}, s);
   EXPECT_EQ(sol.report.status, SolveStatus::converged);

@@ -24,7 +24,6 @@ namespace {
 
 using namespace dc::test;
 
-SolverOptions native_solver() { return native_tangential_solver(); }
 namespace cf = closed_form;
 
 TEST(Gmres, SolvesANonSymmetricSystemAcrossRestarts) {
@@ -82,8 +81,8 @@ TEST(SteadyRolling, NewtonMatchesTheTimeMarchWithCreepageAndSpin3d) {
   const double a = s.hz.a, xi = 0.2 * mu * a / R;  // about half the saturation creepage
   TangentialProblem problem(s.grid, m, s.heights, FrictionLaw::coulomb(mu));
   const std::array<ModeControl, 3> modes{amplitude(xi), amplitude(0.5 * xi), amplitude(0.5 * xi / a)};
-  const TangentialSolution newton = problem.steady_rolling(rolling(P, modes, RollingLoad::Method::newton), native_solver());
-  const TangentialSolution march = problem.steady_rolling(rolling(P, modes, RollingLoad::Method::marching), native_solver());
+  const TangentialSolution newton = problem.steady_rolling(rolling(P, modes, RollingLoad::Method::newton), test::native_tangential_solver());
+  const TangentialSolution march = problem.steady_rolling(rolling(P, modes, RollingLoad::Method::marching), test::native_tangential_solver());
   expect_certified(newton);
   expect_certified(march);
   EXPECT_EQ(newton.marching_steps, 0);
@@ -111,8 +110,8 @@ TEST(SteadyRolling, NewtonMatchesTheTimeMarchForDissimilarMaterialsUnderForceCon
   prof.radius = R;
   TangentialProblem problem(g, m, profile_heights(prof, g), FrictionLaw::coulomb(mu));
   const std::array<ModeControl, 3> modes{resultant(-0.6 * mu * P), amplitude(0.0), amplitude(0.0)};
-  const TangentialSolution newton = problem.steady_rolling(rolling(P, modes, RollingLoad::Method::newton), native_solver());
-  const TangentialSolution march = problem.steady_rolling(rolling(P, modes, RollingLoad::Method::marching), native_solver());
+  const TangentialSolution newton = problem.steady_rolling(rolling(P, modes, RollingLoad::Method::newton), test::native_tangential_solver());
+  const TangentialSolution march = problem.steady_rolling(rolling(P, modes, RollingLoad::Method::marching), test::native_tangential_solver());
   expect_certified(newton);
   expect_certified(march);
   EXPECT_GT(newton.outer.iterations, 1);  // kappa != 0: the pressure follows the traction (4.26)
@@ -131,7 +130,7 @@ TEST(SteadyRolling, BeyondSaturationTheWholeContactSlides) {
   TangentialProblem problem(s.grid, m, s.heights, FrictionLaw::coulomb(mu));
   const double xi = 3.0 * mu * s.hz.a / R;  // three times Carter's saturation creepage
   const TangentialSolution sol = problem.steady_rolling(
-      rolling(P, {amplitude(xi), amplitude(0.0), amplitude(0.0)}, RollingLoad::Method::newton), native_solver());
+      rolling(P, {amplitude(xi), amplitude(0.0), amplitude(0.0)}, RollingLoad::Method::newton), test::native_tangential_solver());
   expect_certified(sol);
   EXPECT_EQ(sol.n_stick, 0);
   // Full slip against the creepage: F_x = -mu P up to the curvature of the slip direction
@@ -155,7 +154,7 @@ TEST(SteadyRolling, ForceControlUpToSaturation3d) {
     const double F = ratio * mu * P;
     const TangentialSolution sol = problem.steady_rolling(
         rolling(P, {resultant(-cx * F), resultant(-cy * F), amplitude(0.0)}, RollingLoad::Method::newton),
-        native_solver());
+        test::native_tangential_solver());
     expect_certified(sol);
     EXPECT_NEAR(sol.resultants[0], -cx * F, 1e-8 * mu * P);
     EXPECT_NEAR(sol.resultants[1], -cy * F, 1e-8 * mu * P);
@@ -187,7 +186,7 @@ TEST(SteadyRolling, CarterCreepLawUpToSaturationUnderForceControl2d) {
   for (double ratio : {0.2, 0.5, 0.8, 0.95, 0.995}) {
     const TangentialSolution s = problem.steady_rolling(
         rolling(P, {resultant(-ratio * mu * P), amplitude(0.0), amplitude(0.0)}, RollingLoad::Method::newton),
-        native_solver());
+        test::native_tangential_solver());
     expect_certified(s);
     const double carter = cf::carter_creepage(hz.a, R, mu, -ratio);
     std::printf("[ Carter F/mu P = %.3f ] creepage / Carter %.4f (%s)\n", ratio, s.amplitudes[0] / carter,

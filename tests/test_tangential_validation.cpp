@@ -27,7 +27,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 namespace cf = closed_form;
 
-SolverOptions native_solver() { return test::native_tangential_solver(); }
 
 using test::amplitude;
 using test::resultant;
@@ -81,7 +80,7 @@ MindlinErrors cattaneo_mindlin(int n) {
   TangentialLoad load;
   load.normal = {Control::force, P};
   load.modes = {amplitude(delta), amplitude(0.0), amplitude(0.0)};
-  const TangentialSolution s = problem.step(load, native_solver());
+  const TangentialSolution s = problem.step(load, test::native_tangential_solver());
   expect_certified(s);
   EXPECT_DOUBLE_EQ(s.amplitudes[0], delta);
   EXPECT_NEAR(s.resultants[1], 0.0, 1e-6 * mu * P);  // symmetric about y = 0
@@ -119,12 +118,12 @@ TEST(TangentialValidation, LoadThenUnloadLeavesResidualTractionsMindlinDeresiewi
   TangentialLoad load;
   load.normal = {Control::force, P};
   load.modes = {amplitude(cf::mindlin_shift(mu, P, a, comp, ratio_max)), amplitude(0.0), amplitude(0.0)};
-  const TangentialSolution loaded = problem.step(load, native_solver());
+  const TangentialSolution loaded = problem.step(load, test::native_tangential_solver());
   expect_certified(loaded);
   const double delta0 = cf::mindlin_unloading_shift(mu, P, a, comp, ratio_max, 0.0);
   ASSERT_GT(delta0, 0.0);
   load.modes[0] = amplitude(delta0);
-  const TangentialSolution unloaded = problem.step(load, native_solver());
+  const TangentialSolution unloaded = problem.step(load, test::native_tangential_solver());
   expect_certified(unloaded);
 
   // The force is gone (to 1 % of mu P), tractions of the predicted size stay locked in.
@@ -157,10 +156,10 @@ TEST(TangentialValidation, ForceControlCattaneoMindlinAndUnloading) {
   TangentialLoad load;
   load.normal = {Control::force, P};
   load.modes = {resultant(-ratio_max * mu * P), amplitude(0.0), amplitude(0.0)};
-  const TangentialSolution loaded = problem.step(load, native_solver());
+  const TangentialSolution loaded = problem.step(load, test::native_tangential_solver());
   expect_certified(loaded);
   load.modes[0] = resultant(0.0);
-  const TangentialSolution unloaded = problem.step(load, native_solver());
+  const TangentialSolution unloaded = problem.step(load, test::native_tangential_solver());
   expect_certified(unloaded);
   const double d1 = cf::mindlin_shift(mu, P, a, comp, ratio_max);
   const double d0 = cf::mindlin_unloading_shift(mu, P, a, comp, ratio_max, 0.0);
@@ -211,7 +210,7 @@ CarterErrors carter(int n) {
   RollingLoad load;
   load.normal = {Control::force, P};
   load.modes = {amplitude(xi), amplitude(0.0), amplitude(0.0)};
-  const TangentialSolution s = problem.steady_rolling(load, native_solver());
+  const TangentialSolution s = problem.steady_rolling(load, test::native_tangential_solver());
   expect_certified(s);
   EXPECT_DOUBLE_EQ(s.amplitudes[0], xi);
 
@@ -267,13 +266,13 @@ TEST(TangentialValidation, CarterNegativeCreepageDrivesForwards) {
   RollingLoad load;
   load.normal = {Control::force, P};
   load.modes = {amplitude(-cf::carter_creepage(hz.a, R, mu, 0.7)), amplitude(0.0), amplitude(0.0)};
-  const TangentialSolution s = problem.steady_rolling(load, native_solver());
+  const TangentialSolution s = problem.steady_rolling(load, test::native_tangential_solver());
   expect_certified(s);
   std::printf("[ Carter xi < 0 ] F/(mu P) = %.4f (Carter 0.7000)\n", s.resultants[0] / (mu * P));
   EXPECT_NEAR(s.resultants[0] / (mu * P), 0.7, 0.015);
   // Beyond saturation (|xi| > mu a/R): gross sliding, |F| = mu P.
   load.modes[0] = amplitude(1.5 * mu * hz.a / R);
-  const TangentialSolution slide = problem.steady_rolling(load, native_solver());
+  const TangentialSolution slide = problem.steady_rolling(load, test::native_tangential_solver());
   expect_certified(slide);
   EXPECT_NEAR(slide.resultants[0] / (mu * P), -1.0, 1e-6);
   EXPECT_EQ(slide.n_stick, 0);
@@ -295,7 +294,7 @@ TEST(TangentialValidation, CarterForceControlled2d) {
   RollingLoad load;
   load.normal = {Control::force, P};
   load.modes = {resultant(ratio * mu * P), amplitude(0.0), amplitude(0.0)};
-  SolverOptions solver = native_solver();
+  SolverOptions solver = test::native_tangential_solver();
   solver.certificate_tol = 1e-6;
   const TangentialSolution s = problem.steady_rolling(load, solver);
   EXPECT_EQ(s.report.status, SolveStatus::converged) << s.report.message;
@@ -335,7 +334,7 @@ Coefficients kalker_measure(int n, double nu) {
     RollingLoad load;
     load.normal = {Control::force, P};
     load.modes = {amplitude(cx), amplitude(cy), amplitude(sp)};
-    const TangentialSolution s = problem.steady_rolling(load, native_solver());
+    const TangentialSolution s = problem.steady_rolling(load, test::native_tangential_solver());
     // Certified by (2.4)-(2.5) and the steady gap function (4.24) at the default tolerance.
     expect_certified(s);
     return s;
@@ -392,7 +391,7 @@ TEST(TangentialValidation, LubkinTorsionStickStiffnessAndSlipMoment) {
   TangentialProblem small(g, m, su.heights, FrictionLaw::coulomb(mu));
   const double phi = 0.01 * M_slip / K;
   load.modes = {amplitude(0.0), amplitude(0.0), amplitude(phi)};
-  const TangentialSolution s1 = small.step(load, native_solver());
+  const TangentialSolution s1 = small.step(load, test::native_tangential_solver());
   expect_certified(s1);
   const double a_eff = std::sqrt(contact_area(s1, g) / kPi);
   const double stiffness = -s1.resultants[2] / phi;  // a twist +phi of the body meets a moment -M
@@ -404,7 +403,7 @@ TEST(TangentialValidation, LubkinTorsionStickStiffnessAndSlipMoment) {
   // Large twist (50 x the stick angle of the slip moment): nearly full slip, M -> 3 pi mu P a/16.
   TangentialProblem large(g, m, su.heights, FrictionLaw::coulomb(mu));
   load.modes[2] = amplitude(50.0 * M_slip / K);
-  const TangentialSolution s2 = large.step(load, native_solver());
+  const TangentialSolution s2 = large.step(load, test::native_tangential_solver());
   expect_certified(s2);
   double M_discrete = 0.0;  // full-slip moment of the discrete pressure
   for (int j = 0; j < g.ny; ++j)
@@ -443,7 +442,7 @@ TEST(TangentialValidation, SpenceStickRatioIsConstantUnderMonotonicIndentation) 
   for (int k = 0; k <= steps; ++k) {
     const double s_a = 0.5 + 0.5 * k / steps;
     load.normal = {Control::force, P_max * s_a * s_a * s_a};
-    const TangentialSolution s = problem.step(load, native_solver());
+    const TangentialSolution s = problem.step(load, test::native_tangential_solver());
     expect_certified(s);
     EXPECT_TRUE(s.outer.converged);
     EXPECT_GE(s.outer.iterations, 2);
@@ -484,7 +483,7 @@ TEST(TangentialValidation, PressureDependentTableLawConvergesWithKappa) {
   load.normal = {Control::force, P};
   // Force control (x and y), about half way to gross sliding (f/p ~ 0.3 on average).
   load.modes = {resultant(-0.15 * P), resultant(0.05 * P), amplitude(0.0)};
-  const TangentialSolution s = problem.step(load, native_solver());
+  const TangentialSolution s = problem.step(load, test::native_tangential_solver());
   expect_certified(s);
   std::printf("[ table law ] outer iterations %d, last change %.2e, %d stick / %d slip\n", s.outer.iterations,
               s.outer.last_change, s.n_stick, s.n_slip);
@@ -493,7 +492,7 @@ TEST(TangentialValidation, PressureDependentTableLawConvergesWithKappa) {
   EXPECT_LT(s.outer.last_change, 1e-6);
   // The loop's stop: the gap error the last tau leaves in the pressure's problem is a hundredth
   // of certificate_tol, and the certificate above measured it (the pressure certified with it).
-  EXPECT_LE(s.outer.coupling_residual, 0.01 * native_solver().certificate_tol);
+  EXPECT_LE(s.outer.coupling_residual, 0.01 * test::native_tangential_solver().certificate_tol);
   EXPECT_NEAR(s.resultants[0], -0.15 * P, 1e-7 * P);
   EXPECT_NEAR(s.resultants[1], 0.05 * P, 1e-7 * P);
   EXPECT_GT(s.n_slip, 0);
@@ -528,7 +527,7 @@ TEST(TangentialValidation, MinimiserSatisfiesFrictionLawAndGapFunction) {
   TangentialLoad load;
   load.normal = {Control::force, P};
   load.modes = {amplitude(shift), amplitude(0.0), amplitude(0.3 * shift / su.hz.a)};
-  const TangentialSolution s = problem.step(load, native_solver());
+  const TangentialSolution s = problem.step(load, test::native_tangential_solver());
   expect_certified(s);
   EXPECT_GT(s.n_slip, 0);
   EXPECT_GT(s.n_stick, 0);

@@ -30,7 +30,6 @@ using test::amplitude;
 using test::expect_certified;
 using test::resultant;
 
-SolverOptions native_solver() { return test::native_tangential_solver(); }
 
 /// Steel cylinder on steel, plane strain: R = 50 mm, P = 100 kN/m, mu = 0.3.
 struct Cylinder {
@@ -96,7 +95,7 @@ TEST(TransientRolling, FirstStepWithoutTravelIsCattaneo2d) {
   const Cylinder cyl;
   const Grid& g = cyl.g;
   TangentialProblem problem = cyl.problem();
-  const TangentialSolution s = problem.roll(cyl.load(), 0.0, native_solver());
+  const TangentialSolution s = problem.roll(cyl.load(), 0.0, test::native_tangential_solver());
   expect_certified(s);
   EXPECT_EQ(s.marching_steps, 0);
   EXPECT_EQ(s.distance, 0.0);
@@ -119,7 +118,7 @@ TEST(TransientRolling, FirstStepWithoutTravelIsCattaneo2d) {
   TangentialLoad shift;
   shift.normal = cyl.load().normal;
   shift.modes = cyl.load().modes;
-  const TangentialSolution q = quasi_static.step(shift, native_solver());
+  const TangentialSolution q = quasi_static.step(shift, test::native_tangential_solver());
   EXPECT_LT(max_abs_diff(q.tx, s.tx), 1e-9 * cyl.mu_p0);
   EXPECT_NEAR(q.amplitudes[0], s.amplitudes[0], 1e-9 * s.amplitudes[0]);
 }
@@ -128,20 +127,20 @@ TEST(TransientRolling, DistanceRulesAndCreepageControlWithoutTravel) {
   const Cylinder cyl;
   TangentialProblem problem = cyl.problem();
   RollingLoad load = cyl.load();
-  EXPECT_THROW(problem.roll(load, -1e-6, native_solver()), InputError);
-  EXPECT_THROW(problem.roll(load, std::numeric_limits<double>::quiet_NaN(), native_solver()), InputError);
+  EXPECT_THROW(problem.roll(load, -1e-6, test::native_tangential_solver()), InputError);
+  EXPECT_THROW(problem.roll(load, std::numeric_limits<double>::quiet_NaN(), test::native_tangential_solver()), InputError);
   // A creepage over zero distance is no rigid slip: from rest, no traction at all.
   load.modes[0] = amplitude(cf::carter_creepage(cyl.a, cyl.R, cyl.mu, cyl.ratio));
-  const TangentialSolution rest = problem.roll(load, 0.0, native_solver());
+  const TangentialSolution rest = problem.roll(load, 0.0, test::native_tangential_solver());
   EXPECT_EQ(rest.marching_steps, 0);
   for (double t : rest.tx) EXPECT_EQ(t, 0.0);
   EXPECT_EQ(rest.amplitudes[0], 0.0);
   // A positive distance rolls the nearest whole number of elements, at least one.
-  const TangentialSolution one = problem.roll(load, 0.1 * cyl.g.dx, native_solver());
+  const TangentialSolution one = problem.roll(load, 0.1 * cyl.g.dx, test::native_tangential_solver());
   EXPECT_EQ(one.marching_steps, 1);
   EXPECT_DOUBLE_EQ(one.distance, cyl.g.dx);
   EXPECT_DOUBLE_EQ(one.amplitudes[0], load.modes[0].value);  // reported as the creepage
-  const TangentialSolution three = problem.roll(load, 3.4 * cyl.g.dx, native_solver());
+  const TangentialSolution three = problem.roll(load, 3.4 * cyl.g.dx, test::native_tangential_solver());
   EXPECT_EQ(three.marching_steps, 3);
   EXPECT_LT(three.resultants[0], one.resultants[0]);  // the braking force builds up as it rolls
 }
@@ -150,18 +149,18 @@ TEST(TransientRolling, MemoryIsKeptBetweenRolls) {
   const Cylinder cyl;
   const double half = 0.5 * cyl.a;  // 20.8 dx: 21 steps; 1a: 41.7 dx -> 42 steps
   TangentialProblem split = cyl.problem(), whole = cyl.problem(), from_rest = cyl.problem();
-  split.roll(cyl.load(), 0.0, native_solver());
-  split.roll(cyl.load(), half, native_solver());
-  const TangentialSolution s2 = split.roll(cyl.load(), half, native_solver());
-  whole.roll(cyl.load(), 0.0, native_solver());
-  const TangentialSolution s1 = whole.roll(cyl.load(), 2 * half, native_solver());
+  split.roll(cyl.load(), 0.0, test::native_tangential_solver());
+  split.roll(cyl.load(), half, test::native_tangential_solver());
+  const TangentialSolution s2 = split.roll(cyl.load(), half, test::native_tangential_solver());
+  whole.roll(cyl.load(), 0.0, test::native_tangential_solver());
+  const TangentialSolution s1 = whole.roll(cyl.load(), 2 * half, test::native_tangential_solver());
   EXPECT_EQ(s1.marching_steps, 42);
   EXPECT_EQ(s2.marching_steps, 21);
   // Two rolls of 21 steps are the 42 steps of one (the same programs in the same order).
   EXPECT_LT(max_abs_diff(s1.tx, s2.tx), 1e-9 * cyl.mu_p0);
   EXPECT_NEAR(s1.amplitudes[0], s2.amplitudes[0], 1e-9 * std::abs(s1.amplitudes[0]));
   // Starting from rest instead of Cattaneo's state changes the answer: the state is the memory.
-  const TangentialSolution r = from_rest.roll(cyl.load(), 2 * half, native_solver());
+  const TangentialSolution r = from_rest.roll(cyl.load(), 2 * half, test::native_tangential_solver());
   EXPECT_GT(max_abs_diff(r.tx, s1.tx), 0.05 * cyl.mu_p0);
 }
 
@@ -169,8 +168,8 @@ TEST(TransientRolling, StickZoneMovesTowardsTheLeadingEdge) {
   const Cylinder cyl;
   const Grid& g = cyl.g;
   TangentialProblem problem = cyl.problem();
-  problem.roll(cyl.load(), 0.0, native_solver());
-  const TangentialSolution s = problem.roll(cyl.load(), 0.5 * cyl.a, native_solver());
+  problem.roll(cyl.load(), 0.0, test::native_tangential_solver());
+  const TangentialSolution s = problem.roll(cyl.load(), 0.5 * cyl.a, test::native_tangential_solver());
   expect_certified(s);
   const double ap = cf::carter_stick_half_width(cyl.a, cyl.ratio);
   const double carter_centre = cyl.a - ap;  // Carter: [a - 2a', a]; Cattaneo: centred on 0
@@ -200,9 +199,9 @@ TEST(TransientRolling, CattaneoThenRollingReachesCarter) {
   TangentialProblem problem = cyl.problem();
   // The bundled example's history: no travel, then 0.5a, 0.5a, 1a, 1a (3a in all, 125 steps).
   double rolled = 0.0;
-  TangentialSolution s = problem.roll(cyl.load(), 0.0, native_solver());
+  TangentialSolution s = problem.roll(cyl.load(), 0.0, test::native_tangential_solver());
   for (double d : {0.5 * a, 0.5 * a, a, a}) {
-    s = problem.roll(cyl.load(), d, native_solver());
+    s = problem.roll(cyl.load(), d, test::native_tangential_solver());
     expect_certified(s);
     EXPECT_NEAR(s.resultants[0], cyl.ratio * cyl.mu * cyl.P, 1e-7 * cyl.mu * cyl.P);
     rolled += s.distance;
@@ -227,11 +226,11 @@ TEST(TransientRolling, CattaneoThenRollingReachesCarter) {
   // the transient decays (oscillating, about a decade per contact width rolled), so after 10a
   // both agree to 1e-4 (relative creepage, traction over mu p0), closer than after 3a.
   TangentialProblem steady_problem = cyl.problem();
-  const TangentialSolution steady = steady_problem.steady_rolling(cyl.load(), native_solver());
+  const TangentialSolution steady = steady_problem.steady_rolling(cyl.load(), test::native_tangential_solver());
   ASSERT_EQ(steady.report.status, SolveStatus::converged) << steady.report.message;
   const double creep_3a = std::abs(s.amplitudes[0] / steady.amplitudes[0] - 1.0);
   const double tau_3a = max_abs_diff(s.tx, steady.tx) / cyl.mu_p0;
-  s = problem.roll(cyl.load(), 7 * a, native_solver());
+  s = problem.roll(cyl.load(), 7 * a, test::native_tangential_solver());
   const double creep_10a = std::abs(s.amplitudes[0] / steady.amplitudes[0] - 1.0);
   const double tau_10a = max_abs_diff(s.tx, steady.tx) / cyl.mu_p0;
   std::printf("[ vs steady_rolling ] after 3a: creepage %.2e, traction %.2e mu p0; after 10a: %.2e, %.2e\n", creep_3a,
@@ -253,16 +252,16 @@ TEST(TransientRolling, SphereRollingHistoryReachesSteadyCreepage) {
   RollingLoad load;
   load.normal = {Control::force, P};
   load.modes = {resultant(-0.5 * mu * P), resultant(0.0), amplitude(0.0)};
-  const TangentialSolution first = problem.roll(load, 0.0, native_solver());
+  const TangentialSolution first = problem.roll(load, 0.0, test::native_tangential_solver());
   expect_certified(first);
   EXPECT_GT(first.amplitudes[0], 0.0);  // Cattaneo-Mindlin shift, towards +x
   TangentialSolution s;
   for (int k = 0; k < 2; ++k) {
-    s = problem.roll(load, 2 * a, native_solver());
+    s = problem.roll(load, 2 * a, test::native_tangential_solver());
     expect_certified(s);
   }
   EXPECT_EQ(s.marching_steps, 13);  // 2a / 0.15a = 13.3
-  const TangentialSolution steady = problem.steady_rolling(load, native_solver());
+  const TangentialSolution steady = problem.steady_rolling(load, test::native_tangential_solver());
   ASSERT_EQ(steady.report.status, SolveStatus::converged) << steady.report.message;
   std::printf("[ sphere ] creepage after 4a / steady %.5f\n", s.amplitudes[0] / steady.amplitudes[0]);
   // After 4a the transient is well below 1 % (it decays by about a decade per contact width).

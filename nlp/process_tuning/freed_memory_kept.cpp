@@ -16,12 +16,12 @@ constexpr int kDefaultMmapMax = 65536;
 constexpr int kDefaultTrimThreshold = 128 * 1024;
 
 std::mutex scopes_mutex;
-int scopes_open = 0;  // across threads
+int keeping_scopes_open = 0;  // across threads
 }  // namespace
 
 FreedMemoryKept::FreedMemoryKept() {
   const std::lock_guard<std::mutex> lock(scopes_mutex);
-  if (scopes_open++ > 0) return;
+  if (keeping_scopes_open++ > 0) return;
   mallopt(M_MMAP_MAX, 0);              // large blocks from the heap (threads' arenas still mmap)
   // ... and left there when freed: -1 never trims (the largest int, 2 GB, still gave back the
   // 50k-dof body's workspace at every factorisation).
@@ -30,7 +30,7 @@ FreedMemoryKept::FreedMemoryKept() {
 
 FreedMemoryKept::~FreedMemoryKept() {
   const std::lock_guard<std::mutex> lock(scopes_mutex);
-  if (--scopes_open > 0) return;
+  if (--keeping_scopes_open > 0) return;
   mallopt(M_MMAP_MAX, kDefaultMmapMax);
   mallopt(M_TRIM_THRESHOLD, kDefaultTrimThreshold);
   malloc_trim(0);

@@ -13,7 +13,7 @@
 
 namespace dc {
 namespace {
-thread_local int scopes_open = 0;
+thread_local int ordering_scopes_open = 0;
 std::atomic<long> ordered_analyses{0};
 
 using DmumpsEntry = void (*)(DMUMPS_STRUC_C*);
@@ -64,8 +64,8 @@ void analyse_with_our_ordering(DMUMPS_STRUC_C* mumps) {
 }
 }  // namespace
 
-MumpsOrderedByUs::MumpsOrderedByUs() { ++scopes_open; }
-MumpsOrderedByUs::~MumpsOrderedByUs() { --scopes_open; }
+MumpsOrderedByUs::MumpsOrderedByUs() { ++ordering_scopes_open; }
+MumpsOrderedByUs::~MumpsOrderedByUs() { --ordering_scopes_open; }
 long mumps_analyses_ordered_by_us() { return ordered_analyses.load(); }
 bool mumps_ordering_hook_built() { return true; }
 
@@ -74,7 +74,7 @@ bool mumps_ordering_hook_built() { return true; }
 // Exported even from a program built with hidden visibility, so that libipopt's call resolves
 // to it.
 extern "C" __attribute__((visibility("default"))) void dmumps_c(DMUMPS_STRUC_C* mumps) {
-  if (dc::scopes_open > 0 && dc::is_analysis(mumps->job) && mumps->sym != 0 && mumps->icntl[dc::kFormat] == 0 &&
+  if (dc::ordering_scopes_open > 0 && dc::is_analysis(mumps->job) && mumps->sym != 0 && mumps->icntl[dc::kFormat] == 0 &&
       mumps->icntl[dc::kDistribution] == 0 && mumps->irn != nullptr && mumps->jcn != nullptr)
     dc::analyse_with_our_ordering(mumps);
   else
