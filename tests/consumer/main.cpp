@@ -12,13 +12,13 @@
 #include <string>
 #include <vector>
 
-#include <dyncontact/apps/case/case_model.hpp>
 #include <dyncontact/core/errors.hpp>
 #include <dyncontact/core/grid.hpp>
 #include <dyncontact/core/hertz.hpp>
 #include <dyncontact/core/material.hpp>
 #include <dyncontact/core/profile.hpp>
 #include <dyncontact/nlp/normal_problem.hpp>
+#include <dyncontact/nlp/solver_options.hpp>
 
 namespace {
 
