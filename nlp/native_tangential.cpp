@@ -59,6 +59,12 @@ std::string format(const char* fmt, double a) {
 
 double chord_dot(double ax, double ay, double bx, double by, double vx, double vy, double r);
 
+}  // namespace
+
+// The workspace's element types (named, not anonymous: NativeTangentialWorkspace::Storage, a
+// member of a class with linkage, holds them).
+namespace native_tangential_types {
+
 struct Disk {
   std::size_t ix = 0, iy = 0;
   double r = 0.0;
@@ -71,17 +77,17 @@ struct Face {
   Vec nx, ny, curv;                 ///< per disk (slipping): outward normal, mu / r
 };
 
-}  // namespace
+}  // namespace native_tangential_types
 
 /// Every vector of a solve, kept between solves: resized, not reallocated (vectors of n = 2N
 /// doubles are above glibc's mmap threshold from 90^2 elements: fresh ones are page faults).
 struct NativeTangentialWorkspace::Storage {
-  std::vector<Disk> disks;
+  std::vector<native_tangential_types::Disk> disks;
   std::vector<std::size_t> boxed, fixed;
   std::vector<unsigned char> role;
   Vec lower, upper, fixed_value;
   std::vector<const double*> rows;
-  Face face;
+  native_tangential_types::Face face;
   std::vector<Vec> a_face, a_face_minv;
   Vec minv, pre_in, u_last, work_u, work_x;
   // solve()'s iterates
@@ -94,6 +100,9 @@ NativeTangentialWorkspace::NativeTangentialWorkspace(NativeTangentialWorkspace&&
 NativeTangentialWorkspace& NativeTangentialWorkspace::operator=(NativeTangentialWorkspace&&) noexcept = default;
 
 namespace {
+
+using native_tangential_types::Disk;
+using native_tangential_types::Face;
 
 class NativeTangential {
  public:
