@@ -41,7 +41,7 @@ void TangentialSensitivity::solve_stick(const LinearOperator& op, bool symmetric
         for (int c = 0; c < comps; ++c)
           if (!stick(e)) out[c * N + e] = in[c * N + e];  // identity off the stick set
     };
-    gmres(apply, {}, r_, x_, 1e-8, 40, 400);
+    gmres(apply, {}, r_, x_, 1e-8, 40, 400, gmres_work_);
     return;
   }
   const double b2 = rr;
@@ -206,10 +206,15 @@ Eigen::Matrix3d TangentialSensitivity::compute_full(const LinearOperator& Ct, co
     std::fill(x_.begin(), x_.end(), 0.0);
     slip_rows(x_, tau0_, b_);
     for (std::size_t i = 0; i < n; ++i) b_[i] = stick(i % N) ? b_[i] : -b_[i];
+    // From the last call's solution for this mode (same size): the sensitivity of the previous
+    // iterate or step, a few GMRES iterations from this one's.
+    std::vector<double>& last = last_solution_[l];
+    if (last.size() == m) x_ = last;
     // The Jacobian only steers Newton (the residual is exact): a relative error e makes its
     // convergence linear with rate ~e, so 1e-6 costs no iteration.
-    const GmresResult gm = gmres(apply, precondition, b_, x_, 1e-6, 60, 600);
+    const GmresResult gm = gmres(apply, precondition, b_, x_, 1e-6, 60, 600, gmres_work_);
     iterations_ += gm.iterations;
+    last = x_;
     for (int k = 0; k < modes; ++k) {
       double sum = 0.0;
       for (std::size_t e = 0; e < N; ++e)

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "friction_law.hpp"
+#include "gmres.hpp"
 #include "grid.hpp"
 #include "linear_operator.hpp"
 #include "tangential_problem.hpp"
@@ -55,6 +56,10 @@ class TangentialSensitivity {
   std::vector<double> x_, r_, p_, q_, full_, out_;
   long iterations_ = 0;
   std::vector<double> tau0_, wt_, wn_, dp_, b_, slope_, extra_t_, extra_n_, gain_, dir_;
+  /// compute_full's solution per rigid mode, the start of the next call's GMRES (the contact and
+  /// its stick/slip sets change little from one Newton iterate or step to the next).
+  std::vector<double> last_solution_[3];
+  GmresWorkspace gmres_work_;
 };
 
 }  // namespace dc::dynamics

@@ -9,6 +9,12 @@ namespace dc {
 
 GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, const std::vector<double>& b,
                   std::vector<double>& x, double rtol, int restart, int max_iter) {
+  GmresWorkspace work;
+  return gmres(apply, precondition, b, x, rtol, restart, max_iter, work);
+}
+
+GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, const std::vector<double>& b,
+                  std::vector<double>& x, double rtol, int restart, int max_iter, GmresWorkspace& work) {
   const std::size_t n = b.size();
   GmresResult result;
   x.resize(n, 0.0);
@@ -18,9 +24,27 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, const s
     result.converged = true;
     return result;
   }
-  std::vector<std::vector<double>> V(restart + 1, std::vector<double>(n));
-  std::vector<std::vector<double>> H(restart + 1, std::vector<double>(restart, 0.0));
-  std::vector<double> cs(restart), sn(restart), g(restart + 1), z(n), w(n), y(restart);
+  // Every entry of H, g and y is written before it is read; the basis vectors are sized as the
+  // iteration reaches them (a converging call touches only the first few).
+  auto& V = work.V;
+  auto& H = work.H;
+  auto& cs = work.cs;
+  auto& sn = work.sn;
+  auto& g = work.g;
+  auto& z = work.z;
+  auto& w = work.w;
+  auto& y = work.y;
+  const std::size_t m = static_cast<std::size_t>(restart);
+  if (V.size() < m + 1) V.resize(m + 1);
+  if (H.size() < m + 1) H.resize(m + 1);
+  for (auto& row : H)
+    if (row.size() < m) row.resize(m);
+  for (auto* v : {&cs, &sn, &y})
+    if (v->size() < m) v->resize(m);
+  if (g.size() < m + 1) g.resize(m + 1);
+  z.resize(n);
+  w.resize(n);
+  V[0].resize(n);
   auto preconditioned = [&](const std::vector<double>& v, std::vector<double>& out) {
     if (precondition) precondition(v, out);
     else out = v;
@@ -51,6 +75,7 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, const s
         for (std::size_t j = 0; j < n; ++j) w[j] -= H[i][k] * V[i][j];
       }
       H[k + 1][k] = std::sqrt(dot(w, w));
+      V[k + 1].resize(n);
       if (H[k + 1][k] > 0.0)
         for (std::size_t j = 0; j < n; ++j) V[k + 1][j] = w[j] / H[k + 1][k];
       for (int i = 0; i < k; ++i) {  // previous rotations

@@ -165,6 +165,7 @@ class SteadyRollingNewton {
   std::vector<Vec> m_hat_;
   Vec t_, s_, ds_, zhat_, ratio_;
   std::vector<unsigned char> state_;
+  GmresWorkspace gmres_work_;  // the Newton iterations' Krylov basis, allocated once per solve
   int applies_ = 0;
 };
 
@@ -256,7 +257,7 @@ SteadyRollingOutcome SteadyRollingNewton::solve() {
     // reach the tolerance in this step.
     const double eta = std::clamp(std::max(out.residual, 0.1 * tol / out.residual), 1e-12, 0.1);
     gmres([this](const Vec& v, Vec& y) { jacobian(v, y); }, [this](const Vec& v, Vec& y) { precondition(v, y); },
-          rhs, d, eta, 30, 1000);
+          rhs, d, eta, 30, 1000, gmres_work_);
     const double reference = *std::max_element(merits.end() - std::min<std::ptrdiff_t>(kMemory, merits.size()),
                                                merits.end());
     double lambda = 1.0, phi_trial = 0.0;
