@@ -63,6 +63,14 @@ void expect_full_sensitivity_matches_central_differences(TangentialProblem& prob
   const Eigen::Matrix3d G =
       sensitivity.compute_full(problem.tangential_compliance(), coupling, FrictionLaw::coulomb(mu), problem.grid(), base);
   const Eigen::Matrix3d G0 = sensitivity.compute(problem.tangential_compliance(), problem.grid(), base);
+  // compute_full starts each mode's GMRES from the last call's solution: called again on the same
+  // step it starts at the answer (one operator apply per mode, the initial residual) and gives
+  // the same Jacobian to GMRES's tolerance (1e-6).
+  const long iterations_before = sensitivity.iterations();
+  const Eigen::Matrix3d G_again =
+      sensitivity.compute_full(problem.tangential_compliance(), coupling, FrictionLaw::coulomb(mu), problem.grid(), base);
+  EXPECT_LE(sensitivity.iterations() - iterations_before, 3) << "a warm start at the answer";
+  EXPECT_LE((G_again - G).cwiseAbs().maxCoeff(), 1e-5 * G.cwiseAbs().maxCoeff());
   // Newton's Jacobian: the same step (from the same memory) with its increment changed by +-h.
   const double h = 1e-4 * std::hypot(a[0], a[1]);
   for (int l = 0; l < 2; ++l) {
@@ -76,6 +84,12 @@ void expect_full_sensitivity_matches_central_differences(TangentialProblem& prob
     const double fd = (more.resultants[l] - less.resultants[l]) / (2.0 * h);
     EXPECT_NEAR(G(l, l) / fd, 1.0, 1e-3) << "mode " << l << ": coupled " << G(l, l) << ", uncoupled " << G0(l, l)
                                          << ", finite difference " << fd;
+    // Started from another step's sensitivity (the neighbouring increment's): the same bound.
+    TangentialSensitivity warm;
+    (void)warm.compute_full(problem.tangential_compliance(), coupling, FrictionLaw::coulomb(mu), problem.grid(), more);
+    const Eigen::Matrix3d G_warm =
+        warm.compute_full(problem.tangential_compliance(), coupling, FrictionLaw::coulomb(mu), problem.grid(), base);
+    EXPECT_NEAR(G_warm(l, l) / fd, 1.0, 1e-3) << "mode " << l << " from a warm start";
   }
 }
 

@@ -54,6 +54,24 @@ TEST(Gmres, SolvesANonSymmetricSystemAcrossRestarts) {
     for (int i = 0; i < n; ++i) err = std::max(err, std::abs(x[i] - exact[i]));
     EXPECT_LT(err, 1e-10 * exact.cwiseAbs().maxCoeff()) << "preconditioned " << preconditioned;
   }
+  // A workspace kept over solves of different sizes (GmresWorkspace: the basis sized as used):
+  // the leading 30 x 30 block, then the whole system again, each to the same accuracy.
+  GmresWorkspace work;
+  for (int size : {n, 30, n}) {
+    const Eigen::MatrixXd As = A.topLeftCorner(size, size);
+    const std::vector<double> bs(b.begin(), b.begin() + size);
+    const Eigen::VectorXd exact_s = As.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(bs.data(), size));
+    auto apply_s = [&](const std::vector<double>& in, std::vector<double>& out) {
+      out.resize(size);
+      Eigen::Map<Eigen::VectorXd>(out.data(), size) = As * Eigen::Map<const Eigen::VectorXd>(in.data(), size);
+    };
+    x.assign(size, 0.0);
+    const GmresResult r = gmres(apply_s, {}, bs, x, 1e-12, 8, 400, work);
+    EXPECT_TRUE(r.converged) << "size " << size << ": " << r.relative_residual;
+    double err = 0.0;
+    for (int i = 0; i < size; ++i) err = std::max(err, std::abs(x[i] - exact_s[i]));
+    EXPECT_LT(err, 1e-10 * exact_s.cwiseAbs().maxCoeff()) << "size " << size << " with a kept workspace";
+  }
 }
 
 /// Largest difference of two traction fields relative to the largest bound.
