@@ -75,6 +75,7 @@ NormalSpec ContactWrench::normal_load(const StepKinematics& k, double vertical_l
 
 void ContactWrench::no_contact() {
   state_ = ContactState{};
+  has_kept_sensitivity_ = false;
   if (tangential_) tangential_->reset();
 }
 
@@ -95,7 +96,9 @@ void ContactWrench::orient(const StepKinematics& k) {
 }
 
 Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
-  if (tangential_) tangential_->restore(committed_);
+  // The step's history as accepted; the solve starts from the last trial's traction (Newton's
+  // trials of one step lie within its correction of each other).
+  if (tangential_) tangential_->restore_history(committed_);
   orient(k);
   last_ = k;
   const NormalSpec load = normal_load(k, vertical_load);
@@ -134,6 +137,7 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
             finite_ ? std::array<double, 2>{0.0, 0.0} : std::array<double, 2>{V.x() * dt_, V.y() * dt_};
         solution_ = tangential_->convected_step(load, increment, travel, solver);
       }
+      alternations_ += std::max(1, solution_.outer.iterations);
     };
     solve(solver_);
     if (solution_.report.status == SolveStatus::not_converged && solver_.tol > 1e-14) {
@@ -160,6 +164,7 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
     state_.n_stick = solution_.n_stick;
     state_.n_slip = solution_.n_slip;
   } else {
+    ++alternations_;
     normal_solution_ = normal_->solve(load, solver_);
     pressure = &normal_solution_.pressure;
     state_.certificate = normal_solution_.report.certificate.worst();
@@ -202,7 +207,7 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
   return state_.wrench;
 }
 
-WrenchJacobian ContactWrench::jacobian() {
+WrenchJacobian ContactWrench::jacobian(bool fresh) {
   WrenchJacobian J;
   if (!state_.in_contact) return J;
   const double h = lever_;
@@ -261,7 +266,13 @@ WrenchJacobian ContactWrench::jacobian() {
     coupling.force_control = spec_.normal_model == NormalModel::quasi_static;
   }
   Eigen::Matrix3d G;
-  if (!steady)
+  // A kept sensitivity for the transient model only: the steady model's (one CG solve per mode
+  // on the stick set) costs less than the chord iterations a gross-sliding creep law needs.
+  const bool reuse = !fresh && !steady && has_kept_sensitivity_;
+  if (reuse) {
+    G = kept_sensitivity_;
+    J.kept = true;
+  } else if (!steady)
     G = sensitivity_.compute_full(tangential_->tangential_compliance(), coupling, *law_, case_.grid, solution_);
   else if (coupling.B21)
     G = case_.grid.dx *
@@ -269,6 +280,11 @@ WrenchJacobian ContactWrench::jacobian() {
   else
     G = sensitivity_.compute_steady(tangential_->convective_compliance(), tangential_->tangential_compliance(),
                                     case_.grid, solution_);
+  if (!reuse) {
+    ++sensitivities_;
+    kept_sensitivity_ = G;
+    has_kept_sensitivity_ = !steady;
+  }
   Eigen::Matrix<double, 6, 3> dq;  // the wrench rows per unit q_l
   for (int l = 0; l < 3; ++l) {
     dq(0, l) = G(0, l);
@@ -312,6 +328,7 @@ void ContactWrench::accept(const StepKinematics& k, double vertical_load) {
 }
 
 void ContactWrench::reject() {
+  has_kept_sensitivity_ = false;
   if (tangential_) tangential_->restore(committed_);
 }
 

@@ -54,7 +54,9 @@ class ContactWrench {
   /// force at t_{K+1} (the quasi-static normal model balances it).
   Wrench evaluate(const StepKinematics& k, double vertical_load);
   /// The sensitivity of the last evaluation (stick/slip set fixed), for Newton's Jacobian.
-  WrenchJacobian jacobian();
+  /// `fresh` false: the transient model's tangential sensitivity (the costly part: one GMRES
+  /// solve per rigid mode) may be the one kept from an earlier evaluation (WrenchJacobian::kept).
+  WrenchJacobian jacobian(bool fresh = true);
   /// The step is accepted at `k`: the memory becomes the state at its end (re-solved if the
   /// last evaluation was elsewhere).
   void accept(const StepKinematics& k, double vertical_load);
@@ -70,6 +72,11 @@ class ContactWrench {
   /// (the travel within 5.7 degrees of x); other steps are transient.
   static bool travel_along_x(const Eigen::Vector3d& velocity);
   int solves() const { return solves_; }
+  /// The (p, tau) alternations (4.26)-(4.27) of these solves (one per solve when kappa = 0 or
+  /// without friction).
+  int alternations() const { return alternations_; }
+  /// Tangential sensitivities computed (the kept ones not counted).
+  int sensitivities() const { return sensitivities_; }
   /// The finite-element body (null without an fe_body).
   const FiniteBody* finite_body() const { return finite_.get(); }
 
@@ -105,6 +112,11 @@ class ContactWrench {
   int steps_in_contact_ = 0;       // accepted steps in contact
   int transient_steps_ = 0;        // of these, solved by the transient model although steady_
   int solves_ = 0;
+  int alternations_ = 0;
+  int sensitivities_ = 0;
+  // The last tangential sensitivity computed, d(F_x, F_y, M_z)/d(rigid modes) (transient model).
+  Eigen::Matrix3d kept_sensitivity_ = Eigen::Matrix3d::Zero();
+  bool has_kept_sensitivity_ = false;
 };
 
 }  // namespace dc::dynamics

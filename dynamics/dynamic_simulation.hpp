@@ -26,7 +26,10 @@ struct DynamicSample {
   double external_work = 0.0;  ///< of the applied loads since t = 0 (J)
   double contact_work = 0.0;   ///< of the contact wrench since t = 0 (J)
   int newton_iterations = 0;   ///< of this step
+  int chord_steps = 0;         ///< of this step: Newton updates with the last sensitivity kept
   int contact_solves = 0;      ///< of this step (retries included)
+  int alternations = 0;        ///< their (p, tau) alternations (4.26)-(4.27)
+  int sensitivities = 0;       ///< tangential sensitivities computed for Newton's Jacobian (kept ones not counted)
   int step = 0;                ///< 1-based
   const FiniteBody* finite_body = nullptr;  ///< an fe_body (its displacement() at this step); null without
 };
@@ -39,6 +42,9 @@ struct DynamicResult {
                                  ///< upright-only profile tilting): the run stopped there
   int steps = 0, rejected_steps = 0;  ///< accepted steps; step halvings after a failed step
   int newton_iterations = 0, contact_solves = 0;
+  int alternations = 0;          ///< (p, tau) alternations of the contact solves (one per solve at kappa = 0)
+  int sensitivities = 0;         ///< tangential sensitivities computed (chord steps reuse the last)
+  int chord_steps = 0;           ///< Newton updates with a kept sensitivity
   std::string contact_model;     ///< transient | steady (auto resolved)
   std::map<std::string, int> backends;  ///< accepted steps in contact per backend that solved them
   int fallback_steps = 0;        ///< accepted steps whose contact solve fell back to another backend

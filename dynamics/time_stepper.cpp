@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "errors.hpp"
@@ -79,11 +80,11 @@ class StepResidual final : public System6 {
   /// q = exp(theta_hist + beta Omega) q_K turns by beta dOmega (the exponential's differential
   /// taken as the identity: O(theta) relative). The orientation's share of d(I_world Omega)
   /// (O(beta Omega) relative) is left out.
-  bool jacobian(const Vector6d& x, Matrix6d& J) const override {
-    if (!wrench_jacobian_ || !*wrench_jacobian_) return false;
+  JacobianSource jacobian(const Vector6d& x, Matrix6d& J, bool fresh) const override {
+    if (!wrench_jacobian_ || !*wrench_jacobian_) return JacobianSource::unavailable;
     const StepKinematics k = kinematics(x);
-    const WrenchJacobian d = (*wrench_jacobian_)(k);
-    if (!d.valid) return false;
+    const WrenchJacobian d = (*wrench_jacobian_)(k, fresh);
+    if (!d.valid) return JacobianSource::unavailable;
     const Eigen::Matrix<double, 6, 3> dV = beta_ * d.position + d.velocity;  // d(F, M)/dV
     const Eigen::Matrix<double, 6, 3> dW = (d.omega + beta_ * d.orientation) / rho_;  // d(F, M)/d(rho Omega)
     const double beta_m = beta_ / body_.mass();
@@ -92,7 +93,8 @@ class StepResidual final : public System6 {
     J.block<3, 3>(3, 0) = -beta_ * scale_inverse_inertia_ * dV.bottomRows<3>();
     J.block<3, 3>(3, 3) =
         scale_inverse_inertia_ * (body_.inertia_world(k.orientation) / rho_ - beta_ * dW.bottomRows<3>());
-    return J.allFinite();
+    if (!J.allFinite()) return JacobianSource::unavailable;
+    return d.kept ? JacobianSource::kept : JacobianSource::computed;
   }
 
  private:
@@ -120,6 +122,25 @@ bool RigidBodyStepper::continues_history(const RigidBodyState& state) const {
   return has_history_ && same_state(state, last_);
 }
 
+bool RigidBodyStepper::predict(double dt, Vector6d& x) const {
+  // x = (V, Omega) at t_K + dt extrapolated by the polynomial through the accepted states:
+  // quadratic through t_{K-2}, t_{K-1}, t_K when there are three, else linear.
+  const double t = last_.time + dt;
+  if (has_older_) {
+    const double t0 = older_.time, t1 = previous_.time, t2 = last_.time;
+    const double l0 = (t - t1) * (t - t2) / ((t0 - t1) * (t0 - t2));
+    const double l1 = (t - t0) * (t - t2) / ((t1 - t0) * (t1 - t2));
+    const double l2 = (t - t0) * (t - t1) / ((t2 - t0) * (t2 - t1));
+    x.head<3>() = l0 * older_.velocity + l1 * previous_.velocity + l2 * last_.velocity;
+    x.tail<3>() = l0 * older_.omega + l1 * previous_.omega + l2 * last_.omega;
+  } else {
+    const double w = dt / (last_.time - previous_.time);
+    x.head<3>() = last_.velocity + w * (last_.velocity - previous_.velocity);
+    x.tail<3>() = last_.omega + w * (last_.omega - previous_.omega);
+  }
+  return x.allFinite();
+}
+
 StepReport RigidBodyStepper::step(RigidBodyState& state, double dt, const WrenchFunction& wrench) {
   return step(state, dt, wrench, WrenchJacobianFunction());
 }
@@ -136,17 +157,48 @@ StepReport RigidBodyStepper::step(RigidBodyState& state, double dt, const Wrench
   const Bdf c = multistep ? bdf2(dt / (last_.time - previous_.time)) : Bdf{1.0, 0.0, 1.0};
   const StepResidual system(body_, wrench, &jacobian, state, multistep ? &previous_ : nullptr, c, dt);
 
-  Vector6d x;  // initial guess: the start-of-step velocities
+  Vector6d x;
   x << state.velocity, system.rho() * state.omega;
+  const Vector6d start = x;
   const double scale = std::max(state.velocity.norm(), system.rho() * state.omega.norm());
-  const NewtonResult newton = solve_newton6(system, x, scale, options_.newton);
+  // Newton's start: the velocities extrapolated through the accepted states when the last
+  // step's answer was too far from its start-of-step velocities to accept them as they were,
+  // and nearer the extrapolation (a motion with a trend: a body accelerating); else the
+  // start-of-step velocities (a steady motion, whose ripple extrapolation would amplify).
+  Vector6d guess = x;
+  const bool have_guess = options_.predicted_start_share > 0.0 && continues_history(state) && predict(dt, guess);
+  if (have_guess) guess.tail<3>() *= system.rho();
+  // The start-of-step velocities as long as they would have been accepted as they were.
+  const double hold_accepted = options_.newton.inexact_share * (options_.newton.rel_tol * scale + options_.newton.abs_tol);
+  const bool extrapolated = have_guess && hold_miss_ > hold_accepted && extrapolation_miss_ < hold_miss_;
+  NewtonOptions newton_options = options_.newton;
+  if (extrapolated) {
+    x = guess;
+    newton_options.inexact_share = std::min(newton_options.inexact_share, options_.predicted_start_share);
+  }
+  NewtonResult newton = solve_newton6(system, x, scale, newton_options);
+  if (extrapolated && newton.status != NewtonStatus::converged) {
+    // The extrapolation missed (a contact event within the step): Newton from the start again.
+    const NewtonResult missed = newton;
+    x = start;
+    newton = solve_newton6(system, x, scale, options_.newton);
+    newton.evaluations += missed.evaluations;
+    newton.iterations += missed.iterations;
+    newton.chord_steps += missed.chord_steps;
+  }
   report.status = newton.status;
   report.iterations = newton.iterations;
+  report.chord_steps = newton.chord_steps;
   report.residual = newton.residual;
   report.wrench_evaluations = newton.evaluations;
   if (!report.converged()) return report;
 
   const StepKinematics k = system.kinematics(x);
+  const double never = std::numeric_limits<double>::infinity();
+  extrapolation_miss_ = have_guess ? (x - guess).norm() : never;
+  hold_miss_ = have_guess ? (x - start).norm() : never;
+  has_older_ = continues_history(state);
+  older_ = previous_;
   previous_ = state;
   state.position = k.position;
   state.orientation = k.orientation;

@@ -5,6 +5,8 @@
 //   dR/dt = V,     dq/dt: q_{K+1} = exp(theta) q_K on the unit-quaternion manifold,
 // with F, M a callback of the END-of-step kinematics. Each step solves for the six unknowns
 // (V_{K+1}, Omega_{K+1}) by Newton (newton6.hpp); see docs/dynamics.md.
+#include <limits>
+
 #include "newton6.hpp"
 #include "rigid_body.hpp"
 #include "wrench.hpp"
@@ -25,12 +27,20 @@ struct StepperOptions {
   /// Tolerance on the step's residual in velocity units: |(dV, rho dOmega)| with rho the
   /// gyration radius, relative to max(|V|, rho |Omega|, first correction).
   NewtonOptions newton;
+  /// Newton starts from (V, Omega) extrapolated through the last accepted states (quadratic
+  /// from the third step of a history, linear on the second) when that extrapolation came nearer
+  /// the last step's answer than the start-of-step velocities did, else from the start-of-step
+  /// velocities; the extrapolated start is accepted without an update when its residual is within
+  /// this share of the tolerance (NewtonOptions::inexact_share), and Newton starts again from the
+  /// start-of-step velocities if it fails from there. 0: never extrapolated.
+  double predicted_start_share = 0.1;
 };
 
 struct StepReport {
   NewtonStatus status = NewtonStatus::max_iterations;
   Scheme scheme_used = Scheme::bdf1;  ///< bdf1 on the start step of bdf2
-  int iterations = 0;                 ///< Newton updates in this step
+  int iterations = 0;                 ///< Newton updates in this step (Jacobian at the iterate)
+  int chord_steps = 0;                ///< updates with a kept Jacobian (NewtonOptions::chord_contraction)
   double residual = 0.0;              ///< final |residual| (m/s)
   int wrench_evaluations = 0;         ///< calls of the callback in this step
   bool converged() const { return status == NewtonStatus::converged; }
@@ -50,19 +60,27 @@ class RigidBodyStepper {
                                 const WrenchJacobianFunction& jacobian);
 
   /// Forgets the history (the next bdf2 step is a bdf1 start step).
-  void reset() { has_history_ = false; }
+  void reset() { has_history_ = has_older_ = false; }
 
   const RigidBody& body() const { return body_; }
   const StepperOptions& options() const { return options_; }
 
  private:
   bool continues_history(const RigidBodyState& state) const;
+  /// Newton's start (V, Omega) at t_K + dt, extrapolated from the accepted states (false: not finite).
+  bool predict(double dt, Vector6d& x) const;
 
   RigidBody body_;
   StepperOptions options_;
   bool has_history_ = false;
   RigidBodyState previous_;  ///< state at t_{K-1}
   RigidBodyState last_;      ///< state at t_K as this stepper returned it
+  RigidBodyState older_;     ///< state at t_{K-2} (has_older_)
+  bool has_older_ = false;
+  /// How far the last step's answer lay from the extrapolated start and from the start-of-step
+  /// velocities (|dx|, m/s; infinite when there was no extrapolation).
+  double extrapolation_miss_ = std::numeric_limits<double>::infinity();
+  double hold_miss_ = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace dc::dynamics

@@ -37,9 +37,13 @@ struct WrenchJacobian {
   Eigen::Matrix<double, 6, 3> omega = Eigen::Matrix<double, 6, 3>::Zero();
   Eigen::Matrix<double, 6, 3> orientation = Eigen::Matrix<double, 6, 3>::Zero();
   bool valid = true;  ///< false: not available (Newton falls back to finite differences)
+  /// Its costly part kept from an earlier evaluation (asked with fresh = false): a chord Jacobian,
+  /// whose step Newton checks (NewtonOptions::chord_contraction).
+  bool kept = false;
 };
 
 /// Called right after the WrenchFunction at the same kinematics (it may reuse that evaluation).
-using WrenchJacobianFunction = std::function<WrenchJacobian(const StepKinematics&)>;
+/// `fresh`: the sensitivity at these kinematics; else one kept from an earlier evaluation may do.
+using WrenchJacobianFunction = std::function<WrenchJacobian(const StepKinematics&, bool fresh)>;
 
 }  // namespace dc::dynamics

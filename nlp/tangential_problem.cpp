@@ -252,6 +252,14 @@ void TangentialProblem::restore(const TangentialMemory& m) {
   s.predictor.clear();
 }
 
+void TangentialProblem::restore_history(const TangentialMemory& m) {
+  Impl& s = *impl_;
+  s.tau_prev = m.tau;
+  s.p_prev = m.pressure;
+  s.amplitude_prev = m.amplitudes;
+  s.predictor.clear();
+}
+
 void TangentialProblem::set_heights(const std::vector<double>& heights) {
   impl_->heights.assign(heights.begin(), heights.end());  // reuses the buffer: no allocation per step
   impl_->predictor.clear();                                // another profile: no load history to continue

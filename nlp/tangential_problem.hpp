@@ -169,6 +169,9 @@ class TangentialProblem {
                                     const std::array<double, 2>& travel, const SolverOptions& solver);
   TangentialMemory memory() const;
   void restore(const TangentialMemory& memory);
+  /// The same for the loading history alone: the next solve still starts from the traction of
+  /// the last one (another trial of the same step starts near it, not at the last step's).
+  void restore_history(const TangentialMemory& memory);
   /// The body's gap profile on the grid (a moving body changes it between steps).
   void set_heights(const std::vector<double>& heights);  // copied into the problem's own buffer
   /// B22, the tangential compliance (sensitivities of a solution with its active set fixed).

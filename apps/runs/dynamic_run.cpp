@@ -88,7 +88,10 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
                        {"fallback_steps", r.fallback_steps},
                        {"status", r.completed ? "converged" : "stopped"},
                        {"newton_iterations", r.newton_iterations},
+                       {"chord_steps", r.chord_steps},
                        {"contact_solves", r.contact_solves},
+                       {"outer_iterations", r.alternations},
+                       {"sensitivities", r.sensitivities},
                        {"time_s", out.elapsed},
                        {"certificate", {{"worst", r.worst_certificate}, {"last", r.last_certificate}}}};
   summary["balances"] = {{"momentum", r.momentum_imbalance}, {"energy", r.energy_imbalance}};
