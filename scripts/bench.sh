@@ -4,10 +4,18 @@
 #   scripts/bench.sh            normal: 32..512 (ipopt up to 128^2, nlopt up to 64^2);
 #                               shift: 32..256; rolling: 32..256 (native and auto)
 #   scripts/bench.sh --quick    32,64 for each
-#   scripts/bench.sh dynamic    1000 steps of problem "dynamic": a sphere rolling on a 32^2 grid
+#   scripts/bench.sh dynamic [--steps 1000] [--check]
+#                               problem "dynamic", one thread: a sphere rolling on a 32^2 grid
 #                               along x and diagonally (transient contact: the memory convected
-#                               along x, and along x and y) and the 2-D cylinder on 200 strips (steady):
-#                               ms per step, contact solves and Newton iterations per step
+#                               along x, and along x and y, kappa != 0), the same sphere on equal
+#                               materials (kappa = 0), the sphere on a 64^2 grid and the 2-D
+#                               cylinder on 200 strips (steady):
+#                               ms, contact solves, (p, tau) alternations and Newton iterations
+#                               per step, against the figures recorded in docs/dynamic-bench.tsv
+#                               (the rows of the same case and step count). --check: exit 1 when
+#                               solves or alternations per step exceed the recorded ones by more
+#                               than 0.02 (the counts are the machine's; the times are not, and
+#                               only fail beyond 1.5 x with --check-time)
 #   scripts/bench.sh peer [--repeat 3] [case.json...]
 #                               the cases of examples/bench/ (Hertz 512^2 and 1024^2, the wheel/rail
 #                               table at 23k/93k/372k elements, Spence 35 and 69 steps, the gap bank:
@@ -37,6 +45,7 @@ rolling_sizes="32,64,128,256"
 backends="native,ipopt,nlopt"
 args=()
 mode=static
+dyn_steps=1000 dyn_check=""
 if [[ "${1:-}" == "peer" ]]; then
   shift
   scripts/setup.sh
@@ -80,6 +89,9 @@ fi
 while [[ $# -gt 0 ]]; do
   case "$1" in
     dynamic) mode=dynamic ;;
+    --steps) dyn_steps="${2:?--steps needs a number}"; shift ;;
+    --check) dyn_check=counts ;;
+    --check-time) dyn_check=time ;;
     --quick) sizes="32,64"; shift_sizes="32,64"; rolling_sizes="32,64" ;;
     --sizes) sizes="${2:?--sizes needs a value}"; shift ;;
     --sizes=*) sizes="${1#--sizes=}" ;;
@@ -90,32 +102,62 @@ while [[ $# -gt 0 ]]; do
   shift
 done
 
-scripts/setup.sh
 if [[ $mode == dynamic ]]; then
+  DYNCONTACT_BUILD_TARGET=dyncontact DYNCONTACT_SKIP_PYTHON_INSTALL=1 scripts/setup.sh
   out="$(mktemp -d)"
   trap 'rm -rf "$out"' EXIT
-  run_dynamic() {  # label, example, overrides...
-    local label="$1" example="$2"
-    shift 2
-    local sets=()
+  recorded=docs/dynamic-bench.tsv
+  failed=0
+  run_dynamic() {  # label, example, dt, overrides...
+    local label="$1" example="$2" dt="$3"
+    shift 3
+    local sets=(--set "time.dt=$dt" --set "time.t_end=$(awk -v n="$dyn_steps" -v dt="$dt" 'BEGIN { printf "%.12g", n * dt }')")
     for s in "$@"; do sets+=(--set "$s"); done
-    "$BUILD_DIR/bin/dyncontact" solve "examples/$example.json" --out "$out/$example" -q --set output.plots=false "${sets[@]}"
-    awk -v label="$label" -F'[:,]' '
-      /"steps"/ && !steps { steps = $2 + 0 }
-      /"time_s"/ { time = $2 + 0 }
-      /"contact_solves"/ { solves = $2 + 0 }
-      /"newton_iterations"/ { newton = $2 + 0 }
-      END { printf "%-44s %5d steps  %7.2f ms/step  %5.2f contact solves/step  %5.2f Newton iterations/step  (%.2f s)\n",
-                   label, steps, 1000 * time / steps, solves / steps, newton / steps, time }' "$out/$example/summary.json"
+    DYNCONTACT_THREADS=1 "$BUILD_DIR/bin/dyncontact" solve "examples/$example.json" --out "$out/$example" -q \
+      --set output.plots=false "${sets[@]}" >/dev/null || { echo "bench: $label did not complete" >&2; failed=1; return; }
+    # name, steps, ms/step, solves/step, alternations/step, Newton/step from summary.json
+    local row
+    row="$(/usr/bin/env python3 - "$out/$example/summary.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1])); s = d["solver"]; n = d["steps"]
+print(n, 1000 * s["time_s"] / n, s["contact_solves"] / n, s.get("outer_iterations", 0) / n,
+      (s["newton_iterations"] + s.get("chord_steps", 0)) / n,
+      s.get("sensitivities", 0) / n)
+PY
+)"
+    read -r steps ms solves outer newton sens <<<"$row"
+    printf "%-44s %5d steps %7.2f ms/step %5.2f solves/step %5.2f alternations/step %5.2f Newton updates/step %5.2f sensitivities/step\n" \
+      "$label" "$steps" "$ms" "$solves" "$outer" "$newton" "$sens"
+    [[ -f $recorded ]] || return 0
+    local ref
+    ref="$(awk -F'\t' -v c="$label" -v n="$steps" '$1 == c && $2 == n { print $3, $4, $5 }' "$recorded")"
+    if [[ -z $ref ]]; then echo "    (no figures recorded for $steps steps in $recorded)"; return 0; fi
+    read -r ref_ms ref_solves ref_outer <<<"$ref"
+    local verdict
+    if ! verdict="$(awk -v ms="$ms" -v s="$solves" -v o="$outer" -v rms="$ref_ms" -v rs="$ref_solves" -v ro="$ref_outer" -v check="$dyn_check" 'BEGIN {
+      bad = 0
+      if (s > rs + 0.02) { printf "    MORE SOLVES: %.2f per step, recorded %.2f\n", s, rs; bad = 1 }
+      if (o > ro + 0.02) { printf "    MORE ALTERNATIONS: %.2f per step, recorded %.2f\n", o, ro; bad = 1 }
+      if (ms > 1.5 * rms) { printf "    SLOWER: %.2f ms per step, recorded %.2f (x %.2f)\n", ms, rms, ms / rms; if (check == "time") bad = 1 }
+      else printf "    recorded: %.2f ms/step (x %.2f), %.2f solves/step, %.2f alternations/step\n", rms, ms / rms, rs, ro
+      exit bad }')"; then
+      [[ -z $dyn_check ]] || failed=1
+    fi
+    echo "$verdict"
   }
-  echo "== dynamic (1000 steps each)"
-  run_dynamic "sphere rolling, 32^2, transient" bowling-ball grid.nx=32 grid.ny=32 contact_model=transient \
-    time.dt=1e-4 time.t_end=0.1 'body.initial.omega=[0,27.5229,0]'
-  run_dynamic "sphere rolling diagonally, 32^2, transient" bowling-ball grid.nx=32 grid.ny=32 contact_model=transient \
-    time.dt=1e-4 time.t_end=0.1 'body.initial.velocity=[2.12132,2.12132,0]' 'body.initial.omega=[-19.4617,19.4617,0]'
-  run_dynamic "2-D cylinder, 200 strips, steady" cylinder-dynamic-2d grid.nx=200 time.dt=0.005 time.t_end=5
-  exit 0
+  echo "== dynamic ($dyn_steps steps each, one thread; recorded figures: $recorded)"
+  run_dynamic "sphere rolling, 32^2, transient" bowling-ball 1e-4 grid.nx=32 grid.ny=32 contact_model=transient \
+    'body.initial.omega=[0,27.5229,0]'
+  run_dynamic "sphere rolling diagonally, 32^2, transient" bowling-ball 1e-4 grid.nx=32 grid.ny=32 \
+    contact_model=transient 'body.initial.velocity=[2.12132,2.12132,0]' 'body.initial.omega=[-19.4617,19.4617,0]'
+  run_dynamic "sphere rolling, 32^2, transient, kappa = 0" bowling-ball 1e-4 grid.nx=32 grid.ny=32 \
+    contact_model=transient 'body.initial.omega=[0,27.5229,0]' materials.base.E=2.0e9 materials.base.nu=0.4
+  run_dynamic "sphere rolling, 64^2, transient" bowling-ball 1e-4 grid.nx=64 grid.ny=64 contact_model=transient \
+    'body.initial.omega=[0,27.5229,0]'
+  run_dynamic "2-D cylinder, 200 strips, steady" cylinder-dynamic-2d 0.005 grid.nx=200
+  exit "$failed"
 fi
+scripts/setup.sh
 [[ -x "$BUILD_DIR/bin/dyncontact_bench" ]] || {
   echo "bench: $BUILD_DIR/bin/dyncontact_bench missing (configured with -DDYNCONTACT_BUILD_BENCH=OFF?)" >&2
   exit 1

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Builds and runs the tests.
 #   scripts/test.sh              the quick suites (ctest label "unit"), Release build in build/
-#   scripts/test.sh --all        also the slow validations (label "slow"), at most 900 s per test
+#   scripts/test.sh --all        also the slow validations (label "slow"), at most 900 s per test,
+#                                and the dynamic step's work against docs/dynamic-bench.tsv
+#                                (scripts/bench.sh dynamic --steps 200 --check: fails when contact
+#                                solves or alternations per step rise above the recorded ones)
 #   scripts/test.sh --sanitize   only the unit suites built with AddressSanitizer and
 #                                UndefinedBehaviorSanitizer (build-sanitize/; any report fails)
 #   scripts/test.sh --fuzz S     only the fuzz targets for S seconds in total (scripts/fuzz.sh)
@@ -35,6 +38,7 @@ if [[ $release -eq 1 ]]; then
   if [[ $all -eq 1 ]]; then
     echo "== slow tests"
     ctest --test-dir "$BUILD_DIR" --output-on-failure -j2 -L slow --timeout 900 "${args[@]}" || status=$?
+    scripts/bench.sh dynamic --steps 200 --check || status=$?
   fi
 fi
 
