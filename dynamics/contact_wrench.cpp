@@ -64,7 +64,10 @@ bool ContactWrench::travel_along_x(const Eigen::Vector3d& V) {
   return V.x() > 0.0 && std::abs(V.y()) <= 0.1 * V.x();
 }
 
-void ContactWrench::begin_step(double dt) { dt_ = dt; }
+void ContactWrench::begin_step(double dt) {
+  dt_ = dt;
+  trials_in_step_ = 0;
+}
 
 NormalSpec ContactWrench::normal_load(const StepKinematics& k, double vertical_load) const {
   if (spec_.normal_model == NormalModel::quasi_static) return {Control::force, std::max(0.0, -vertical_load)};
@@ -98,7 +101,11 @@ void ContactWrench::orient(const StepKinematics& k) {
 Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
   // The step's history as accepted; the solve starts from the last trial's traction (Newton's
   // trials of one step lie within its correction of each other).
-  if (tangential_) tangential_->restore_history(committed_);
+  if (tangential_) {
+    tangential_->restore_history(committed_);
+    tangential_->set_near_start(trials_in_step_ > 0);
+  }
+  ++trials_in_step_;
   orient(k);
   last_ = k;
   const NormalSpec load = normal_load(k, vertical_load);

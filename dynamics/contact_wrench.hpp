@@ -113,6 +113,7 @@ class ContactWrench {
   int transient_steps_ = 0;        // of these, solved by the transient model although steady_
   int solves_ = 0;
   int alternations_ = 0;
+  int trials_in_step_ = 0;         // evaluations since begin_step (the later ones start near)
   int sensitivities_ = 0;
   // The last tangential sensitivity computed, d(F_x, F_y, M_z)/d(rigid modes) (transient model).
   Eigen::Matrix3d kept_sensitivity_ = Eigen::Matrix3d::Zero();

@@ -60,7 +60,10 @@ bool TangentialProblem::Impl::outer_loop(TangentialSolution& sol, const NormalSp
   const double coupling_tol = 0.01 * solver.certificate_tol;
   AndersonMixing mixer;
   SolverOptions pass = solver;
-  if (coupled && inexact) pass = loose_pass(solver, 1e-3);
+  // A start from a solve at nearby data (set_near_start) is within a loose pass's tolerance:
+  // such a pass would return it unchanged, so the first pass is exact.
+  if (coupled && inexact && !near_start) pass = loose_pass(solver, 1e-3);
+  near_start = false;
   double last_gap = 0.0;
   if (coupled) B32->apply(tau, shift_in);
   for (int m = 1; m <= max_outer; ++m) {

@@ -260,6 +260,8 @@ void TangentialProblem::restore_history(const TangentialMemory& m) {
   s.predictor.clear();
 }
 
+void TangentialProblem::set_near_start(bool near) { impl_->near_start = near; }
+
 void TangentialProblem::set_heights(const std::vector<double>& heights) {
   impl_->heights.assign(heights.begin(), heights.end());  // reuses the buffer: no allocation per step
   impl_->predictor.clear();                                // another profile: no load history to continue

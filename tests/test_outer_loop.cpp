@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -198,6 +199,36 @@ TEST(OuterLoop, AndersonSolvesALinearFixedPointInFewSteps) {
   }
   EXPECT_LE(steps, 10);
   EXPECT_LE(residual, 1e-9);
+}
+
+TEST(OuterLoop, ATrialNearTheLastOneStartsWithAnExactPass) {
+  // A dynamic step's Newton trials solve the same step at data a correction apart, each from the
+  // last trial's traction (restore_history). Such a start is already within a loose pass's
+  // tolerance: with set_near_start the first pass is exact, one pass fewer than the loose start
+  // takes, and the answer is the same to the solver's tolerance.
+  const Indentation in(0.0, 0.3);
+  TangentialProblem problem = in.problem();
+  const NormalSpec load{Control::force, 0.5 * Indentation::P_max};
+  const SolverOptions solver = test::native_tangential_solver();
+  const double shift = 1e-7;  // partial slip: a fraction of the full-sliding shift
+  const TangentialMemory before = problem.memory();
+  expect_certified(problem.convected_step(load, {shift, 0.3 * shift, 0.0}, {0.0, 0.0}, solver));
+  const std::array<double, 3> corrected = {shift * (1.0 + 1e-6), 0.3 * shift, 0.0};
+  problem.restore_history(before);
+  const TangentialSolution loose = problem.convected_step(load, corrected, {0.0, 0.0}, solver);
+  problem.restore_history(before);
+  problem.set_near_start(true);
+  const TangentialSolution exact = problem.convected_step(load, corrected, {0.0, 0.0}, solver);
+  expect_certified(loose);
+  expect_certified(exact);
+  EXPECT_LT(exact.outer.iterations, loose.outer.iterations);
+  EXPECT_LE(exact.outer.iterations, 2);
+  double worst = 0.0, scale = 0.0;
+  for (std::size_t e = 0; e < exact.tx.size(); ++e) {
+    worst = std::max({worst, std::abs(exact.tx[e] - loose.tx[e]), std::abs(exact.ty[e] - loose.ty[e])});
+    scale = std::max(scale, std::abs(loose.tx[e]));
+  }
+  EXPECT_LE(worst, 1e-6 * scale);
 }
 
 }  // namespace
