@@ -244,12 +244,8 @@ TangentialMemory TangentialProblem::memory() const {
 }
 
 void TangentialProblem::restore(const TangentialMemory& m) {
-  Impl& s = *impl_;
-  s.tau_prev = m.tau;
-  s.p_prev = m.pressure;
-  s.tau_warm = m.warm_start;
-  s.amplitude_prev = m.amplitudes;
-  s.predictor.clear();
+  restore_history(m);
+  impl_->tau_warm = m.warm_start;
 }
 
 void TangentialProblem::restore_history(const TangentialMemory& m) {
