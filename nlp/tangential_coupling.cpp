@@ -47,6 +47,10 @@ NormalSolution TangentialProblem::Impl::solve_normal(std::vector<double> h, cons
 /// large, both problems are solved only to a tenth of it (at most 1e-3, at least solver.tol):
 /// the next pass changes their data by about that residual anyway. The loop stops only after
 /// a pass at solver.tol, so the answer and its certificate are those of exact solves.
+/// The mixing's history holds exact passes only: a loose pass's pair is not a point of G (a
+/// warm start within its tolerance comes back unchanged, a residual of 0 that Anderson would
+/// steer back to), so the history starts again at the first exact pass. A stall (p and tau
+/// unchanged while the residual is above coupling_tol) ends the loop only after a plain step.
 bool TangentialProblem::Impl::outer_loop(TangentialSolution& sol, const NormalSpec& normal_load,
                                          const SolverOptions& solver, std::vector<double>& tau, std::vector<double>& f,
                                          bool inexact, const InnerSolve& inner) {
@@ -65,6 +69,9 @@ bool TangentialProblem::Impl::outer_loop(TangentialSolution& sol, const NormalSp
   if (coupled && inexact && !near_start) pass = loose_pass(solver, 1e-3);
   near_start = false;
   double last_gap = 0.0;
+  int pairs = 0;           // passes in the mixing's history
+  bool mixed = false;      // shift_in came from the mixing of two or more passes
+  bool was_exact = false;  // the previous pass was exact
   if (coupled) B32->apply(tau, shift_in);
   for (int m = 1; m <= max_outer; ++m) {
     std::vector<double> h = heights;  // (4.26)
@@ -96,7 +103,8 @@ bool TangentialProblem::Impl::outer_loop(TangentialSolution& sol, const NormalSp
     gap_error /= c0 * (p_max > 0.0 ? p_max : 1.0);
     sol.outer.coupling_residual = gap_error;
     if (m == 1) sol.outer.first_residual = gap_error;
-    if (!stall && exact_pass && (gap_error <= coupling_tol || (m > 1 && change < outer_tol))) {
+    const bool stalled = m > 1 && change < outer_tol;
+    if (!stall && exact_pass && (gap_error <= coupling_tol || (stalled && !mixed))) {
       certify_with_final_traction(sol, shift_out, normal_load);
       break;
     }
@@ -105,6 +113,12 @@ bool TangentialProblem::Impl::outer_loop(TangentialSolution& sol, const NormalSp
       sol.outer.last_change = change;
       break;
     }
+    if (exact_pass && (!was_exact || stalled)) {
+      mixer.reset();
+      pairs = 0;
+    }
+    was_exact = exact_pass;
+    mixed = ++pairs > 1;
     shift_in = mixer.next(shift_in, shift_out);
     // The next pass is exact once it is expected to end the loop (the residual contracts by
     // the last pass's factor), and so is the last pass allowed: an unsettled loop reports

@@ -231,5 +231,39 @@ TEST(OuterLoop, ATrialNearTheLastOneStartsWithAnExactPass) {
   EXPECT_LE(worst, 1e-6 * scale);
 }
 
+TEST(OuterLoop, ALoosePassThatReturnsItsStartDoesNotEndTheLoop) {
+  // A solve from a start within the loose pass's tolerance (the last step's answer, data 1e-4
+  // apart): the loose pass returns the start unchanged, its coupling residual 0. That pair is
+  // not a point of the fixed-point map; were it kept in the mixing's history, Anderson would
+  // steer the next pass back to it, p and tau would not change, and the loop would stop on that
+  // stall with the exact pass's coupling residual above its tolerance (an uncertified answer).
+  // The loop must end certified with its residual below a hundredth of certificate_tol, at the
+  // answer of a solve that starts exact.
+  const Indentation in(0.0, 0.3);
+  const NormalSpec load{Control::force, 0.5 * Indentation::P_max};
+  const SolverOptions solver = test::native_tangential_solver();
+  const double shift = 1e-7;
+  for (const double correction : {1e-4, 3e-4}) {
+    SCOPED_TRACE("data changed by " + std::to_string(correction));
+    TangentialProblem problem = in.problem();
+    const TangentialMemory before = problem.memory();
+    expect_certified(problem.convected_step(load, {shift, 0.3 * shift, 0.0}, {0.0, 0.0}, solver));
+    const std::array<double, 3> corrected = {shift * (1.0 + correction), 0.3 * shift, 0.0};
+    problem.restore_history(before);
+    const TangentialSolution loose = problem.convected_step(load, corrected, {0.0, 0.0}, solver);
+    expect_certified(loose);
+    EXPECT_LE(loose.outer.coupling_residual, 0.01 * solver.certificate_tol);
+    problem.restore_history(before);
+    problem.set_near_start(true);
+    const TangentialSolution exact = problem.convected_step(load, corrected, {0.0, 0.0}, solver);
+    double worst = 0.0, scale = 0.0;
+    for (std::size_t e = 0; e < exact.tx.size(); ++e) {
+      worst = std::max({worst, std::abs(exact.tx[e] - loose.tx[e]), std::abs(exact.ty[e] - loose.ty[e])});
+      scale = std::max(scale, std::abs(exact.tx[e]));
+    }
+    EXPECT_LE(worst, 1e-6 * scale);
+  }
+}
+
 }  // namespace
 }  // namespace dc
