@@ -100,10 +100,11 @@ void ContactWrench::orient(const StepKinematics& k) {
 
 Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
   // The step's history as accepted; the solve starts from the last trial's traction (Newton's
-  // trials of one step lie within its correction of each other).
+  // trials of one step lie within its correction of each other), or from the last accepted
+  // step's when that one was in contact (its data differ by one step's motion).
   if (tangential_) {
     tangential_->restore_history(committed_);
-    tangential_->set_near_start(trials_in_step_ > 0);
+    tangential_->set_near_start(trials_in_step_ > 0 || accepted_in_contact_);
   }
   ++trials_in_step_;
   orient(k);
@@ -328,6 +329,7 @@ void ContactWrench::accept(const StepKinematics& k, double vertical_load) {
     finite_->accept(touching && tangential_ ? solution_.tx : none, touching && tangential_ ? solution_.ty : none,
                     touching ? *state_.pressure : none);
   }
+  accepted_in_contact_ = state_.in_contact;
   if (state_.in_contact) {
     ++steps_in_contact_;
     if (steady_ && off_axis_) ++transient_steps_;

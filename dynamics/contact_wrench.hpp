@@ -110,6 +110,7 @@ class ContactWrench {
   bool off_axis_ = false;          // the last evaluation's travel was not along +x
   bool model_resolved_ = false;
   int steps_in_contact_ = 0;       // accepted steps in contact
+  bool accepted_in_contact_ = false;  // the last accepted step was in contact (its answer starts the next)
   int transient_steps_ = 0;        // of these, solved by the transient model although steady_
   int solves_ = 0;
   int alternations_ = 0;

@@ -172,9 +172,10 @@ class TangentialProblem {
   /// The same for the loading history alone: the next solve still starts from the traction of
   /// the last one (another trial of the same step starts near it, not at the last step's).
   void restore_history(const TangentialMemory& memory);
-  /// The next solve's warm start is the answer of a solve of the same step at nearby data
-  /// (another Newton trial): its alternation (4.26)-(4.27) starts with an exact pass instead of
-  /// a loose one (a loose pass would return the start unchanged). Holds for one solve.
+  /// The next solve's warm start is the answer of a solve at nearby data (another Newton trial
+  /// of the step, or the last accepted time step): its alternation (4.26)-(4.27) starts with an
+  /// exact pass instead of a loose one (a loose pass would return the start unchanged). Holds
+  /// for one solve.
   void set_near_start(bool near);
   /// The body's gap profile on the grid (a moving body changes it between steps).
   void set_heights(const std::vector<double>& heights);  // copied into the problem's own buffer
