@@ -15,10 +15,6 @@
 namespace dc::dynamics {
 namespace {
 
-struct Rolling {
-  double v0, mu, g, t_roll, final_speed;
-};
-
 void expect_sliding_then_rolling(nlohmann::json doc, double speed_tol, double onset_tol, const char* model) {
   const Case c = build_case(doc);
   const DynamicSpec& s = *c.dynamic;
