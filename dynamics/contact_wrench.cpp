@@ -136,6 +136,9 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
         RollingLoad rolling;
         rolling.normal = load;
         rolling.velocity = V.x();
+        // Newton on the steady equations starts from the last solve's traction (the last trial
+        // of this step, or the last accepted step's): nearby data, as a table's neighbour.
+        if (solution_.tx.size() == g.size()) rolling.warm_start = rolling_warm_start(solution_, g.dimension);
         for (int m = 0; m < 3; ++m) rolling.modes[m].value = increment[m] / (V.x() * dt_);
         solution_ = tangential_->steady_rolling(rolling, solver);
       } else {

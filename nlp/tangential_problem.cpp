@@ -290,4 +290,10 @@ const LinearOperator* TangentialProblem::convective_from_normal() {
   return s.D21_conv.get();
 }
 
+std::vector<double> rolling_warm_start(const TangentialSolution& solution, int dimension) {
+  std::vector<double> t = solution.tx;
+  if (dimension == 3) t.insert(t.end(), solution.ty.begin(), solution.ty.end());
+  return t;
+}
+
 }  // namespace dc

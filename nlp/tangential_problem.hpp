@@ -63,6 +63,11 @@ struct TangentialSolution {
   bool shift_undetermined = false;   ///< no friction (mu = 0): the resultant-controlled rigid modes have no unique value
 };
 
+/// A solution's traction in RollingLoad::warm_start's layout (tau_x of every element, then tau_y
+/// in 3-D): the start of a steady-rolling solve at nearby data (a neighbouring table point, the
+/// next dynamic step).
+std::vector<double> rolling_warm_start(const TangentialSolution& solution, int dimension);
+
 /// The loading history of a TangentialProblem (the state its next step starts from): saved
 /// before a trial step and restored when the step is not accepted (dynamic steps).
 struct TangentialMemory {

@@ -11,13 +11,6 @@
 namespace dc::table {
 namespace {
 
-/// The traction of a solution as a warm start (RollingLoad::warm_start: tau_x, then tau_y in 3-D).
-std::vector<double> traction_of(const TangentialSolution& s, int dimension) {
-  std::vector<double> t = s.tx;
-  if (dimension == 3) t.insert(t.end(), s.ty.begin(), s.ty.end());
-  return t;
-}
-
 nlohmann::json row_json(const TangentialSolution& s, double area) {
   double capacity = 0.0;  // sum f(p) A: mu P for Coulomb friction
   for (double f : s.bound) capacity += f * area;
@@ -83,7 +76,7 @@ nlohmann::json solve_table_line(const Case& c, const TableAxes& axes, std::size_
       rows.push_back(row_json(s, c.grid.area()));
       // The next point starts from this one's traction when it is a proven steady state.
       if (rows.back()["status"] == "converged") {
-        load.warm_start = traction_of(s, c.dimension);
+        load.warm_start = rolling_warm_start(s, c.dimension);
         continue;
       }
     } catch (const std::exception& e) {
