@@ -178,5 +178,28 @@ TEST(StepStartChord, RollingSphereStepsReuseTheSensitivity) {
   EXPECT_LE(r.worst_certificate, c.solver.certificate_tol);
 }
 
+// The steady model's solve (Newton on the steady equations, steady_rolling_solver) starts from
+// the last solve's traction, as a creep-force table's neighbouring point does: the 2-D
+// Section 5 cylinder, whose creepage grows slowly with the driving moment, then takes a
+// Newton iteration or two per solve where a cold start takes about six.
+TEST(StepStartSteady, SteadySolvesStartFromTheLastTraction) {
+  nlohmann::json doc = dc::test::example_json("cylinder-dynamic-2d");
+  doc["time"]["dt"] = 0.005;
+  doc["time"]["t_end"] = 0.5;
+  doc["grid"]["nx"] = 200;
+  const Case c = build_case(doc);
+  DynamicSimulation sim(c);
+  int newton = 0, steps = 0;
+  const DynamicResult r = sim.run([&](const DynamicSample& s) {
+    ASSERT_NE(s.contact_state.fields, nullptr);
+    newton += s.contact_state.fields->newton_iterations;  // of the step's last solve
+    ++steps;
+  });
+  ASSERT_TRUE(r.completed) << r.status;
+  EXPECT_EQ(r.contact_model, "steady");
+  EXPECT_LE(r.worst_certificate, c.solver.certificate_tol);
+  EXPECT_LE(newton, 2 * steps);  // 1.4 per step; 7.5 from a cold start
+}
+
 }  // namespace
 }  // namespace dc::dynamics
