@@ -75,7 +75,7 @@ struct TangentialProblem::Impl {
   std::unique_ptr<TangentialPreconditioner> Ct_preconditioner;  // grid_preconditioner()
   bool native_first = false;                 // auto while marching: native first at any size
   bool native_first_always = false;          // auto: native first for every solve (set_native_first)
-  bool near_start = false;                   // the next solve starts at a trial of the same step (set_near_start)
+  bool near_start = false;                   // the next solve starts near its answer (set_near_start)
   std::optional<SparseTangentialForm> sparse;  // a finite body's sparse saddle form (use_sparse_form)
   int exact_hessian_limit = 0;                 // set_exact_hessian_limit (0: SolveOptions' own)
   NativeTangentialWorkspace native_work;       // the native solver's vectors, kept between solves
