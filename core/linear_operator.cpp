@@ -94,9 +94,10 @@ struct KernelSpectrum {
     for (std::size_t k = 0; k < ncplx; ++k) values[k] = spectrum[2 * k + part] * norm;
   }
 
-  /// out (=, or += when accumulate) kernel * in, both interleaved re/im; out may be in.
+  /// out (=, or += when accumulate) weight * kernel * in, both interleaved re/im; out may be in.
+  /// (weight * kernel is the kernel itself, bit for bit, at weight 1.)
   template <bool accumulate>
-  void multiply(const double* in, double* out, std::size_t ncplx) const {
+  void multiply(const double* in, double* out, std::size_t ncplx, double weight = 1.0) const {
     const double* kv = values.data();
     const auto store = [out](std::size_t k, double re, double im) {
       if constexpr (accumulate) {
@@ -111,25 +112,48 @@ struct KernelSpectrum {
     switch (kind) {
       case Kind::complex:
         for (std::size_t k = 0; k < ncplx; ++k) {
-          const double re = in[2 * k], im = in[2 * k + 1];
-          store(k, kv[2 * k] * re - kv[2 * k + 1] * im, kv[2 * k] * im + kv[2 * k + 1] * re);
+          const double re = in[2 * k], im = in[2 * k + 1], kr = weight * kv[2 * k], ki = weight * kv[2 * k + 1];
+          store(k, kr * re - ki * im, kr * im + ki * re);
         }
         break;
       case Kind::real:
         for (std::size_t k = 0; k < ncplx; ++k) {
-          const double re = in[2 * k], im = in[2 * k + 1];
-          store(k, kv[k] * re, kv[k] * im);
+          const double re = in[2 * k], im = in[2 * k + 1], kr = weight * kv[k];
+          store(k, kr * re, kr * im);
         }
         break;
       case Kind::imaginary:
         for (std::size_t k = 0; k < ncplx; ++k) {
-          const double re = in[2 * k], im = in[2 * k + 1];
-          store(k, -kv[k] * im, kv[k] * re);
+          const double re = in[2 * k], im = in[2 * k + 1], ki = weight * kv[k];
+          store(k, -ki * im, ki * re);
         }
         break;
     }
   }
 };
+
+/// The zero-padded transform's length for n elements along an axis (linear convolution).
+int box_length(int n) { return n == 1 ? 1 : fft_fast_size(2 * n - 1); }
+
+/// The spectra of kernel tables on the transform's box (1/(mx my) included).
+std::vector<KernelSpectrum> kernel_spectra(const Grid& grid, const PaddedFft& fft, const std::vector<KernelTable>& blocks) {
+  const int mx = fft.mx(), my = fft.my();
+  const auto wrap = [](int d, int m) { return static_cast<std::size_t>(d < 0 ? d + m : d); };
+  const double norm = 1.0 / (static_cast<double>(mx) * my);
+  std::vector<KernelSpectrum> spectra;
+  spectra.reserve(blocks.size());
+  std::vector<double> box(static_cast<std::size_t>(mx) * my), spectrum;
+  for (const KernelTable& t : blocks) {
+    throw_if_interrupted();  // a large grid's spectra take seconds
+    std::fill(box.begin(), box.end(), 0.0);
+    for (int dj = -(grid.ny - 1); dj <= grid.ny - 1; ++dj)
+      for (int di = -(grid.nx - 1); di <= grid.nx - 1; ++di)
+        box[wrap(di, mx) + static_cast<std::size_t>(mx) * wrap(dj, my)] = t.at(di, dj);
+    fft.periodic_forward(box, spectrum);
+    spectra.emplace_back(spectrum, norm);
+  }
+  return spectra;
+}
 
 /// Zero-padded (linear, not circular) convolution by FFTW: the kernel spectra and plans are
 /// made once; every apply() does n_in forward and n_out inverse transforms (padded_fft.hpp).
@@ -139,23 +163,8 @@ class FftConvolution final : public ConvolutionBase {
  public:
   FftConvolution(const Grid& grid, std::vector<KernelTable> blocks, int n_out, int n_in)
       : ConvolutionBase(grid, std::move(blocks), n_out, n_in),
-        fft_(grid_.nx, grid_.ny, grid_.nx == 1 ? 1 : fft_fast_size(2 * grid_.nx - 1),
-             grid_.ny == 1 ? 1 : fft_fast_size(2 * grid_.ny - 1), keep_spectra() ? n_in : 0) {
-    const int mx = fft_.mx(), my = fft_.my();
-    const double norm = 1.0 / (static_cast<double>(mx) * my);
-    kernel_spectra_.reserve(blocks_.size());
-    std::vector<double> box(static_cast<std::size_t>(mx) * my), spectrum;
-    for (std::size_t b = 0; b < blocks_.size(); ++b) {
-      throw_if_interrupted();  // a large grid's spectra take seconds
-      std::fill(box.begin(), box.end(), 0.0);
-      const KernelTable& t = blocks_[b];
-      for (int dj = -(grid_.ny - 1); dj <= grid_.ny - 1; ++dj)
-        for (int di = -(grid_.nx - 1); di <= grid_.nx - 1; ++di)
-          box[wrap(di, mx) + static_cast<std::size_t>(mx) * wrap(dj, my)] = t.at(di, dj);
-      fft_.periodic_forward(box, spectrum);
-      kernel_spectra_.emplace_back(spectrum, norm);
-    }
-  }
+        fft_(grid_.nx, grid_.ny, box_length(grid_.nx), box_length(grid_.ny), keep_spectra() ? n_in : 0),
+        kernel_spectra_(kernel_spectra(grid_, fft_, blocks_)) {}
 
   void apply(const double* x, double* y) const override {
     const std::size_t N = grid_.size();
@@ -178,7 +187,6 @@ class FftConvolution final : public ConvolutionBase {
   std::string kind() const override { return "fft"; }
 
  private:
-  static std::size_t wrap(int d, int m) { return static_cast<std::size_t>(d < 0 ? d + m : d); }
   /// A single block multiplies in place; several keep the input spectra.
   bool keep_spectra() const { return n_in_ > 1 || n_out_ > 1; }
 
@@ -186,21 +194,142 @@ class FftConvolution final : public ConvolutionBase {
   std::vector<KernelSpectrum> kernel_spectra_;  ///< one per block, r * n_in + c
 };
 
+/// Checks the terms of a weighted sum: at least one, each of n_out * n_in blocks.
+void check_terms(const std::vector<std::vector<KernelTable>>& terms, int n_out, int n_in) {
+  if (terms.empty()) throw std::invalid_argument("weighted convolutions: no term");
+  for (const auto& t : terms)
+    if (static_cast<int>(t.size()) != n_out * n_in)
+      throw std::invalid_argument("weighted convolutions: every term must have n_out * n_in blocks");
+}
+
+/// The shared part of both kinds: the weights and the shape.
+class WeightedConvolutionsBase : public WeightedConvolutions {
+ public:
+  WeightedConvolutionsBase(const Grid& grid, std::size_t terms, int n_out, int n_in)
+      : grid_(grid), weights_(terms, 0.0), n_out_(n_out), n_in_(n_in) {
+    weights_[0] = 1.0;
+  }
+  std::size_t rows() const override { return grid_.size() * n_out_; }
+  std::size_t cols() const override { return grid_.size() * n_in_; }
+  double diagonal(std::size_t) const override { throw std::logic_error("diagonal of a weighted sum of convolutions"); }
+  void set_weights(const std::vector<double>& weights) override {
+    if (weights.size() != weights_.size()) throw std::invalid_argument("weighted convolutions: one weight per term");
+    weights_ = weights;
+  }
+
+ protected:
+  Grid grid_;
+  std::vector<double> weights_;
+  int n_out_, n_in_;
+};
+
+/// Small grids: the terms' matrices, summed with the weights at each apply.
+class DenseWeightedConvolutions final : public WeightedConvolutionsBase {
+ public:
+  DenseWeightedConvolutions(const Grid& grid, std::vector<std::vector<KernelTable>> terms, int n_out, int n_in)
+      : WeightedConvolutionsBase(grid, terms.size(), n_out, n_in) {
+    for (auto& t : terms) matrices_.push_back(DenseConvolution(grid, std::move(t), n_out, n_in).to_dense(kDenseAutoLimit * 16));
+  }
+  void apply(const double* x, double* y) const override {
+    Eigen::Map<Eigen::VectorXd> out(y, rows());
+    const Eigen::Map<const Eigen::VectorXd> in(x, cols());
+    out.setZero();
+    for (std::size_t t = 0; t < matrices_.size(); ++t)
+      if (weights_[t] != 0.0) out.noalias() += weights_[t] * (matrices_[t] * in);
+  }
+  Eigen::MatrixXd to_dense(std::size_t) const override {
+    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(rows(), cols());
+    for (std::size_t t = 0; t < matrices_.size(); ++t) m += weights_[t] * matrices_[t];
+    return m;
+  }
+  std::string kind() const override { return "dense"; }
+
+ private:
+  std::vector<Eigen::MatrixXd> matrices_;
+};
+
+/// The FFT kind: the inputs transformed once, each output's spectrum the weighted sum of the
+/// terms' products, transformed back once: n_in forward and n_out inverse transforms per apply
+/// whatever the number of terms.
+class FftWeightedConvolutions final : public WeightedConvolutionsBase {
+ public:
+  FftWeightedConvolutions(const Grid& grid, const std::vector<std::vector<KernelTable>>& terms, int n_out, int n_in)
+      : WeightedConvolutionsBase(grid, terms.size(), n_out, n_in),
+        fft_(grid.nx, grid.ny, box_length(grid.nx), box_length(grid.ny), n_in) {
+    for (const auto& t : terms) spectra_.push_back(kernel_spectra(grid_, fft_, t));
+  }
+  void apply(const double* x, double* y) const override {
+    const std::size_t N = grid_.size(), ncplx = fft_.spectrum_size();
+    double* spectrum = fft_.spectrum();
+    for (int c = 0; c < n_in_; ++c) fft_.forward_into(x + c * N, c);
+    for (int r = 0; r < n_out_; ++r) {
+      bool first = true;
+      for (std::size_t t = 0; t < spectra_.size(); ++t) {
+        if (weights_[t] == 0.0) continue;
+        const KernelSpectrum* row = spectra_[t].data() + static_cast<std::size_t>(r) * n_in_;
+        for (int c = 0; c < n_in_; ++c) {
+          if (first) row[c].multiply<false>(fft_.stored(c), spectrum, ncplx, weights_[t]);
+          else row[c].multiply<true>(fft_.stored(c), spectrum, ncplx, weights_[t]);
+          first = false;
+        }
+      }
+      if (first) std::fill(spectrum, spectrum + 2 * ncplx, 0.0);
+      fft_.inverse(y + r * N);
+    }
+  }
+  Eigen::MatrixXd to_dense(std::size_t max_entries) const override {
+    return dense_by_columns(*this, max_entries, "weighted convolutions");
+  }
+  std::string kind() const override { return "fft"; }
+
+ private:
+  mutable PaddedFft fft_;
+  std::vector<std::vector<KernelSpectrum>> spectra_;  ///< per term, one per block, r * n_in + c
+};
+
 }  // namespace
+
+namespace {
+/// `automatic` resolved by the matrix's size (dense up to kDenseAutoLimit entries); a dense kind
+/// refused beyond 16 times that.
+OperatorKind resolved_kind(const Grid& grid, int n_out, int n_in, OperatorKind kind) {
+  const std::size_t entries = grid.size() * n_out * grid.size() * n_in;
+  if (kind == OperatorKind::automatic) kind = entries <= kDenseAutoLimit ? OperatorKind::dense : OperatorKind::fft;
+  if (kind == OperatorKind::dense && entries > 16 * kDenseAutoLimit)
+    throw std::length_error("dense operator refused: " + std::to_string(grid.size()) +
+                            " elements would need an N x N matrix; use the FFT kind");
+  return kind;
+}
+}  // namespace
+
+Eigen::MatrixXd dense_by_columns(const LinearOperator& op, std::size_t max_entries, const std::string& what) {
+  if (op.rows() * op.cols() > max_entries) throw std::length_error(what + ": too large to be dense");
+  Eigen::MatrixXd m(op.rows(), op.cols());
+  std::vector<double> e(op.cols(), 0.0), column(op.rows());
+  for (std::size_t j = 0; j < op.cols(); ++j) {
+    e[j] = 1.0;
+    op.apply(e.data(), column.data());
+    e[j] = 0.0;
+    m.col(static_cast<Eigen::Index>(j)) = Eigen::Map<const Eigen::VectorXd>(column.data(), static_cast<Eigen::Index>(op.rows()));
+  }
+  return m;
+}
 
 std::unique_ptr<LinearOperator> make_convolution_operator(const Grid& grid,
                                                           std::vector<KernelTable> blocks,
                                                           int n_out, int n_in, OperatorKind kind) {
-  const std::size_t entries = grid.size() * n_out * grid.size() * n_in;
-  if (kind == OperatorKind::automatic)
-    kind = entries <= kDenseAutoLimit ? OperatorKind::dense : OperatorKind::fft;
-  if (kind == OperatorKind::dense) {
-    if (entries > 16 * kDenseAutoLimit)
-      throw std::length_error("dense operator refused: " + std::to_string(grid.size()) +
-                              " elements would need an N x N matrix; use the FFT kind");
+  if (resolved_kind(grid, n_out, n_in, kind) == OperatorKind::dense)
     return std::make_unique<DenseConvolution>(grid, std::move(blocks), n_out, n_in);
-  }
   return std::make_unique<FftConvolution>(grid, std::move(blocks), n_out, n_in);
+}
+
+std::unique_ptr<WeightedConvolutions> make_weighted_convolutions(const Grid& grid,
+                                                                std::vector<std::vector<KernelTable>> terms,
+                                                                int n_out, int n_in, OperatorKind kind) {
+  check_terms(terms, n_out, n_in);
+  if (resolved_kind(grid, n_out, n_in, kind) == OperatorKind::dense)
+    return std::make_unique<DenseWeightedConvolutions>(grid, std::move(terms), n_out, n_in);
+  return std::make_unique<FftWeightedConvolutions>(grid, terms, n_out, n_in);
 }
 
 HalfSpace::HalfSpace(const Grid& grid, const MaterialPair& materials, InfluenceOptions options)
@@ -293,6 +422,22 @@ std::unique_ptr<LinearOperator> HalfSpace::tangential_from_normal_shifted(int sh
   std::vector<KernelTable> blocks{shifted_table(grid_, materials_, kX, kZ, shift_x, shift_y, options_)};
   if (grid_.dimension == 3) blocks.push_back(shifted_table(grid_, materials_, kY, kZ, shift_x, shift_y, options_));
   return make_convolution_operator(grid_, std::move(blocks), tangential_components(), 1, kind);
+}
+
+std::unique_ptr<WeightedConvolutions> HalfSpace::displacement_shifted(const std::vector<std::pair<int, int>>& shifts,
+                                                                     bool with_pressure, OperatorKind kind) const {
+  const std::vector<Axis> outputs = grid_.dimension == 2 ? std::vector<Axis>{kX} : std::vector<Axis>{kX, kY};
+  std::vector<Axis> inputs = outputs;
+  if (with_pressure) inputs.push_back(kZ);
+  std::vector<std::vector<KernelTable>> terms;
+  for (const auto& [sx, sy] : shifts) {
+    std::vector<KernelTable> blocks;
+    for (Axis out : outputs)
+      for (Axis in : inputs) blocks.push_back(shifted_table(grid_, materials_, out, in, sx, sy, options_));
+    terms.push_back(std::move(blocks));
+  }
+  return make_weighted_convolutions(grid_, std::move(terms), static_cast<int>(outputs.size()),
+                                    static_cast<int>(inputs.size()), kind);
 }
 
 std::unique_ptr<LinearOperator> HalfSpace::normal_from_tangential(OperatorKind kind) const {

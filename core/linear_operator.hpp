@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -33,6 +34,10 @@ class LinearOperator {
   }
 };
 
+/// The matrix of `op` column by column (one apply per column); throws std::length_error naming
+/// `what` when rows()*cols() exceeds `max_entries`. For operators without a matrix of their own.
+Eigen::MatrixXd dense_by_columns(const LinearOperator& op, std::size_t max_entries, const std::string& what);
+
 /// Largest rows*cols for which `automatic` picks a dense matrix.
 inline constexpr std::size_t kDenseAutoLimit = 1024u * 1024u;
 
@@ -41,6 +46,21 @@ inline constexpr std::size_t kDenseAutoLimit = 1024u * 1024u;
 std::unique_ptr<LinearOperator> make_convolution_operator(const Grid& grid,
                                                           std::vector<KernelTable> blocks,
                                                           int n_out, int n_in, OperatorKind kind);
+
+/// A weighted sum w_0 A_0 + w_1 A_1 + ... of block convolutions of one grid and one block shape
+/// (n_out x n_in), applied in one pass: on the FFT kind n_in forward and n_out inverse transforms
+/// whatever the number of terms (the weights scale the kernels' spectra). Weights: set_weights
+/// before an apply (initially the first term alone); a term of weight 0 costs nothing.
+class WeightedConvolutions : public LinearOperator {
+ public:
+  /// One weight per term, in the terms' order.
+  virtual void set_weights(const std::vector<double>& weights) = 0;
+};
+
+/// terms[t][r * n_in + c]: block (r, c) of term t (as make_convolution_operator's blocks).
+std::unique_ptr<WeightedConvolutions> make_weighted_convolutions(const Grid& grid,
+                                                                std::vector<std::vector<KernelTable>> terms,
+                                                                int n_out, int n_in, OperatorKind kind);
 
 /// The half-space compliances of one grid and material pair (tables computed once).
 /// normal(): w_z <- p (N x N); tangential(): (w_x, w_y) <- (tau_x, tau_y) (2N x 2N, 2-D: N x N);
@@ -70,6 +90,14 @@ class HalfSpace {
   /// The same for the kappa B21 term: tangential_from_normal() - tangential_from_normal_shifted(shift, 0).
   std::unique_ptr<LinearOperator> tangential_from_normal_convective(int shift,
                                                                     OperatorKind kind = OperatorKind::automatic) const;
+  /// The relative tangential displacement kappa B21 p + B22 tau (4.2) at whole-element shifts
+  /// (each as tangential_shifted and tangential_from_normal_shifted), one term per shift:
+  /// input (tau_x, tau_y, p) stacked, or (tau_x, tau_y) without `with_pressure` (kappa = 0);
+  /// output (w_x, w_y) (2-D: tau_x, w_x). Weights between neighbouring shifts interpolate the
+  /// convected memory of (3.8) in one apply.
+  std::unique_ptr<WeightedConvolutions> displacement_shifted(const std::vector<std::pair<int, int>>& shifts,
+                                                             bool with_pressure,
+                                                             OperatorKind kind = OperatorKind::automatic) const;
   int tangential_components() const { return grid_.dimension == 2 ? 1 : 2; }
 
  private:

@@ -96,16 +96,7 @@ void TangentialPreconditioner::apply(const double* x, double* y) const {
 double TangentialPreconditioner::diagonal(std::size_t i) const { return diagonal_[i / n_]; }
 
 Eigen::MatrixXd TangentialPreconditioner::to_dense(std::size_t max_entries) const {
-  if (rows() * cols() > max_entries) throw std::length_error("tangential preconditioner: too large to be dense");
-  Eigen::MatrixXd M(rows(), cols());
-  std::vector<double> e(cols(), 0.0), column(rows());
-  for (std::size_t j = 0; j < cols(); ++j) {
-    e[j] = 1.0;
-    apply(e.data(), column.data());
-    e[j] = 0.0;
-    for (std::size_t i = 0; i < rows(); ++i) M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = column[i];
-  }
-  return M;
+  return dense_by_columns(*this, max_entries, "tangential preconditioner");
 }
 
 }  // namespace dc

@@ -51,41 +51,29 @@ void TangentialProblem::Impl::displacement(const std::vector<double>& p, const s
   }
 }
 
-/// u at the shift s (elements) along one axis: linear interpolation between the neighbouring
-/// whole-element shifts, at_whole(k, out) filling out at the shift k; `work` holds the second.
-template <class AtWhole>
-void TangentialProblem::Impl::interpolate(double s, std::vector<double>& u, std::vector<double>& work,
-                                          AtWhole&& at_whole) {
-  const int k = static_cast<int>(std::floor(s));
-  const double theta = s - k;
-  at_whole(k, u);
-  if (theta <= 0.0) return;
-  at_whole(k + 1, work);
-  for (std::size_t i = 0; i < u.size(); ++i) u[i] = (1.0 - theta) * u[i] + theta * work[i];
-}
-
 /// The previous relative displacement taken (shift_x, shift_y) elements downstream (the
 /// material now at (x, y) was at (x + shift_x dx, y + shift_y dy) at the start of the step,
 /// (3.8)): bilinear interpolation between the four neighbouring whole-element shifts, each exact
-/// also beyond the grid edge. shift_y = 0 is the linear interpolation along x alone (the same
-/// arithmetic, bit for bit, as before y was convected).
+/// also beyond the grid edge, in one apply of their weighted sum (the weights scale the shifted
+/// kernels' spectra: three forward and two inverse transforms for any travel).
 void TangentialProblem::Impl::convected_displacement(double shift_x, double shift_y, std::vector<double>& u) {
-  interpolate(shift_y, u, convected_row_work, [&](int ky, std::vector<double>& row) {
-    interpolate(shift_x, row, convected_x_work, [&](int kx, std::vector<double>& out) {
-      shifted_displacement(kx, ky, out);
-    });
-  });
-}
-
-/// The previous relative displacement at the whole-element shift (kx, ky).
-void TangentialProblem::Impl::shifted_displacement(int kx, int ky, std::vector<double>& out) {
-  if (kx == 0 && ky == 0) return displacement(p_prev, tau_prev, out, *Ct, B21.get());
-  ShiftedCompliance& ops = shifted[{kx, ky}];
-  if (!ops.ct) {
-    ops.ct = half_space->tangential_shifted(kx, ky, kind);
-    if (coupled) ops.b21 = half_space->tangential_from_normal_shifted(kx, ky, kind);
+  const int kx = static_cast<int>(std::floor(shift_x)), ky = static_cast<int>(std::floor(shift_y));
+  const double tx = shift_x - kx, ty = shift_y - ky;
+  if (kx == 0 && ky == 0 && tx <= 0.0 && ty <= 0.0) return displacement(p_prev, tau_prev, u, *Ct, B21.get());
+  const bool lateral = ty > 0.0;
+  std::unique_ptr<WeightedConvolutions>& op = convected[{kx, ky, lateral}];
+  if (!op) {
+    std::vector<std::pair<int, int>> shifts{{kx, ky}, {kx + 1, ky}};
+    if (lateral) shifts.insert(shifts.end(), {{kx, ky + 1}, {kx + 1, ky + 1}});
+    op = half_space->displacement_shifted(shifts, coupled, kind);
   }
-  displacement(p_prev, tau_prev, out, *ops.ct, ops.b21.get());
+  if (lateral)
+    op->set_weights({(1.0 - tx) * (1.0 - ty), tx * (1.0 - ty), (1.0 - tx) * ty, tx * ty});
+  else
+    op->set_weights({1.0 - tx, tx});
+  convected_input = tau_prev;
+  if (coupled) convected_input.insert(convected_input.end(), p_prev.begin(), p_prev.end());
+  op->apply(convected_input, u);
 }
 
 /// The whole grid's tangential preconditioner (built on first use); none for given operators

@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -52,13 +53,11 @@ struct TangentialProblem::Impl {
   std::unique_ptr<LinearOperator> Ct_up, B21_up;  // rolling: upstream displacement
   std::unique_ptr<LinearOperator> D_conv;          // steady rolling: Ct - Ct_up
   std::unique_ptr<LinearOperator> D21_conv;        // its kappa term B21 - B21_up (sensitivities)
-  // convected steps: Ct and kappa B21 shifted by whole elements (kx, ky), built once per shift
-  // pair and kept (a step interpolates between at most four of them)
-  struct ShiftedCompliance {
-    std::unique_ptr<LinearOperator> ct, b21;
-  };
-  std::map<std::pair<int, int>, ShiftedCompliance> shifted;
-  std::vector<double> convected_row_work, convected_x_work;  // convected_displacement's buffers
+  // convected steps: kappa B21 p + B22 tau at the whole-element shifts around a step's travel,
+  // (kx, ky) and (kx + 1, ky) (and (kx, ky + 1), (kx + 1, ky + 1) with a lateral travel), as one
+  // weighted operator per (kx, ky, lateral), built once and kept
+  std::map<std::tuple<int, int, bool>, std::unique_ptr<WeightedConvolutions>> convected;
+  std::vector<double> convected_input;                       // (tau_prev, p_prev) stacked
   mutable std::vector<double> displacement_work;             // displacement()'s kappa B21 p
   std::vector<double> final_heights_work;                    // certify_with_final_traction()'s gap
   std::unique_ptr<NormalProblem> normal;
@@ -108,11 +107,6 @@ struct TangentialProblem::Impl {
                     const LinearOperator& ct, const LinearOperator* b21) const;
   /// The previous relative displacement convected by (shift_x, shift_y) elements (3.8).
   void convected_displacement(double shift_x, double shift_y, std::vector<double>& u);
-  /// Linear interpolation along one axis between whole-element shifts.
-  template <class AtWhole>
-  static void interpolate(double s, std::vector<double>& u, std::vector<double>& work, AtWhole&& at_whole);
-  /// The previous relative displacement at the whole-element shift (kx, ky).
-  void shifted_displacement(int kx, int ky, std::vector<double>& out);
   /// The whole grid's tangential preconditioner (none for given operators or the sparse form).
   const TangentialPreconditioner* grid_preconditioner();
 

@@ -161,6 +161,57 @@ TEST(Operator, HalfSpaceBuildsEveryOperator) {
   EXPECT_LT((b21.transpose() - b32).cwiseAbs().maxCoeff(), 1e-14 * b21.cwiseAbs().maxCoeff());
 }
 
+/// displacement_shifted(shifts) with weights w against sum_k w_k (tangential_shifted(k) tau +
+/// tangential_from_normal_shifted(k) p), the separate operators (bilinear interpolation of the
+/// convected memory (3.8) in one apply): the same to round-off, for both kinds.
+void expect_weighted_displacement(const Grid& g, const std::vector<std::pair<int, int>>& shifts,
+                                  const std::vector<double>& weights, OperatorKind kind) {
+  const HalfSpace hs(g, test::steel_on_aluminium());
+  const auto op = hs.displacement_shifted(shifts, true, kind);
+  op->set_weights(weights);
+  const std::size_t N = g.size(), comps = g.dimension == 2 ? 1 : 2;
+  ASSERT_EQ(op->rows(), comps * N);
+  ASSERT_EQ(op->cols(), (comps + 1) * N);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<double> x(op->cols()), y;
+  for (double& v : x) v = u(rng);
+  op->apply(x, y);
+  const std::vector<double> tau(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(comps * N)),
+      p(x.begin() + static_cast<std::ptrdiff_t>(comps * N), x.end());
+  std::vector<double> expected(comps * N, 0.0), a, b;
+  for (std::size_t k = 0; k < shifts.size(); ++k) {
+    hs.tangential_shifted(shifts[k].first, shifts[k].second, OperatorKind::dense)->apply(tau, a);
+    hs.tangential_from_normal_shifted(shifts[k].first, shifts[k].second, OperatorKind::dense)->apply(p, b);
+    for (std::size_t i = 0; i < expected.size(); ++i) expected[i] += weights[k] * (a[i] + b[i]);
+  }
+  double scale = 0.0, diff = 0.0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    scale = std::max(scale, std::abs(expected[i]));
+    diff = std::max(diff, std::abs(y[i] - expected[i]));
+  }
+  EXPECT_GT(scale, 0.0);
+  EXPECT_LT(diff, 1e-12 * scale) << op->kind();
+  // Without the pressure (kappa = 0): the tangential blocks alone.
+  const auto tangential_only = hs.displacement_shifted(shifts, false, kind);
+  tangential_only->set_weights(weights);
+  EXPECT_EQ(tangential_only->cols(), comps * N);
+  EXPECT_THROW(tangential_only->set_weights({1.0}), std::invalid_argument) << "one weight per term";
+}
+
+TEST(Operator, WeightedShiftedDisplacementIsTheWeightedSumOfTheShiftedOperators) {
+  const Grid g3 = Grid::make(3, 9, 7, -1e-3, 1e-3, -1e-3, 1e-3);
+  const std::vector<std::pair<int, int>> corners{{2, -1}, {3, -1}, {2, 0}, {3, 0}};
+  const double tx = 0.37, ty = 0.81;
+  const std::vector<double> bilinear{(1 - tx) * (1 - ty), tx * (1 - ty), (1 - tx) * ty, tx * ty};
+  expect_weighted_displacement(g3, corners, bilinear, OperatorKind::dense);
+  expect_weighted_displacement(g3, corners, bilinear, OperatorKind::fft);
+  expect_weighted_displacement(g3, corners, {0.0, 1.0, 0.0, 0.0}, OperatorKind::fft);  // a term of weight 0 skipped
+  const Grid g2 = Grid::make(2, 23, 1, -1e-3, 1e-3, 0, 0);
+  expect_weighted_displacement(g2, {{1, 0}, {2, 0}}, {0.25, 0.75}, OperatorKind::fft);
+  expect_weighted_displacement(g2, {{1, 0}, {2, 0}}, {0.25, 0.75}, OperatorKind::dense);
+}
+
 TEST(Operator, DenseRefusedForLargeGrids) {
   const Grid g = Grid::make(3, 128, 128, -1e-3, 1e-3, -1e-3, 1e-3);
   EXPECT_THROW(make_convolution_operator(g, {influence_table(g, identical_steel(), kZ, kZ)}, 1, 1,
