@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "fft_planning.hpp"
 #include "influence.hpp"
 
 namespace dc {
@@ -17,11 +18,14 @@ Grid SupportWindow::grid_of(const Grid& grid) const {
 
 namespace {
 
-/// [lo, hi] widened to a whole number of steps within [0, n), centred on the range; the step
-/// is 8 elements, or a sixteenth of n on large grids (at most 16 sizes per axis).
+/// [lo, hi] widened within [0, n), centred on the range, to the widest side whose zero-padded
+/// transform has the length the range's own would have (fft_fast_size(2 w - 1)): the window
+/// costs what its support costs, and its sides take few values (8, 10, 12, 16, 20, 25, 32, 40,
+/// 50, 64, ...: about one per 25 % of growth), which a history's windows reuse. At least 8
+/// elements (or n).
 std::pair<int, int> rounded_range(int lo, int hi, int n) {
-  const int step = std::max(8, (n / 16 + 7) / 8 * 8);
-  const int width = std::min(n, (hi - lo + step) / step * step);
+  const int extent = std::max(hi - lo + 1, std::min(8, n));
+  const int width = std::min(n, (fft_fast_size(2 * extent - 1) + 1) / 2);
   const int start = std::clamp(lo - (width - (hi - lo + 1)) / 2, 0, n - width);
   return {start, width};
 }

@@ -31,9 +31,9 @@ struct SupportWindow {
   Grid grid_of(const Grid& grid) const;
 };
 
-/// The smallest window that holds every element with f > 0, its sides rounded up to a multiple
-/// of 8 elements, or of a sixteenth of the grid's side on large grids (so that a history reuses
-/// a few sizes), within the grid; empty (nx = 0) when it would cover more than `max_fraction`
+/// The smallest window that holds every element with f > 0, each side widened to the widest one
+/// with the same FFT box (fft_fast_size(2 n - 1)): what the transform pays for anyway, and few
+/// sizes (about one per 25 % of growth), which a history reuses; within the grid; empty (nx = 0) when it would cover more than `max_fraction`
 /// of the grid or the support is empty.
 SupportWindow support_window(const Grid& grid, const std::vector<double>& f, double max_fraction = 0.9);
 

@@ -10,13 +10,21 @@
 #include <utility>
 #include <vector>
 
+#include "fft_planning.hpp"
 #include "support_window.hpp"
 #include "tangential_support.hpp"
 
 namespace dc {
 namespace {
 
-TEST(SupportWindow, HoldsTheSupportInARectangleOfMultiplesOf8) {
+/// A window's side: the widest whose FFT box (fft_fast_size(2 n - 1)) is the support's own, or
+/// the grid's side.
+int widest_side_of_box(int extent, int n) {
+  const int box = fft_fast_size(2 * std::max(extent, std::min(8, n)) - 1);
+  return std::min(n, (box + 1) / 2);
+}
+
+TEST(SupportWindow, HoldsTheSupportInTheWidestRectangleOfItsFftBox) {
   const Grid g = Grid::make(3, 60, 50, 0.0, 6.0, 0.0, 5.0);
   std::vector<double> f(g.size(), 0.0);
   EXPECT_EQ(support_window(g, f).nx, 0) << "no support, no window";
@@ -25,8 +33,9 @@ TEST(SupportWindow, HoldsTheSupportInARectangleOfMultiplesOf8) {
     for (int i = 7; i < 20; ++i) f[g.index(i, j)] = 1.0;
   const SupportWindow w = support_window(g, f);
   ASSERT_GT(w.nx, 0);
-  EXPECT_EQ(w.nx % 8, 0);
-  EXPECT_EQ(w.ny % 8, 0);
+  EXPECT_EQ(w.nx, widest_side_of_box(13, 60));
+  EXPECT_EQ(w.ny, widest_side_of_box(5, 50));
+  EXPECT_EQ(fft_fast_size(2 * w.nx - 1), fft_fast_size(2 * 13 - 1)) << "the support's transform, no longer";
   EXPECT_LE(w.i0, 7);
   EXPECT_GE(w.i0 + w.nx, 20);
   EXPECT_LE(w.j0, 45);
@@ -43,15 +52,26 @@ TEST(SupportWindow, HoldsTheSupportInARectangleOfMultiplesOf8) {
   EXPECT_EQ(support_window(g, f).nx, 0);
 }
 
-TEST(SupportWindow, LargeGridsUseFewWindowSizesAndTheCacheStaysBounded) {
-  // 400^2: the sides are rounded up to a sixteenth of the grid's side (32 elements), not 8.
+TEST(SupportWindow, AGrowingSupportMeetsFewWindowSizesAndTheCacheStaysBounded) {
+  // A support growing element by element along x of a 400^2 grid: the windows' sides take few
+  // values (a history builds few operators), each at least the support and at most 30 % wider
+  // than it beyond the smallest sides.
   const Grid g = Grid::make(3, 400, 400, -1.0, 1.0, -1.0, 1.0);
   std::vector<double> f(g.size(), 0.0);
-  for (int j = 200; j < 210; ++j)
-    for (int i = 100; i < 141; ++i) f[g.index(i, j)] = 1.0;
-  const SupportWindow w = support_window(g, f);
-  EXPECT_EQ(w.nx, 64);
-  EXPECT_EQ(w.ny, 32);
+  std::vector<int> sides;
+  for (int extent = 1; extent <= 300; ++extent) {
+    f[g.index(50 + extent - 1, 200)] = 1.0;
+    const SupportWindow w = support_window(g, f);
+    ASSERT_GT(w.nx, 0) << extent;
+    EXPECT_GE(w.nx, extent);
+    if (extent >= 16) {
+      EXPECT_LE(w.nx, 1.3 * extent) << extent;
+    }
+    EXPECT_EQ(w.ny, 8) << "the smallest side";
+    if (sides.empty() || sides.back() != w.nx) sides.push_back(w.nx);
+  }
+  EXPECT_LE(sides.size(), 20u);
+  EXPECT_TRUE(std::is_sorted(sides.begin(), sides.end()));
   // The kept operators never hold more than three grids' elements: on a 40^2 grid (1600),
   // five window sizes of 5504 elements in all.
   const Grid small = Grid::make(3, 40, 40, -1.0, 1.0, -1.0, 1.0);
