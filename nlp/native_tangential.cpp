@@ -89,7 +89,7 @@ struct NativeTangentialWorkspace::Storage {
   std::vector<const double*> rows;
   native_tangential_types::Face face;
   std::vector<Vec> a_face, a_face_minv;
-  Vec minv, pre_in, u_last, work_u, work_x;
+  Vec minv, sqrt_minv, pre_in, u_last, work_u, work_x;
   // solve()'s iterates
   Vec x, g, z, y, w, d0, hd0, dt, r, rho, p, q, xt, gt, gh, ght;
 };
@@ -192,6 +192,7 @@ class NativeTangential {
   std::vector<Vec>& a_face_ = work_.a_face;            // equality rows projected on the face
   std::vector<Vec>& a_face_minv_ = work_.a_face_minv;  // M^-1 a_face_
   Vec& minv_ = work_.minv;                             // diagonal preconditioner: 1 / (1 + curvature)
+  Vec& sqrt_minv_ = work_.sqrt_minv;                   // its square root (face_precondition, per CG iteration)
   Vec& pre_in_ = work_.pre_in;                         // face_precondition's scaled input
   Eigen::MatrixXd gram_pinv_;                          // (A_F M^-1 A_F')^+
   Vec& u_last_ = work_.u_last;                         // z + A'nu of the last projection
@@ -480,6 +481,8 @@ void NativeTangential::build_face(const Vec& x, const Vec& w) {
     }
     if (face_.slip[k]) minv_[d.ix] = minv_[d.iy] = 1.0 / (1.0 + face_.curv[k]);
   }
+  sqrt_minv_.resize(n_);
+  for (std::size_t i = 0; i < n_; ++i) sqrt_minv_[i] = std::sqrt(minv_[i]);
 }
 
 void NativeTangential::to_face(Vec& v) const {
@@ -503,10 +506,10 @@ void NativeTangential::face_precondition(const Vec& v, Vec& z) const {
     return;
   }
   pre_in_.resize(n_);
-  for (std::size_t i = 0; i < n_; ++i) pre_in_[i] = std::sqrt(minv_[i]) * v[i];
+  for (std::size_t i = 0; i < n_; ++i) pre_in_[i] = sqrt_minv_[i] * v[i];
   to_face(pre_in_);
   qp_.preconditioner->apply(pre_in_.data(), z.data());
-  for (std::size_t i = 0; i < n_; ++i) z[i] *= std::sqrt(minv_[i]);
+  for (std::size_t i = 0; i < n_; ++i) z[i] *= sqrt_minv_[i];
   to_face(z);
 }
 

@@ -72,7 +72,12 @@ bool TangentialProblem::Impl::outer_loop(TangentialSolution& sol, const NormalSp
   int pairs = 0;           // passes in the mixing's history
   bool mixed = false;      // shift_in came from the mixing of two or more passes
   bool was_exact = false;  // the previous pass was exact
-  if (coupled) B32->apply(tau, shift_in);
+  // kappa B32 of the start: kept from the last loop when the start is its final traction (the
+  // next Newton trial or step of a dynamic run).
+  if (coupled) {
+    if (tau == shift_source) shift_in = shift_of_source;
+    else B32->apply(tau, shift_in);
+  }
   for (int m = 1; m <= max_outer; ++m) {
     std::vector<double> h = heights;  // (4.26)
     if (coupled)
@@ -103,6 +108,8 @@ bool TangentialProblem::Impl::outer_loop(TangentialSolution& sol, const NormalSp
     gap_error /= c0 * (p_max > 0.0 ? p_max : 1.0);
     sol.outer.coupling_residual = gap_error;
     if (m == 1) sol.outer.first_residual = gap_error;
+    shift_source = tau;  // shift_out = kappa B32 tau
+    shift_of_source = shift_out;
     const bool stalled = m > 1 && change < outer_tol;
     if (!stall && exact_pass && (gap_error <= coupling_tol || (stalled && !mixed))) {
       certify_with_final_traction(sol, shift_out, normal_load);

@@ -60,6 +60,7 @@ struct TangentialProblem::Impl {
   std::vector<double> convected_input;                       // (tau_prev, p_prev) stacked
   mutable std::vector<double> displacement_work;             // displacement()'s kappa B21 p
   std::vector<double> final_heights_work;                    // certify_with_final_traction()'s gap
+  std::vector<double> shift_source, shift_of_source;         // a traction and its kappa B32 (outer_loop)
   std::unique_ptr<NormalProblem> normal;
   std::vector<double> heights;
 
