@@ -12,10 +12,12 @@ iterative method, e.g. another Newton start): every number of a CSV/.dat column 
 that column's largest magnitude (a value that should be 0 is compared on its column's scale),
 numbers in JSON lists likewise on the list's scale, other numbers within TOL relative;
 `balances` (themselves relative errors) within TOL absolute; the work counts and certificates
-under `solver` and the table columns `newton_iterations` and `certificate` are not compared
-(they are what such a change changes); numbers both below 1e-9 in magnitude (SI units) are
-round-off of a zero and compare equal; a vector's components in a table (Fx, Fy, Fz) on the
-vector's scale, and the ratios creepage and stick_fraction on a scale of at least 1.
+(`solver`, `normal_solver`, `newton_iterations` and the `outer_*` counts and residuals of the
+kappa loop, in the summary and its steps) and the table columns `newton_iterations`,
+`contact_solves`, `alternations` and `certificate` are not compared (they are what such a change
+changes; a newer table's added work columns are dropped); numbers both below 1e-9 in magnitude
+(SI units) are round-off of a zero and compare equal; a vector's components in a table (Fx, Fy,
+Fz) on the vector's scale, and the ratios creepage and stick_fraction on a scale of at least 1.
 """
 import argparse
 import json
@@ -70,7 +72,7 @@ def compare_json_trajectory(a, b, path, tol, out, scale=None):
     """compare_json under --trajectory TOL (see the module's doc)."""
     if isinstance(a, dict) and isinstance(b, dict):
         for k in sorted(set(a) | set(b)):
-            if is_timing(k) or k == "solver":
+            if is_timing(k) or k in WORK_KEYS:
                 continue
             if k not in a or k not in b:
                 out.append(f"{path}.{k}: only in {'new' if k in b else 'old'}")
@@ -106,9 +108,14 @@ ROUND_OFF = 1e-9
 # least 1, their natural unit (a creepage is a small difference of two speeds).
 RATIO_COLUMNS = {"creepage", "stick_fraction"}
 
+# Keys of summary.json that report a solver's work or residuals (wherever they are: the run's,
+# a history step's): what another iterative method changes (not compared under --trajectory).
+WORK_KEYS = {"solver", "normal_solver", "newton_iterations", "outer_iterations", "outer_last_change",
+             "outer_coupling_residual"}
+
 # Columns of a table that count work or measure a solver's residual: what another iterative
 # method changes (not compared under --trajectory).
-WORK_COLUMNS = {"newton_iterations", "certificate"}
+WORK_COLUMNS = {"newton_iterations", "contact_solves", "alternations", "certificate"}
 
 
 def read_line_pairs(old, new, name, out):
@@ -128,7 +135,7 @@ def compare_table_trajectory(old, new, name, tol, out):
     lines = read_line_pairs(old, new, name, out)
     if lines is None:
         return
-    a, b = lines
+    a, b = without_added_work_columns(*lines)
     header = a[0].replace(",", " ").split() if a and isinstance(numbers_or_text(a[0]), str) else []
     skipped = {c for c, column in enumerate(header) if column in WORK_COLUMNS}
     rows = []
@@ -166,6 +173,18 @@ def compare_table_trajectory(old, new, name, tol, out):
             if not (abs(p - q) <= tol * scale[c] or max(abs(p), abs(q)) <= ROUND_OFF or (math.isnan(p) and math.isnan(q))):
                 out.append(f"{name}:{i + 1}: column {c + 1}: {p!r} -> {q!r} (scale {scale[c]:.6g})")
                 return
+
+
+def without_added_work_columns(a, b):
+    """The new table without the work-count columns a newer version added (same order otherwise):
+    an output that gained a column of counts still compares with the one before it."""
+    def columns(lines):
+        return lines[0].split(",") if lines and isinstance(numbers_or_text(lines[0]), str) else []
+    ha, hb = columns(a), columns(b)
+    if not ha or ha == hb or [c for c in hb if c in ha] != ha or any(c not in WORK_COLUMNS for c in hb if c not in ha):
+        return a, b
+    keep = [i for i, c in enumerate(hb) if c in ha]
+    return a, [",".join(line.split(",")[i] for i in keep) for line in b]
 
 
 def numbers_or_text(line):

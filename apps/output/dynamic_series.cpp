@@ -11,12 +11,12 @@ void append_timeseries_row(std::ostream& out, const dynamics::DynamicSample& s) 
   char line[1024];
   std::snprintf(line, sizeof line,
                 "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.6g,"
-                "%.8g,%.8g,%d,%d,%d,%.10g,%.3g,%d\n",
+                "%.8g,%.8g,%d,%d,%d,%.10g,%.3g,%d,%d,%d\n",
                 st.time, st.position.x(), st.position.y(), st.position.z(), st.velocity.x(), st.velocity.y(),
                 st.velocity.z(), st.omega.x(), st.omega.y(), st.omega.z(), s.contact.force.x(), s.contact.force.y(),
                 s.contact.force.z(), s.contact.moment.x(), s.contact.moment.y(), s.contact.moment.z(), cs.creepage,
                 cs.stick_fraction, cs.in_contact ? cs.approach : 0.0, cs.contact_area, cs.n_contact, cs.n_stick,
-                cs.n_slip, s.kinetic_energy, cs.certificate, s.newton_iterations);
+                cs.n_slip, s.kinetic_energy, cs.certificate, s.newton_iterations, s.contact_solves, s.alternations);
   out << line;
 }
 

@@ -15,7 +15,7 @@ namespace dc::output {
 /// timeseries.csv's header line.
 inline constexpr const char* kTimeseriesColumns =
     "t,x,y,z,vx,vy,vz,wx,wy,wz,Fx,Fy,Fz,Mx,My,Mz,creepage,stick_fraction,approach,contact_area,n_contact,"
-    "n_stick,n_slip,kinetic_energy,certificate,newton_iterations\n";
+    "n_stick,n_slip,kinetic_energy,certificate,newton_iterations,contact_solves,alternations\n";
 
 /// Appends the row of an accepted step to timeseries.csv's text.
 void append_timeseries_row(std::ostream& out, const dynamics::DynamicSample& s);

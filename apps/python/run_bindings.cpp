@@ -128,7 +128,7 @@ void bind_runs(py::module_& m) {
       "balances, solver with the worst certificate) with 'timeseries': {column: NumPy array} for\n"
       "the columns of timeseries.csv (t, x, y, z, vx, ..., Fx, Fy, Fz, Mx, My, Mz, creepage,\n"
       "stick_fraction, approach, contact_area, n_contact, n_stick, n_slip, kinetic_energy,\n"
-      "certificate, newton_iterations). A run that stops early is not an exception: its status\n"
+      "certificate, newton_iterations, contact_solves, alternations). A run that stops early is not an exception: its status\n"
       "says 'stopped' and its message why. A limit in the summary's 'limits' that is an error (not\n"
       "accepted by the case) raises ResultLimitError with the run as .result, as solve() does.")
       .def(py::init([](const py::object& c) { return PyDynamicSimulation(case_from(c)); }), py::arg("case"))
