@@ -11,7 +11,9 @@
 #                               materials (kappa = 0), the sphere on a 64^2 grid and the 2-D
 #                               cylinder on 200 strips (steady):
 #                               ms, contact solves, (p, tau) alternations and Newton iterations
-#                               per step, against the figures recorded in docs/dynamic-bench.tsv
+#                               per step, and for the run's second half (the start-up transient
+#                               over: counts from timeseries.csv, time against a run of half the
+#                               steps), against the figures recorded in docs/dynamic-bench.tsv
 #                               (the rows of the same case and step count). --check: exit 1 when
 #                               solves or alternations per step exceed the recorded ones by more
 #                               than 0.02 (the counts are the machine's; the times are not, and
@@ -108,26 +110,42 @@ if [[ $mode == dynamic ]]; then
   trap 'rm -rf "$out"' EXIT
   recorded=docs/dynamic-bench.tsv
   failed=0
+  run_case() {  # steps, example, dt, overrides...: summary.json's path, or nothing when the run failed
+    local steps="$1" example="$2" dt="$3"
+    shift 3
+    local sets=(--set "time.dt=$dt" --set "time.t_end=$(awk -v n="$steps" -v dt="$dt" 'BEGIN { printf "%.12g", n * dt }')")
+    for s in "$@"; do sets+=(--set "$s"); done
+    DYNCONTACT_THREADS=1 "$BUILD_DIR/bin/dyncontact" solve "examples/$example.json" --out "$out/$example-$steps" -q \
+      --set output.plots=false "${sets[@]}" >/dev/null && echo "$out/$example-$steps"
+  }
   run_dynamic() {  # label, example, dt, overrides...
     local label="$1" example="$2" dt="$3"
     shift 3
-    local sets=(--set "time.dt=$dt" --set "time.t_end=$(awk -v n="$dyn_steps" -v dt="$dt" 'BEGIN { printf "%.12g", n * dt }')")
-    for s in "$@"; do sets+=(--set "$s"); done
-    DYNCONTACT_THREADS=1 "$BUILD_DIR/bin/dyncontact" solve "examples/$example.json" --out "$out/$example" -q \
-      --set output.plots=false "${sets[@]}" >/dev/null || { echo "bench: $label did not complete" >&2; failed=1; return; }
-    # name, steps, ms/step, solves/step, alternations/step, Newton/step from summary.json
+    local run half
+    run="$(run_case "$dyn_steps" "$example" "$dt" "$@")" || { echo "bench: $label did not complete" >&2; failed=1; return; }
+    # The second half of the run (the start-up transient over): its counts from timeseries.csv,
+    # its time as the difference of this run and one of half the steps (the same first half).
+    half="$(run_case $((dyn_steps / 2)) "$example" "$dt" "$@")" || { echo "bench: $label (first half) did not complete" >&2; failed=1; return; }
+    # steps, ms/step, solves/step, alternations/step, Newton/step, sensitivities/step; then the
+    # second half's ms/step, solves/step, alternations/step
     local row
-    row="$(/usr/bin/env python3 - "$out/$example/summary.json" <<'PY'
-import json, sys
-d = json.load(open(sys.argv[1])); s = d["solver"]; n = d["steps"]
+    row="$(/usr/bin/env python3 - "$run" "$half" <<'PY'
+import csv, json, sys
+d = json.load(open(sys.argv[1] + "/summary.json")); s = d["solver"]; n = d["steps"]
+h = json.load(open(sys.argv[2] + "/summary.json"))
+rows = list(csv.DictReader(open(sys.argv[1] + "/" + d["timeseries"])))[h["steps"]:]
+m = max(len(rows), 1)
 print(n, 1000 * s["time_s"] / n, s["contact_solves"] / n, s.get("outer_iterations", 0) / n,
-      (s["newton_iterations"] + s.get("chord_steps", 0)) / n,
-      s.get("sensitivities", 0) / n)
+      (s["newton_iterations"] + s.get("chord_steps", 0)) / n, s.get("sensitivities", 0) / n,
+      1000 * (s["time_s"] - h["solver"]["time_s"]) / m,
+      sum(int(r["contact_solves"]) for r in rows) / m, sum(int(r["alternations"]) for r in rows) / m)
 PY
 )"
-    read -r steps ms solves outer newton sens <<<"$row"
+    read -r steps ms solves outer newton sens ms2 solves2 outer2 <<<"$row"
     printf "%-44s %5d steps %7.2f ms/step %5.2f solves/step %5.2f alternations/step %5.2f Newton updates/step %5.2f sensitivities/step\n" \
       "$label" "$steps" "$ms" "$solves" "$outer" "$newton" "$sens"
+    printf "    second half (steps %d-%d): %7.2f ms/step %5.2f solves/step %5.2f alternations/step\n" \
+      $((steps - steps / 2 + 1)) "$steps" "$ms2" "$solves2" "$outer2"
     [[ -f $recorded ]] || return 0
     local ref
     ref="$(awk -F'\t' -v c="$label" -v n="$steps" '$1 == c && $2 == n { print $3, $4, $5 }' "$recorded")"
