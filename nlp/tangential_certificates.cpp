@@ -18,6 +18,68 @@ namespace {
 /// the double range, and a certificate of non-finite values fails anyway.
 double certificate_norm(double x, double y) { return std::sqrt(x * x + y * y); }
 
+/// The fields a friction certificate reads, as views of n values each (a step's tau and ds are
+/// stacked x then y: no copies).
+struct FrictionFields {
+  const double *tx, *ty, *sx, *sy, *bound;
+  std::size_t n;
+};
+
+bool all_finite_n(const double* v, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(v[i])) return false;
+  return true;
+}
+
+/// The traction level T: max |tau| where friction acts.
+double traction_level(const FrictionFields& f) {
+  double level = 0.0;
+  for (std::size_t e = 0; e < f.n; ++e)
+    if (f.bound[e] > 0.0) level = std::max(level, certificate_norm(f.tx[e], f.ty[e]));
+  return level;
+}
+
+/// TangentialProblem::certify_friction on views.
+Certificate friction_certificate(const Grid& grid, const FrictionFields& fields, double compliance) {
+  const double *tx = fields.tx, *ty = fields.ty, *sx = fields.sx, *sy = fields.sy, *bound = fields.bound;
+  const std::size_t n = fields.n;
+  if (!all_finite_n(tx, n) || !all_finite_n(ty, n) || !all_finite_n(sx, n) || !all_finite_n(sy, n) ||
+      !all_finite_n(bound, n))
+    return Certificate::not_finite();
+  Certificate cert;
+  const double A = grid.area();
+  const double c_t = compliance;  // slip per unit traction of one element
+  // Scales of the solution itself, not of the bound: the traction level T (max |tau| where
+  // friction acts) and the slip level S (max |ds|, at least c_t T). max f(p) or sum f |ds| A
+  // would vanish or explode in full stick, for mu -> 0 or mu -> infinity.
+  double T = traction_level(fields), S = 0.0, f_area = 0.0;
+  for (std::size_t e = 0; e < n; ++e)
+    if (bound[e] > 0.0) {
+      S = std::max(S, certificate_norm(sx[e], sy[e]));
+      f_area += bound[e] * A;
+    }
+  if (!(T > 0.0)) T = S / c_t;  // no traction at all: any slip where friction acts is an error
+  if (!(T > 0.0)) return cert;  // nothing loaded, nothing slipping
+  S = std::max(S, c_t * T);
+  double law = 0.0, gap = 0.0;
+  for (std::size_t e = 0; e < n; ++e) {
+    const double f = bound[e];
+    if (f == 0.0 && tx[e] == 0.0 && ty[e] == 0.0) continue;  // no friction, no traction: both terms 0
+    // (2.4)-(2.5) as a fixed point: tau = proj_{|t| <= f}(tau - ds / c_t).
+    double zx = tx[e] - sx[e] / c_t, zy = ty[e] - sy[e] / c_t;
+    project_onto_disk(zx, zy, std::max(f, 0.0));
+    law = std::max(law, certificate_norm(tx[e] - zx, ty[e] - zy));
+    law = std::max(law, certificate_norm(tx[e], ty[e]) - f);
+    // (4.24): g = sum [f |ds| - tau- . ds] A, with the paper's tau- = -tau+ on the substrate
+    // ((3.12), (3.25)); it vanishes when tau+ = -f ds/|ds| on slip, ds = 0 on stick.
+    gap += (f * certificate_norm(sx[e], sy[e]) + (tx[e] * sx[e] + ty[e] * sy[e])) * A;
+  }
+  cert.friction_law = law / T;
+  // g against the largest it could be at this slip level: sum f A times S.
+  cert.gap_function = f_area > 0.0 ? std::abs(gap) / (f_area * S) : 0.0;
+  return cert;
+}
+
 }  // namespace
 
 /// The slip increment of a step (3.8): ds = W + rigid + Ct tau, rigid = sum_k increment_k mode_k.
@@ -83,14 +145,13 @@ std::array<double, 3> TangentialProblem::Impl::resultants(const std::vector<doub
 Certificate TangentialProblem::Impl::step_certificate(const std::vector<double>& tau, const std::vector<double>& ds,
                                                       const std::vector<double>& f,
                                                       const std::array<ModeControl, 3>& modes) const {
-  std::vector<double> tx(tau.begin(), tau.begin() + static_cast<std::ptrdiff_t>(N)), ty(N, 0.0);
-  std::vector<double> sx(ds.begin(), ds.begin() + static_cast<std::ptrdiff_t>(N)), sy(N, 0.0);
-  if (comps == 2) {
-    ty.assign(tau.begin() + static_cast<std::ptrdiff_t>(N), tau.end());
-    sy.assign(ds.begin() + static_cast<std::ptrdiff_t>(N), ds.end());
-  }
-  Certificate cert = TangentialProblem::certify_friction(grid, tx, ty, sx, sy, f, Ct->diagonal(0));
-  const double T = TangentialProblem::traction_scale(tx, ty, f);
+  // Views of the stacked components (2-D: y is a zero field).
+  if (comps == 1 && zero_component.size() != N) zero_component.assign(N, 0.0);
+  const double* zeros = zero_component.data();
+  const FrictionFields fields{tau.data(), comps == 2 ? tau.data() + N : zeros, ds.data(),
+                              comps == 2 ? ds.data() + N : zeros, f.data(), N};
+  Certificate cert = friction_certificate(grid, fields, Ct->diagonal(0));
+  const double T = traction_level(fields);
   const std::array<double, 3> r = resultants(tau);
   for (int k = 0; k < n_modes(); ++k) {
     if (modes[k].kind != ModeControl::Kind::resultant) continue;
@@ -158,50 +219,15 @@ void TangentialProblem::Impl::finish(TangentialSolution& sol, const std::vector<
 
 double TangentialProblem::traction_scale(const std::vector<double>& tx, const std::vector<double>& ty,
                                          const std::vector<double>& bound) {
-  double level = 0.0;
-  for (std::size_t e = 0; e < bound.size(); ++e)
-    if (bound[e] > 0.0) level = std::max(level, certificate_norm(tx[e], ty[e]));
-  return level;
+  return traction_level({tx.data(), ty.data(), nullptr, nullptr, bound.data(), bound.size()});
 }
 
 Certificate TangentialProblem::certify_friction(const Grid& grid, const std::vector<double>& tx,
                                                 const std::vector<double>& ty, const std::vector<double>& sx,
                                                 const std::vector<double>& sy, const std::vector<double>& bound,
                                                 double compliance) {
-  if (!all_finite(tx) || !all_finite(ty) || !all_finite(sx) || !all_finite(sy) || !all_finite(bound))
-    return Certificate::not_finite();
-  Certificate cert;
-  const double A = grid.area();
-  const double c_t = compliance;  // slip per unit traction of one element
-  // Scales of the solution itself, not of the bound: the traction level T (max |tau| where
-  // friction acts) and the slip level S (max |ds|, at least c_t T). max f(p) or sum f |ds| A
-  // would vanish or explode in full stick, for mu -> 0 or mu -> infinity.
-  double T = traction_scale(tx, ty, bound), S = 0.0, f_area = 0.0;
-  for (std::size_t e = 0; e < bound.size(); ++e)
-    if (bound[e] > 0.0) {
-      S = std::max(S, certificate_norm(sx[e], sy[e]));
-      f_area += bound[e] * A;
-    }
-  if (!(T > 0.0)) T = S / c_t;  // no traction at all: any slip where friction acts is an error
-  if (!(T > 0.0)) return cert;  // nothing loaded, nothing slipping
-  S = std::max(S, c_t * T);
-  double law = 0.0, gap = 0.0;
-  for (std::size_t e = 0; e < bound.size(); ++e) {
-    const double f = bound[e];
-    if (f == 0.0 && tx[e] == 0.0 && ty[e] == 0.0) continue;  // no friction, no traction: both terms 0
-    // (2.4)-(2.5) as a fixed point: tau = proj_{|t| <= f}(tau - ds / c_t).
-    double zx = tx[e] - sx[e] / c_t, zy = ty[e] - sy[e] / c_t;
-    project_onto_disk(zx, zy, std::max(f, 0.0));
-    law = std::max(law, certificate_norm(tx[e] - zx, ty[e] - zy));
-    law = std::max(law, certificate_norm(tx[e], ty[e]) - f);
-    // (4.24): g = sum [f |ds| - tau- . ds] A, with the paper's tau- = -tau+ on the substrate
-    // ((3.12), (3.25)); it vanishes when tau+ = -f ds/|ds| on slip, ds = 0 on stick.
-    gap += (f * certificate_norm(sx[e], sy[e]) + (tx[e] * sx[e] + ty[e] * sy[e])) * A;
-  }
-  cert.friction_law = law / T;
-  // g against the largest it could be at this slip level: sum f A times S.
-  cert.gap_function = f_area > 0.0 ? std::abs(gap) / (f_area * S) : 0.0;
-  return cert;
+  return friction_certificate(grid, {tx.data(), ty.data(), sx.data(), sy.data(), bound.data(), bound.size()},
+                              compliance);
 }
 
 }  // namespace dc

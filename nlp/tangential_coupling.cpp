@@ -16,7 +16,7 @@ namespace dc {
 using tangential_internal::relative_change;
 
 /// The normal problem at the heights h, from the cache when it was solved for the same.
-NormalSolution TangentialProblem::Impl::solve_normal(std::vector<double> h, const NormalSpec& load,
+NormalSolution TangentialProblem::Impl::solve_normal(const std::vector<double>& h, const NormalSpec& load,
                                                      const SolverOptions& solver) {
   if (normal_cache && normal_cache_load.control == load.control && normal_cache_load.value == load.value &&
       normal_cache_tol == solver.tol &&
@@ -26,7 +26,7 @@ NormalSolution TangentialProblem::Impl::solve_normal(std::vector<double> h, cons
   normal->set_native_first(native_first || native_first_always);
   NormalSolution s = sparse ? sparse->normal(h, load, solver) : normal->solve(load, solver);
   normal_cache = s;
-  normal_cache_heights = std::move(h);
+  normal_cache_heights = h;
   normal_cache_load = load;
   normal_cache_tol = solver.tol;
   return s;
@@ -54,8 +54,12 @@ NormalSolution TangentialProblem::Impl::solve_normal(std::vector<double> h, cons
 bool TangentialProblem::Impl::outer_loop(TangentialSolution& sol, const NormalSpec& normal_load,
                                          const SolverOptions& solver, std::vector<double>& tau, std::vector<double>& f,
                                          bool inexact, const InnerSolve& inner) {
-  // The gap shift kappa B32 tau_in fed to (4.26) and the one of the new tau.
-  std::vector<double> p_old, tau_old, shift_in, shift_out;
+  // The gap shift kappa B32 tau_in fed to (4.26) and the one of the new tau (the loop's work
+  // vectors are the Impl's: a dynamic run's steps allocate none of them).
+  std::vector<double>&p_old = loop_p_old, &tau_old = loop_tau_old, &shift_in = loop_shift_in,
+                      &shift_out = loop_shift_out;
+  p_old.clear();
+  tau_old.clear();
   f.assign(N, 0.0);
   const bool stall = injected_fault("outer") != Fault::none;  // test-only: a loop that never settles
   const int max_outer = coupled ? (stall ? 3 : 100) : 1;
@@ -79,11 +83,12 @@ bool TangentialProblem::Impl::outer_loop(TangentialSolution& sol, const NormalSp
     else B32->apply(tau, shift_in);
   }
   for (int m = 1; m <= max_outer; ++m) {
-    std::vector<double> h = heights;  // (4.26)
+    std::vector<double>& h = pass_heights;  // (4.26)
+    h = heights;
     if (coupled)
       for (std::size_t i = 0; i < N; ++i) h[i] += shift_in[i];
     const bool exact_pass = pass.tol == solver.tol;
-    sol.normal = solve_normal(std::move(h), normal_load, pass);
+    sol.normal = solve_normal(h, normal_load, pass);
     if (sol.normal.report.status == SolveStatus::failed)
       throw SolverFailure("the normal problem failed, so the tangential one cannot be set up: " +
                           sol.normal.report.message);

@@ -61,6 +61,8 @@ struct TangentialProblem::Impl {
   mutable std::vector<double> displacement_work;             // displacement()'s kappa B21 p
   std::vector<double> final_heights_work;                    // certify_with_final_traction()'s gap
   std::vector<double> shift_source, shift_of_source;         // a traction and its kappa B32 (outer_loop)
+  mutable std::vector<double> zero_component;                // step_certificate's y fields in 2-D
+  std::vector<double> loop_p_old, loop_tau_old, loop_shift_in, loop_shift_out, pass_heights;  // outer_loop's
   std::unique_ptr<NormalProblem> normal;
   std::vector<double> heights;
 
@@ -152,7 +154,7 @@ struct TangentialProblem::Impl {
   using InnerSolve = std::function<bool(const std::vector<double>& p, const std::vector<double>& f,
                                         std::vector<double>& tau, const SolverOptions& pass)>;
   /// The normal problem at the heights h, from normal_cache when it was solved for the same.
-  NormalSolution solve_normal(std::vector<double> h, const NormalSpec& load, const SolverOptions& solver);
+  NormalSolution solve_normal(const std::vector<double>& h, const NormalSpec& load, const SolverOptions& solver);
   /// The outer loop around `inner` (false: the inner solve gave up).
   bool outer_loop(TangentialSolution& sol, const NormalSpec& normal_load, const SolverOptions& solver,
                   std::vector<double>& tau, std::vector<double>& f, bool inexact, const InnerSolve& inner);
