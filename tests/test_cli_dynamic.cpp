@@ -3,11 +3,13 @@
 // exit 3 and the time series so far.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -50,9 +52,32 @@ TEST_F(CliDynamic, WritesSummaryAndTimeseries) {
   std::string header, line;
   std::getline(csv, header);
   EXPECT_EQ(header.rfind("t,x,y,z,vx,vy,vz,wx,wy,wz,Fx,Fy,Fz,Mx,My,Mz,creepage,stick_fraction", 0), 0u) << header;
+  // Each step's work: the columns contact_solves and alternations add up to the run's counts.
+  std::vector<std::string> columns;
+  std::string heading;
+  for (std::istringstream h(header); std::getline(h, heading, ',');) columns.push_back(heading);
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
+  };
+  const std::size_t solves_column = column("contact_solves"), alternations_column = column("alternations");
+  ASSERT_LT(solves_column, columns.size()) << header;
+  ASSERT_LT(alternations_column, columns.size()) << header;
+  ASSERT_EQ(s["rejected_steps"], 0) << "every solve belongs to an accepted step";
   int rows = 0;
-  while (std::getline(csv, line)) ++rows;
+  long solves = 0, alternations = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    std::vector<std::string> cells;
+    std::string cell;
+    for (std::istringstream c(line); std::getline(c, cell, ',');) cells.push_back(cell);
+    ASSERT_EQ(cells.size(), columns.size()) << line;
+    solves += std::stol(cells[solves_column]);
+    alternations += std::stol(cells[alternations_column]);
+  }
   EXPECT_EQ(rows, 40);
+  EXPECT_EQ(solves, s["solver"]["contact_solves"].get<long>());
+  EXPECT_EQ(alternations, s["solver"]["outer_iterations"].get<long>());
+  EXPECT_GT(solves, 0);
 }
 
 TEST_F(CliDynamic, SnapshotsEveryKSteps) {
