@@ -60,6 +60,7 @@ class DenseConvolution final : public ConvolutionBase {
         matrix_ * Eigen::Map<const Eigen::VectorXd>(x, cols());
   }
   std::string kind() const override { return "dense"; }
+  const Eigen::MatrixXd& matrix() const { return matrix_; }
 
  private:
   Eigen::MatrixXd matrix_;
@@ -228,7 +229,7 @@ class DenseWeightedConvolutions final : public WeightedConvolutionsBase {
  public:
   DenseWeightedConvolutions(const Grid& grid, std::vector<std::vector<KernelTable>> terms, int n_out, int n_in)
       : WeightedConvolutionsBase(grid, terms.size(), n_out, n_in) {
-    for (auto& t : terms) matrices_.push_back(DenseConvolution(grid, std::move(t), n_out, n_in).to_dense(kDenseAutoLimit * 16));
+    for (auto& t : terms) matrices_.push_back(DenseConvolution(grid, std::move(t), n_out, n_in).matrix());
   }
   void apply(const double* x, double* y) const override {
     Eigen::Map<Eigen::VectorXd> out(y, rows());
@@ -237,7 +238,8 @@ class DenseWeightedConvolutions final : public WeightedConvolutionsBase {
     for (std::size_t t = 0; t < matrices_.size(); ++t)
       if (weights_[t] != 0.0) out.noalias() += weights_[t] * (matrices_[t] * in);
   }
-  Eigen::MatrixXd to_dense(std::size_t) const override {
+  Eigen::MatrixXd to_dense(std::size_t max_entries) const override {
+    if (rows() * cols() > max_entries) throw std::length_error("weighted convolutions: too large to be dense");
     Eigen::MatrixXd m = Eigen::MatrixXd::Zero(rows(), cols());
     for (std::size_t t = 0; t < matrices_.size(); ++t) m += weights_[t] * matrices_[t];
     return m;
