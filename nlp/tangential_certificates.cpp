@@ -88,13 +88,27 @@ std::vector<double> TangentialProblem::Impl::slip_increment(const std::vector<do
                                                              const std::array<double, 3>& increment) const {
   std::vector<double> ds;
   Ct->apply(tau, ds);
+  add_rigid_and_load(W, increment, ds);
+  return ds;
+}
+
+void TangentialProblem::Impl::slip_increment(const std::vector<double>& W, const std::vector<double>& tau,
+                                             const std::array<double, 3>& increment, std::vector<double>& ds,
+                                             std::vector<double>& ct_tau) const {
+  Ct->apply(tau, ct_tau);
+  ds = ct_tau;
+  add_rigid_and_load(W, increment, ds);
+}
+
+/// ds += W + rigid, rigid = sum_k increment_k mode_k (3.8).
+void TangentialProblem::Impl::add_rigid_and_load(const std::vector<double>& W, const std::array<double, 3>& increment,
+                                                 std::vector<double>& ds) const {
   for (std::size_t e = 0; e < N; ++e)
     for (int c = 0; c < comps; ++c) {
       double rigid = 0.0;
       for (int k = 0; k < n_modes(); ++k) rigid += increment[k] * mode(k, e, c);
       ds[c * N + e] += W[c * N + e] + rigid;
     }
-  return ds;
 }
 
 /// The slip increment (3.8) of a traction that vanishes outside `window`, computed on the

@@ -180,19 +180,31 @@ TangentialSolution TangentialProblem::Impl::solve_step(const NormalSpec& normal_
                                                        const std::array<double, 2>& shift, const SolverOptions& solver,
                                                        const ProgressCallback& progress) {
   const std::size_t n = comps * N;
-  std::vector<double> u_prev;
-  if (shift[0] == 1.0 && shift[1] == 0.0 && Ct_up)
+  // The step's vectors are the Impl's (no allocation once sized).
+  std::vector<double>&u_prev = step_u_prev, &W = step_W, &w21 = step_w21, &f = step_f;
+  const bool marching = shift[0] == 1.0 && shift[1] == 0.0 && Ct_up;
+  if (marching) {
+    memory_beyond_grid.clear();
     displacement(p_prev, tau_prev, u_prev, *Ct_up, B21_up.get());
-  else
+  } else {
     convected_displacement(shift[0], shift[1], u_prev);
+  }
 
   TangentialSolution sol;
-  std::vector<double> tau = tau_warm.size() == n ? tau_warm : std::vector<double>(n, 0.0);
-  std::vector<double> f, W(n), w21;
+  std::vector<double>& tau = step_tau;
+  if (tau_warm.size() == n) tau = tau_warm;
+  else tau.assign(n, 0.0);
+  W.resize(n);
   InnerResult inner;
   outer_loop(sol, normal_load, solver, tau, f, true,
              [&](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t,
                  const SolverOptions& pass) {
+               // Where friction acts, the memory must be exact: an element whose interpolated
+               // memory needed a value beyond the grid's edge takes the apply's.
+               if (!memory_beyond_grid.empty() &&
+                   std::any_of(memory_beyond_grid.begin(), memory_beyond_grid.end(),
+                               [&](std::size_t e) { return bound[e] > 0.0; }))
+                 convected_displacement(shift[0], shift[1], u_prev, true);
                // (4.27): W = kappa B21 p - u_prev.
                for (std::size_t i = 0; i < n; ++i) W[i] = -u_prev[i];
                if (coupled) {
@@ -204,13 +216,18 @@ TangentialSolution TangentialProblem::Impl::solve_step(const NormalSpec& normal_
                return true;
              });
   // Results: slip increment ds = W + rigid + Ct tau (3.8), certificate, states.
-  const std::vector<double> ds = slip_increment(W, tau, inner.increment);
+  std::vector<double>& ds = step_ds;
+  slip_increment(W, tau, inner.increment, ds, displacement_prev);
   sol.report = inner.report;
   sol.shift_undetermined = inner.shift_undetermined;
   finish(sol, tau, ds, f, modes, solver);
-  // Remember the state for the next step.
+  // Remember the state for the next step, with its relative displacement kappa B21 p + B22 tau
+  // (Ct tau from the slip and the last pass's kappa B21 p, of the final pressure): the next
+  // step's convected memory.
   tau_prev = tau;
   p_prev = sol.normal.pressure;
+  if (coupled)
+    for (std::size_t i = 0; i < n; ++i) displacement_prev[i] += w21[i];
   sol.amplitudes = inner.increment;
   return sol;
 }

@@ -1,6 +1,7 @@
 // TangentialProblem::Impl: the operators of one grid and material pair (C, Ct, the kappa terms
 // B21, B32 of (4.26)-(4.27)), the relative displacement kappa B21 p + B22 tau (4.2), and the
 // previous displacement shifted by whole elements and convected between them (3.8).
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -53,12 +54,18 @@ void TangentialProblem::Impl::displacement(const std::vector<double>& p, const s
 
 /// The previous relative displacement taken (shift_x, shift_y) elements downstream (the
 /// material now at (x, y) was at (x + shift_x dx, y + shift_y dy) at the start of the step,
-/// (3.8)): bilinear interpolation between the four neighbouring whole-element shifts, each exact
-/// also beyond the grid edge, in one apply of their weighted sum (the weights scale the shifted
-/// kernels' spectra: three forward and two inverse transforms for any travel).
-void TangentialProblem::Impl::convected_displacement(double shift_x, double shift_y, std::vector<double>& u) {
+/// (3.8)): bilinear interpolation between the four neighbouring whole-element shifts.
+/// With displacement_prev known, the shifts are index shifts of it: no operator apply (the
+/// values beyond the grid's edge, which only an apply gives, are taken from the nearest element
+/// and the elements that needed them listed in memory_beyond_grid). Otherwise, or `exact`, one
+/// apply of the shifted kernels' weighted sum, exact also beyond the grid edge (the weights
+/// scale their spectra: three forward and two inverse transforms for any travel).
+void TangentialProblem::Impl::convected_displacement(double shift_x, double shift_y, std::vector<double>& u,
+                                                     bool exact) {
   const int kx = static_cast<int>(std::floor(shift_x)), ky = static_cast<int>(std::floor(shift_y));
   const double tx = shift_x - kx, ty = shift_y - ky;
+  memory_beyond_grid.clear();
+  if (!exact && displacement_prev.size() == comps * N) return interpolate_convected(kx, ky, tx, ty, u);
   if (kx == 0 && ky == 0 && tx <= 0.0 && ty <= 0.0) return displacement(p_prev, tau_prev, u, *Ct, B21.get());
   const bool lateral = ty > 0.0;
   std::unique_ptr<WeightedConvolutions>& op = convected[{kx, ky, lateral}];
@@ -74,6 +81,43 @@ void TangentialProblem::Impl::convected_displacement(double shift_x, double shif
   convected_input = tau_prev;
   if (coupled) convected_input.insert(convected_input.end(), p_prev.begin(), p_prev.end());
   op->apply(convected_input, u);
+}
+
+/// u_prev of (3.8) at element (i, j): sum over the shifts (kx + a, ky + b), a, b in {0, 1}, of
+/// weight_ab D(i + kx + a, j + ky + b), D = displacement_prev; the same weighted sum of whole
+/// shifts as the exact apply, whose shift (k, l) is D at (i + k, j + l) wherever that is on the
+/// grid. A source beyond the edge is clamped to the grid and its element listed.
+void TangentialProblem::Impl::interpolate_convected(int kx, int ky, double tx, double ty, std::vector<double>& u) {
+  const int nx = grid.nx, ny = grid.ny;
+  const double wx[2] = {1.0 - tx, tx}, wy[2] = {1.0 - ty, ty};
+  u.resize(comps * N);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const std::size_t e = grid.index(i, j);
+      bool beyond = false;
+      double sum[2] = {0.0, 0.0};
+      for (int b = 0; b < 2; ++b) {
+        if (wy[b] == 0.0) continue;
+        int js = j + ky + b;
+        if (js < 0 || js >= ny) {
+          beyond = true;
+          js = std::clamp(js, 0, ny - 1);
+        }
+        for (int a = 0; a < 2; ++a) {
+          if (wx[a] == 0.0) continue;
+          int is = i + kx + a;
+          if (is < 0 || is >= nx) {
+            beyond = true;
+            is = std::clamp(is, 0, nx - 1);
+          }
+          const std::size_t source = grid.index(is, js);
+          const double w = wx[a] * wy[b];
+          for (int c = 0; c < comps; ++c) sum[c] += w * displacement_prev[c * N + source];
+        }
+      }
+      for (int c = 0; c < comps; ++c) u[c * N + e] = sum[c];
+      if (beyond) memory_beyond_grid.push_back(e);
+    }
 }
 
 /// The whole grid's tangential preconditioner (built on first use); none for given operators

@@ -18,6 +18,7 @@ void TangentialProblem::Impl::reset() {
   tau_prev.assign(comps * N, 0.0);
   p_prev.assign(N, 0.0);
   amplitude_prev = {0.0, 0.0, 0.0};
+  displacement_prev.assign(comps * N, 0.0);  // of no traction
   tau_warm.clear();
   predictor.clear();
 }
@@ -240,7 +241,7 @@ TangentialSolution TangentialProblem::convected_step(const NormalSpec& normal, c
 
 TangentialMemory TangentialProblem::memory() const {
   const Impl& s = *impl_;
-  return {s.tau_prev, s.p_prev, s.tau_warm, s.amplitude_prev};
+  return {s.tau_prev, s.p_prev, s.tau_warm, s.amplitude_prev, s.displacement_prev};
 }
 
 void TangentialProblem::restore(const TangentialMemory& m) {
@@ -253,6 +254,12 @@ void TangentialProblem::restore_history(const TangentialMemory& m) {
   s.tau_prev = m.tau;
   s.p_prev = m.pressure;
   s.amplitude_prev = m.amplitudes;
+  // The relative displacement of (tau, pressure) when the memory carries one of this grid's
+  // size; otherwise the next convected step applies the operators.
+  if (m.displacement.size() == s.tau_prev.size() && m.tau.size() == s.tau_prev.size())
+    s.displacement_prev = m.displacement;
+  else
+    s.displacement_prev.clear();
   s.predictor.clear();
 }
 

@@ -73,6 +73,10 @@ std::vector<double> rolling_warm_start(const TangentialSolution& solution, int d
 struct TangentialMemory {
   std::vector<double> tau, pressure, warm_start;
   std::array<double, 3> amplitudes{};
+  /// The relative displacement kappa B21 p + B22 tau of (tau, pressure) on the grid, as the
+  /// step that left them computed it (empty: not known; a convected step then applies the
+  /// operators to find it).
+  std::vector<double> displacement;
 };
 
 struct SparseBlock;  // sparse_block.hpp

@@ -58,6 +58,14 @@ struct TangentialProblem::Impl {
   // weighted operator per (kx, ky, lateral), built once and kept
   std::map<std::tuple<int, int, bool>, std::unique_ptr<WeightedConvolutions>> convected;
   std::vector<double> convected_input;                       // (tau_prev, p_prev) stacked
+  // kappa B21 p_prev + B22 tau_prev on the grid, left by the step that left (tau_prev, p_prev)
+  // (empty: not known): the next step's convected memory (3.8) is interpolated from it
+  // (interpolate_convected) instead of applied.
+  std::vector<double> displacement_prev;
+  // The elements whose interpolated memory needed a value beyond the grid's edge (taken from
+  // the nearest element inside): exact only where no friction acts (solve_step checks).
+  std::vector<std::size_t> memory_beyond_grid;
+  std::vector<double> step_u_prev, step_W, step_w21, step_f, step_tau, step_ds;  // solve_step's
   mutable std::vector<double> displacement_work;             // displacement()'s kappa B21 p
   std::vector<double> final_heights_work;                    // certify_with_final_traction()'s gap
   std::vector<double> shift_source, shift_of_source;         // a traction and its kappa B32 (outer_loop)
@@ -108,8 +116,12 @@ struct TangentialProblem::Impl {
   /// Relative tangential displacement kappa B21 p + B22 tau (4.2).
   void displacement(const std::vector<double>& p, const std::vector<double>& tau, std::vector<double>& u,
                     const LinearOperator& ct, const LinearOperator* b21) const;
-  /// The previous relative displacement convected by (shift_x, shift_y) elements (3.8).
-  void convected_displacement(double shift_x, double shift_y, std::vector<double>& u);
+  /// The previous relative displacement convected by (shift_x, shift_y) elements (3.8):
+  /// interpolated from displacement_prev when it is known (the elements that needed a value
+  /// beyond the grid in memory_beyond_grid), else (or `exact`) one operator apply.
+  void convected_displacement(double shift_x, double shift_y, std::vector<double>& u, bool exact = false);
+  /// u_prev of (3.8) from displacement_prev, the weighted sum of its whole-element shifts.
+  void interpolate_convected(int kx, int ky, double tx, double ty, std::vector<double>& u);
   /// The whole grid's tangential preconditioner (none for given operators or the sparse form).
   const TangentialPreconditioner* grid_preconditioner();
 
@@ -136,6 +148,13 @@ struct TangentialProblem::Impl {
   /// The slip increment of a step (3.8): ds = W + rigid + Ct tau.
   std::vector<double> slip_increment(const std::vector<double>& W, const std::vector<double>& tau,
                                      const std::array<double, 3>& increment) const;
+  /// The same into ds, and Ct tau into ct_tau (no allocation once they are sized).
+  void slip_increment(const std::vector<double>& W, const std::vector<double>& tau,
+                      const std::array<double, 3>& increment, std::vector<double>& ds,
+                      std::vector<double>& ct_tau) const;
+  /// ds += W + rigid slip of the increments (3.8).
+  void add_rigid_and_load(const std::vector<double>& W, const std::array<double, 3>& increment,
+                          std::vector<double>& ds) const;
   /// The slip increment (3.8) of a traction that vanishes outside `window`.
   std::vector<double> windowed_slip_increment(const std::vector<double>& W, const std::vector<double>& tau,
                                               const SupportWindow& window, const LinearOperator& ct_window,

@@ -94,6 +94,7 @@ std::optional<TangentialSolution> TangentialProblem::Impl::steady_rolling_direct
   finish(sol, tau, ds, f, load.modes, solver);
   tau_prev = tau;
   p_prev = sol.normal.pressure;
+  displacement_prev.clear();  // not computed here: a later convected step applies the operators
   sol.amplitudes = amplitudes;
   return sol;
 }
