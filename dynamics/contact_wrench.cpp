@@ -325,7 +325,7 @@ void ContactWrench::accept(const StepKinematics& k, double vertical_load) {
   const bool same = k.time == last_.time && k.position == last_.position && k.velocity == last_.velocity &&
                     k.omega == last_.omega;
   if (!same) evaluate(k, vertical_load);
-  if (tangential_) committed_ = tangential_->memory();
+  if (tangential_) tangential_->save_memory(committed_);
   if (finite_) {  // the body's deformation at the accepted step (output, max displacement)
     static const std::vector<double> none;
     const bool touching = state_.in_contact;

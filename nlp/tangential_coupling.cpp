@@ -66,7 +66,8 @@ bool TangentialProblem::Impl::outer_loop(TangentialSolution& sol, const NormalSp
   const double outer_tol = std::max(1e-9, 10.0 * solver.tol);
   const double c0 = C->diagonal(0);
   const double coupling_tol = 0.01 * solver.certificate_tol;
-  AndersonMixing mixer;
+  AndersonMixing& mixer = loop_mixer;
+  mixer.reset();
   SolverOptions pass = solver;
   // A start from a solve at nearby data (set_near_start) is within a loose pass's tolerance:
   // such a pass would return it unchanged, so the first pass is exact.

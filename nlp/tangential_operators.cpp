@@ -95,22 +95,17 @@ void TangentialProblem::Impl::interpolate_convected(int kx, int ky, double tx, d
     for (int i = 0; i < nx; ++i) {
       const std::size_t e = grid.index(i, j);
       bool beyond = false;
+      const auto on_grid = [&beyond](int k, int n) {  // a source index clamped to the grid
+        beyond = beyond || k < 0 || k >= n;
+        return std::clamp(k, 0, n - 1);
+      };
       double sum[2] = {0.0, 0.0};
       for (int b = 0; b < 2; ++b) {
         if (wy[b] == 0.0) continue;
-        int js = j + ky + b;
-        if (js < 0 || js >= ny) {
-          beyond = true;
-          js = std::clamp(js, 0, ny - 1);
-        }
+        const int js = on_grid(j + ky + b, ny);
         for (int a = 0; a < 2; ++a) {
           if (wx[a] == 0.0) continue;
-          int is = i + kx + a;
-          if (is < 0 || is >= nx) {
-            beyond = true;
-            is = std::clamp(is, 0, nx - 1);
-          }
-          const std::size_t source = grid.index(is, js);
+          const std::size_t source = grid.index(on_grid(i + kx + a, nx), js);
           const double w = wx[a] * wy[b];
           for (int c = 0; c < comps; ++c) sum[c] += w * displacement_prev[c * N + source];
         }

@@ -240,8 +240,18 @@ TangentialSolution TangentialProblem::convected_step(const NormalSpec& normal, c
 }
 
 TangentialMemory TangentialProblem::memory() const {
+  TangentialMemory m;
+  save_memory(m);
+  return m;
+}
+
+void TangentialProblem::save_memory(TangentialMemory& into) const {
   const Impl& s = *impl_;
-  return {s.tau_prev, s.p_prev, s.tau_warm, s.amplitude_prev, s.displacement_prev};
+  into.tau.assign(s.tau_prev.begin(), s.tau_prev.end());
+  into.pressure.assign(s.p_prev.begin(), s.p_prev.end());
+  into.warm_start.assign(s.tau_warm.begin(), s.tau_warm.end());
+  into.amplitudes = s.amplitude_prev;
+  into.displacement.assign(s.displacement_prev.begin(), s.displacement_prev.end());
 }
 
 void TangentialProblem::restore(const TangentialMemory& m) {

@@ -177,6 +177,8 @@ class TangentialProblem {
   TangentialSolution convected_step(const NormalSpec& normal, const std::array<double, 3>& increment,
                                     const std::array<double, 2>& travel, const SolverOptions& solver);
   TangentialMemory memory() const;
+  /// The same into `into`, reusing its vectors (a dynamic run's commit of every step).
+  void save_memory(TangentialMemory& into) const;
   void restore(const TangentialMemory& memory);
   /// The same for the loading history alone: the next solve still starts from the traction of
   /// the last one (another trial of the same step starts near it, not at the last step's).

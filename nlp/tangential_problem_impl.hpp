@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "anderson_mixing.hpp"
 #include "native_solvers.hpp"
 #include "proportional_predictor.hpp"
 #include "support_window.hpp"
@@ -71,6 +72,7 @@ struct TangentialProblem::Impl {
   std::vector<double> shift_source, shift_of_source;         // a traction and its kappa B32 (outer_loop)
   mutable std::vector<double> zero_component;                // step_certificate's y fields in 2-D
   std::vector<double> loop_p_old, loop_tau_old, loop_shift_in, loop_shift_out, pass_heights;  // outer_loop's
+  AndersonMixing loop_mixer;                                 // outer_loop's, reset at its start
   std::unique_ptr<NormalProblem> normal;
   std::vector<double> heights;
 
