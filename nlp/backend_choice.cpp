@@ -1,10 +1,12 @@
 #include "backend_choice.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "fault_injection.hpp"
 #include "interrupt.hpp"
@@ -12,12 +14,22 @@
 namespace dc {
 
 std::vector<std::string> backend_order(Backend requested, std::size_t unknowns, bool fallback) {
-  if (requested != Backend::automatic)
-    return {to_string(requested)};  // asked for by name: never replaced silently by another backend
-  std::vector<std::string> order = unknowns <= kAutoIpoptLimit ? std::vector<std::string>{"ipopt", "native", "nlopt"}
-                                                               : std::vector<std::string>{"native", "ipopt", "nlopt"};
-  if (!fallback) order.resize(1);
+  std::vector<std::string> order;
+  backend_order(requested, unknowns, fallback, order);
   return order;
+}
+
+void backend_order(Backend requested, std::size_t unknowns, bool fallback, std::vector<std::string>& order) {
+  order.clear();
+  if (requested != Backend::automatic) {
+    order.emplace_back(to_string(requested));  // asked for by name: never replaced silently by another backend
+    return;
+  }
+  for (const char* name : unknowns <= kAutoIpoptLimit ? std::array<const char*, 3>{"ipopt", "native", "nlopt"}
+                                                      : std::array<const char*, 3>{"native", "ipopt", "nlopt"}) {
+    order.emplace_back(name);
+    if (!fallback) break;
+  }
 }
 
 SolveOptions solve_options(const SolverOptions& solver, const ProgressCallback& progress) {
@@ -32,7 +44,33 @@ SolveOptions solve_options(const SolverOptions& solver, const ProgressCallback& 
 TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp, const SolveOptions& options,
                          NativeSolver native) {
   TimedOutcome timed;
+  run_backend(
+      backend, qp, options,
+      [&native](const QuadraticProgram& q, const SolveOptions& o, SolveOutcome& out) { out = native(q, o); }, timed);
+  return timed;
+}
+
+void reset_keeping_storage(SolveOutcome& outcome) {
+  std::vector<double> x = std::move(outcome.x), multipliers = std::move(outcome.equality_multipliers),
+                      block_x = std::move(outcome.block_x);
+  std::string message = std::move(outcome.message);
+  std::vector<IterationRecord> history = std::move(outcome.history);
+  for (std::vector<double>* v : {&x, &multipliers, &block_x}) v->clear();
+  message.clear();
+  history.clear();
+  outcome = SolveOutcome{};
+  outcome.x = std::move(x);
+  outcome.equality_multipliers = std::move(multipliers);
+  outcome.block_x = std::move(block_x);
+  outcome.message = std::move(message);
+  outcome.history = std::move(history);
+}
+
+void run_backend(const std::string& backend, const QuadraticProgram& qp, const SolveOptions& options,
+                 const NativeSolverInto& native, TimedOutcome& timed) {
   SolveOutcome& out = timed.outcome;
+  reset_keeping_storage(out);
+  timed.time_s = 0.0;
   throw_if_interrupted();
   const auto start = std::chrono::steady_clock::now();
   const Fault fault = injected_fault(backend);
@@ -45,7 +83,7 @@ TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp,
       out.message = backend + ": stall injected (a test's fault source)";
     } else if (backend == "native") {
       if (qp.block) throw std::invalid_argument("the native solvers take no sparse rows");
-      out = native(qp, options);
+      native(qp, options, out);
     } else if (backend == "ipopt") {
       out = solve_with_ipopt(qp, options);
     } else {
@@ -64,7 +102,6 @@ TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp,
   }
   throw_if_interrupted();  // a backend stopped by the interrupt reports no result of its own
   timed.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return timed;
 }
 
 }  // namespace dc

@@ -18,6 +18,8 @@ inline constexpr std::size_t kAutoIpoptLimit = 256;
 /// The names of the backends to run: for automatic, by size, then the others as fallbacks (when
 /// `fallback`); a named backend: that one only (it reports its own failure, never replaced silently).
 std::vector<std::string> backend_order(Backend requested, std::size_t unknowns, bool fallback);
+/// The same into `order` (its storage kept: the names fit in a string's own buffer).
+void backend_order(Backend requested, std::size_t unknowns, bool fallback, std::vector<std::string>& order);
 
 /// The backend options of a case's solver block.
 SolveOptions solve_options(const SolverOptions& solver, const ProgressCallback& progress);
@@ -32,5 +34,12 @@ struct TimedOutcome {
 using NativeSolver = std::function<SolveOutcome(const QuadraticProgram&, const SolveOptions&)>;
 TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp, const SolveOptions& options,
                          NativeSolver native);
+/// The same into `timed`, whose outcome's storage the native solver fills again (no allocation
+/// for a solve repeated at every step): `native` writes its outcome into the one it is given.
+using NativeSolverInto = std::function<void(const QuadraticProgram&, const SolveOptions&, SolveOutcome&)>;
+void run_backend(const std::string& backend, const QuadraticProgram& qp, const SolveOptions& options,
+                 const NativeSolverInto& native, TimedOutcome& timed);
+/// Back to a default outcome, the storage of its vectors and message kept.
+void reset_keeping_storage(SolveOutcome& outcome);
 
 }  // namespace dc

@@ -29,17 +29,43 @@ class AttemptLedger {
   /// `first` holds what every attempt's report starts from (requested backend, operator), and
   /// is the answer when nothing is recorded.
   explicit AttemptLedger(Result first) : kept_(std::move(first)) {}
+  AttemptLedger() = default;
+
+  /// Starts another solve from `first`, keeping the storage of the last one's results, attempts
+  /// and messages (a solve repeated every step allocates nothing once they are sized).
+  void restart(const Result& first) {
+    kept_ = first;
+    have_ = false;
+    kept_index_ = 0;
+    n_tried_ = 0;
+    attempts_.clear();
+  }
 
   /// Records one certified attempt; `has_point` is false when the backend gave no point (its
   /// certificate then reads infinite in failed_attempts). True when it became the kept result.
-  bool record(Result attempt, bool has_point, std::vector<IterationRecord> history = {}) {
+  bool record(Result attempt, bool has_point, const std::vector<IterationRecord>& history = {}) {
+    return record_swapping(attempt, has_point, history);
+  }
+  /// The same, taking the attempt by swapping: `attempt` is left with the storage of the result
+  /// it replaced (or its own, when it was not kept), for the next attempt to fill.
+  bool record_swapping(Result& attempt, bool has_point, const std::vector<IterationRecord>& history = {}) {
     const SolverReport& r = attempt.report;
-    attempts_ += (attempts_.empty() ? "" : "; ") + r.backend + ": " + to_string(r.status);
-    tried_.push_back({r.backend, r.status, r.message, r.iterations, r.time_s,
-                      has_point ? r.certificate.worst() : kInf, std::move(history)});
+    if (!attempts_.empty()) attempts_ += "; ";
+    attempts_ += r.backend;
+    attempts_ += ": ";
+    attempts_ += to_string(r.status);
+    if (n_tried_ == tried_.size()) tried_.emplace_back();
+    FailedAttempt& tried = tried_[n_tried_++];
+    tried.backend = r.backend;
+    tried.status = r.status;
+    tried.message = r.message;
+    tried.iterations = r.iterations;
+    tried.time_s = r.time_s;
+    tried.certificate = has_point ? r.certificate.worst() : kInf;
+    tried.history = history;
     if (have_ && !better_result(r, kept_.report)) return false;
-    kept_ = std::move(attempt);
-    kept_index_ = tried_.size() - 1;
+    std::swap(kept_, attempt);
+    kept_index_ = n_tried_ - 1;
     have_ = true;
     return true;
   }
@@ -50,18 +76,28 @@ class AttemptLedger {
   /// The kept result, its report listing the attempts not kept and, when a fallback answered or
   /// none converged, " [tried native: not_converged; ipopt: converged]" after its message.
   Result finish() && {
-    for (std::size_t k = 0; k < tried_.size(); ++k)
-      if (!have_ || k != kept_index_) kept_.report.failed_attempts.push_back(std::move(tried_[k]));
-    if (!tried_.empty() && (kept_.report.fallback_used || kept_.report.status != SolveStatus::converged))
-      kept_.report.message += " [tried " + attempts_ + "]";
-    return std::move(kept_);
+    Result out;
+    finish_into(out);
+    return out;
+  }
+  /// The same into `out` by swapping (the ledger keeps out's old storage for the next solve).
+  void finish_into(Result& out) {
+    for (std::size_t k = 0; k < n_tried_; ++k)
+      if (!have_ || k != kept_index_) kept_.report.failed_attempts.push_back(tried_[k]);
+    if (n_tried_ > 0 && (kept_.report.fallback_used || kept_.report.status != SolveStatus::converged)) {
+      kept_.report.message += " [tried ";
+      kept_.report.message += attempts_;
+      kept_.report.message += "]";
+    }
+    std::swap(out, kept_);
   }
 
  private:
   Result kept_;
   bool have_ = false;
   std::size_t kept_index_ = 0;
-  std::vector<FailedAttempt> tried_;
+  std::vector<FailedAttempt> tried_;  // the first n_tried_ are this solve's (the rest: storage)
+  std::size_t n_tried_ = 0;
   std::string attempts_;
 };
 

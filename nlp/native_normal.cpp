@@ -3,6 +3,7 @@
 // and the safeguards of Vollebregt's NormCG (J. Comput. Phys. 257, 2014). docs/solvers.md.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -15,6 +16,14 @@ namespace dc {
 
 NormalQpForm read_normal_qp(const QuadraticProgram& qp) {
   NormalQpForm form;
+  read_normal_qp(qp, form);
+  return form;
+}
+
+void read_normal_qp(const QuadraticProgram& qp, NormalQpForm& form) {
+  form.n_free = 0;
+  form.force_control = false;
+  form.a0 = form.total = 0.0;
   const std::size_t n = qp.c.size();
   if (qp.equalities.size() > 1 || !qp.disks.empty())
     throw std::invalid_argument("native normal solver: at most one equality and no disks");
@@ -37,7 +46,6 @@ NormalQpForm read_normal_qp(const QuadraticProgram& qp) {
     form.total = eq.b / form.a0;
     if (!(form.total > 0.0)) throw std::invalid_argument("native normal solver: the load must be positive");
   }
-  return form;
 }
 
 void load_lowest_elements(const QuadraticProgram& qp, const NormalQpForm& form, std::vector<double>& x) {
@@ -57,18 +65,23 @@ void load_lowest_elements(const QuadraticProgram& qp, const NormalQpForm& form, 
 }
 
 std::vector<double> normal_start(const QuadraticProgram& qp, const NormalQpForm& form) {
+  std::vector<double> x;
+  normal_start(qp, form, x);
+  return x;
+}
+
+void normal_start(const QuadraticProgram& qp, const NormalQpForm& form, std::vector<double>& x) {
   const std::size_t n = qp.c.size();
-  std::vector<double> x(n, 0.0);
+  x.assign(n, 0.0);
   if (qp.x0.size() == n)
     for (std::size_t i = 0; i < n; ++i) x[i] = form.free[i] ? std::max(qp.x0[i], 0.0) : 0.0;
-  if (!form.force_control) return x;
+  if (!form.force_control) return;
   const double sum_x = std::accumulate(x.begin(), x.end(), 0.0);
   if (sum_x > 0.0) {
     for (double& v : x) v *= form.total / sum_x;
   } else {
     load_lowest_elements(qp, form, x);
   }
-  return x;
 }
 
 namespace {
@@ -98,17 +111,31 @@ void record(std::vector<IterationRecord>& history, const IterationRecord& r) {
 // did not change. w = Q x is updated with the step's image while no element leaves.
 SolveOutcome solve_normal_native(const QuadraticProgram& qp, const SolveOptions& options,
                                  const NormalPreconditioner* preconditioner, double scale) {
-  const std::size_t n = qp.c.size();
-  const NormalQpForm form = read_normal_qp(qp);
+  NativeNormalWorkspace work;
   SolveOutcome out;
+  solve_normal_native(qp, options, preconditioner, scale, work, out);
+  return out;
+}
+
+void solve_normal_native(const QuadraticProgram& qp, const SolveOptions& options,
+                         const NormalPreconditioner* preconditioner, double scale, NativeNormalWorkspace& work,
+                         SolveOutcome& out) {
+  const std::size_t n = qp.c.size();
+  NormalQpForm& form = work.form;
+  read_normal_qp(qp, form);
   if (form.n_free == 0) {
     out.x.assign(n, 0.0);
     out.message = "no element can carry load";
-    return out;
+    return;
   }
-  std::vector<double> x = normal_start(qp, form);
-  std::vector<double> w(n), g(n), r(n, 0.0), r_prev(n, 0.0), z(n), v(n, 0.0), q(n);
-  std::vector<char> in_set(n);
+  std::vector<double>& x = work.x;
+  normal_start(qp, form, x);
+  std::vector<double>&w = work.w, &g = work.g, &r = work.r, &r_prev = work.r_prev, &z = work.z, &v = work.v,
+                      &q = work.q;
+  for (std::vector<double>* u : {&w, &g, &z, &q}) u->resize(n);
+  for (std::vector<double>* u : {&r, &r_prev, &v}) u->assign(n, 0.0);
+  std::vector<char>& in_set = work.in_set;
+  in_set.resize(n);
   std::size_t n_set = 0;
   for (std::size_t i = 0; i < n; ++i) {
     in_set[i] = form.free[i] && x[i] > 0.0;
@@ -144,7 +171,11 @@ SolveOutcome solve_normal_native(const QuadraticProgram& qp, const SolveOptions&
     last.entered = entered;
     if (step_converged && entered == 0) {
       out.success = true;
-      out.message = "converged (relative change " + format_number(last.change) + ")";
+      char change[32];
+      std::snprintf(change, sizeof change, "%.3g", last.change);  // format_number's, without a temporary
+      out.message.assign("converged (relative change ");
+      out.message.append(change);
+      out.message.append(")");
       break;
     }
     if (n_set == 0) {  // approach control: nothing overlaps
@@ -240,10 +271,9 @@ SolveOutcome solve_normal_native(const QuadraticProgram& qp, const SolveOptions&
   if (!out.history.empty() && out.history.back().iteration != last.iteration && last.iteration > 0)
     out.history.push_back(last);
   if (!out.success && out.message.empty()) out.message = "iteration limit reached";
-  out.x = std::move(x);
-  out.objective = qp.objective(out.x.data());
-  if (form.force_control) out.equality_multipliers = {shift / form.a0};
-  return out;
+  out.x.assign(x.begin(), x.end());
+  out.objective = qp.gradient(out.x.data(), g.data());  // the objective; g is free by now
+  if (form.force_control) out.equality_multipliers.assign(1, shift / form.a0);
 }
 
 }  // namespace dc

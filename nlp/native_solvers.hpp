@@ -18,6 +18,12 @@ namespace dc {
 /// SolveOutcome::history holds the iterations' change and contact-set counts.
 SolveOutcome solve_normal_native(const QuadraticProgram& qp, const SolveOptions& options,
                                  const NormalPreconditioner* preconditioner = nullptr, double scale = 1.0);
+struct NativeNormalWorkspace;
+/// The same with the caller's workspace into `out` (a default outcome or one
+/// reset_keeping_storage'd): a solve repeated at every step allocates nothing once sized.
+void solve_normal_native(const QuadraticProgram& qp, const SolveOptions& options,
+                         const NormalPreconditioner* preconditioner, double scale, NativeNormalWorkspace& work,
+                         SolveOutcome& out);
 
 /// The normal program's structure, checked: which elements may carry load, force control and
 /// its total sum x (the equality's weights a0 are equal on the free elements).
@@ -28,9 +34,20 @@ struct NormalQpForm {
   double a0 = 0.0, total = 0.0;
 };
 NormalQpForm read_normal_qp(const QuadraticProgram& qp);
+/// The same into `form` (its storage kept).
+void read_normal_qp(const QuadraticProgram& qp, NormalQpForm& form);
 /// Starting point: qp.x0 projected on the bounds (or 0); under force control scaled to the
 /// total, or (when it carries nothing) spread evenly over the lowest tenth of the gap's range.
 std::vector<double> normal_start(const QuadraticProgram& qp, const NormalQpForm& form);
+/// The same into x.
+void normal_start(const QuadraticProgram& qp, const NormalQpForm& form, std::vector<double>& x);
+
+/// The native normal solver's vectors, kept between solves (NormalProblem holds one).
+struct NativeNormalWorkspace {
+  NormalQpForm form;
+  std::vector<double> x, w, g, r, r_prev, z, v, q;
+  std::vector<char> in_set;
+};
 /// x = the total of force control spread evenly over the free elements in the lowest tenth of
 /// the gap's range (c), 0 elsewhere.
 void load_lowest_elements(const QuadraticProgram& qp, const NormalQpForm& form, std::vector<double>& x);
@@ -51,10 +68,15 @@ class NativeTangentialWorkspace {
 
  private:
   std::unique_ptr<Storage> storage_;
-  friend SolveOutcome solve_tangential_native(const QuadraticProgram&, const SolveOptions&, NativeTangentialWorkspace&);
+  friend void solve_tangential_native(const QuadraticProgram&, const SolveOptions&, NativeTangentialWorkspace&,
+                                      SolveOutcome&);
 };
 /// The same with the caller's workspace (the result does not depend on what it held).
 SolveOutcome solve_tangential_native(const QuadraticProgram& qp, const SolveOptions& options,
                                      NativeTangentialWorkspace& workspace);
+/// The same into `out` (a default outcome or one reset_keeping_storage'd: backend_choice.hpp),
+/// whose storage it fills again.
+void solve_tangential_native(const QuadraticProgram& qp, const SolveOptions& options,
+                             NativeTangentialWorkspace& workspace, SolveOutcome& out);
 
 }  // namespace dc

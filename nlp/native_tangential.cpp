@@ -51,12 +51,6 @@ namespace {
 
 using Vec = std::vector<double>;
 
-std::string format(const char* fmt, double a) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, a);
-  return buf;
-}
-
 double chord_dot(double ax, double ay, double bx, double by, double vx, double vy, double r);
 
 }  // namespace
@@ -90,8 +84,8 @@ struct NativeTangentialWorkspace::Storage {
   native_tangential_types::Face face;
   std::vector<Vec> a_face, a_face_minv;
   Vec minv, sqrt_minv, pre_in, u_last, work_u, work_x;
-  // solve()'s iterates
-  Vec x, g, z, y, w, d0, hd0, dt, r, rho, p, q, xt, gt, gh, ght;
+  // solve()'s iterates, and its residual per outer iteration
+  Vec x, g, z, y, w, d0, hd0, dt, r, rho, p, q, xt, gt, gh, ght, history;
 };
 
 NativeTangentialWorkspace::NativeTangentialWorkspace() : storage_(std::make_unique<Storage>()) {}
@@ -111,7 +105,8 @@ class NativeTangential {
     invalid_ = setup();
   }
 
-  SolveOutcome solve();
+  /// Fills `out` (reset_keeping_storage'd by the caller or fresh).
+  void solve(SolveOutcome& out);
 
  private:
   // ---- set-up -------------------------------------------------------------------------------
@@ -542,17 +537,16 @@ void NativeTangential::null_space_precondition(Vec& r, Vec& rho) const {
   face_precondition(r, rho);
 }
 
-SolveOutcome NativeTangential::solve() {
-  SolveOutcome out;
+void NativeTangential::solve(SolveOutcome& out) {
   if (!invalid_.empty()) {
     out.message = "native tangential: invalid program: " + invalid_;
-    return out;
+    return;
   }
   out.equality_multipliers.assign(m_, 0.0);
   if (n_ == 0) {
     out.success = true;
     out.message = "native tangential: empty program";
-    return out;
+    return;
   }
   const int max_outer = std::max(options_.max_iter, 1);
   const long long max_applies = 20LL * max_outer;
@@ -573,7 +567,7 @@ SolveOutcome NativeTangential::solve() {
   if (!project(z, x, lambda)) {
     out.x = x;
     out.message = "native tangential: the equality rows could not be met inside the disks and bounds (infeasible program)";
-    return out;
+    return;
   }
   lambda.setZero();
   gradient(x, g);
@@ -581,7 +575,8 @@ SolveOutcome NativeTangential::solve() {
   double lipschitz = 1.0;  // Q has unit diagonal: lambda_max >= 1
   double res = kInf, eq_res = kInf, level = scale_;
   int outer = 0, newton_steps = 0, gradient_steps = 0, cg_total = 0;
-  std::vector<double> history;  // residual per outer iteration
+  Vec& history = work_.history;  // residual per outer iteration
+  history.clear();
   std::string status;
   bool converged = false;
 
@@ -760,21 +755,31 @@ SolveOutcome NativeTangential::solve() {
   out.iterations = applies_;
   for (Eigen::Index k = 0; k < m; ++k) out.equality_multipliers[static_cast<std::size_t>(k)] = lambda(k);
   out.success = converged;
-  const std::string effort = std::to_string(outer) + " outer iterations (" + std::to_string(newton_steps) +
-                             " Newton, " + std::to_string(gradient_steps) + " gradient steps, " +
-                             std::to_string(cg_total) + " CG), iterations = " + std::to_string(applies_) +
-                             " operator applies; residual " + format("%.3g", level > 0.0 ? res / level : res) +
-                             ", equality residual " + format("%.3g", eq_res);
-  out.message = "native tangential: " + (converged ? std::string("converged") : status) + " after " + effort;
-  return out;
+  // The message written into out's own storage (no temporaries: a solve per dynamic step).
+  char effort[256];
+  std::snprintf(effort, sizeof effort,
+                " after %d outer iterations (%d Newton, %d gradient steps, %d CG), iterations = %lld operator "
+                "applies; residual %.3g, equality residual %.3g",
+                outer, newton_steps, gradient_steps, cg_total, static_cast<long long>(applies_),
+                level > 0.0 ? res / level : res, eq_res);
+  out.message.assign("native tangential: ");
+  out.message.append(converged ? "converged" : status.c_str());
+  out.message.append(effort);
 }
 
 }  // namespace
 
 SolveOutcome solve_tangential_native(const QuadraticProgram& qp, const SolveOptions& options,
                                      NativeTangentialWorkspace& workspace) {
+  SolveOutcome out;
+  solve_tangential_native(qp, options, workspace, out);
+  return out;
+}
+
+void solve_tangential_native(const QuadraticProgram& qp, const SolveOptions& options,
+                             NativeTangentialWorkspace& workspace, SolveOutcome& out) {
   NativeTangential solver(qp, options, *workspace.storage_);
-  return solver.solve();
+  solver.solve(out);
 }
 
 SolveOutcome solve_tangential_native(const QuadraticProgram& qp, const SolveOptions& options) {

@@ -17,11 +17,10 @@
 namespace dc {
 namespace {
 
-/// The scaled QP of (4.7): x = p / p_ref, Q = C / c0 (unit diagonal),
+/// The scales of the QP of (4.7): x = p / p_ref, Q = C / c0 (unit diagonal),
 /// c = (h - delta) / (c0 p_ref); under force control one row (sum x) / n_ref = 1.
 struct ScaledNormalProgram {
   double c0 = 1.0, p_ref = 1.0, n_ref = 1.0;
-  QuadraticProgram qp;
 };
 
 
@@ -54,11 +53,23 @@ void NormalProblem::set_warm_start(std::vector<double> pressure) {
   warm_start_ = std::move(pressure);
 }
 
+void reset_keeping_storage(NormalSolution& solution) {
+  std::vector<double> pressure = std::move(solution.pressure), gap = std::move(solution.gap);
+  SolverReport report = std::move(solution.report);
+  reset_keeping_storage(report);
+  pressure.clear();
+  gap.clear();
+  solution = NormalSolution{};
+  solution.pressure = std::move(pressure);
+  solution.gap = std::move(gap);
+  solution.report = std::move(report);
+}
+
 Certificate NormalProblem::certify(const std::vector<double>& p, double approach, const NormalSpec& control) const {
   if (!std::isfinite(approach) || !all_finite(p)) return Certificate::not_finite();
   Certificate cert;
   const std::size_t n = grid_.size();
-  std::vector<double> w;
+  std::vector<double>& w = certify_work_;  // no allocation per certificate once sized
   compliance_->apply(p, w);
   const double p_max = std::max(*std::max_element(p.begin(), p.end()), 0.0);
   double comp = 0.0, gap_neg = 0.0, p_neg = 0.0, force = 0.0;
@@ -81,24 +92,36 @@ Certificate NormalProblem::certify(const std::vector<double>& p, double approach
 
 NormalSolution NormalProblem::solve(const NormalSpec& control, const SolverOptions& solver,
                                     const ProgressCallback& progress) {
-  return solve_or_polish(control, solver, progress, nullptr);
+  NormalSolution solution;
+  solve_or_polish(control, solver, progress, nullptr, solution);
+  return solution;
+}
+
+void NormalProblem::solve(const NormalSpec& control, const SolverOptions& solver, NormalSolution& solution,
+                          const ProgressCallback& progress) {
+  solve_or_polish(control, solver, progress, nullptr, solution);
 }
 
 NormalSolution NormalProblem::polish(const std::vector<double>& pressure, const NormalSpec& control,
                                      const SolverOptions& solver) {
   if (pressure.size() != grid_.size()) throw std::invalid_argument("normal problem: polish: one pressure per element");
-  return solve_or_polish(control, solver, {}, &pressure);
+  NormalSolution solution;
+  solve_or_polish(control, solver, {}, &pressure, solution);
+  return solution;
 }
 
-NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const SolverOptions& solver,
-                                              const ProgressCallback& progress, const std::vector<double>* given) {
+/// The program, the attempts and their results are work_'s, filled again (no allocation for a
+/// solve repeated at every step once they are sized).
+void NormalProblem::solve_or_polish(const NormalSpec& control, const SolverOptions& solver,
+                                    const ProgressCallback& progress, const std::vector<double>* given,
+                                    NormalSolution& result) {
   const std::size_t n = grid_.size();
   const double A = grid_.area();
   std::size_t n_free = 0;
   for (double h : heights_) n_free += std::isfinite(h) ? 1 : 0;
 
   // Scales: x = p / p_ref is O(1) in the contact; Q has unit diagonal.
-  ScaledNormalProgram s;
+  ScaledNormalProgram s;  // the scales; the program itself is work_.qp
   s.c0 = compliance_->diagonal(0);
   s.n_ref = std::max(1.0, 0.25 * static_cast<double>(n_free));
   const double delta = control.control == Control::approach ? control.value : 0.0;
@@ -109,7 +132,7 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
     s.p_ref = control.value / (s.c0 * spread);
   }
   ScaledOperator Q(*compliance_, 1.0 / s.c0);
-  QuadraticProgram& qp = s.qp;
+  QuadraticProgram& qp = work_.qp;
   qp.Q = &Q;
   qp.c.resize(n);
   qp.lower.assign(n, 0.0);
@@ -122,14 +145,15 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
       qp.upper[i] = 0.0;
     }
   }
+  qp.equalities.resize(control.control == Control::force ? 1 : 0);  // the row's storage kept
   if (control.control == Control::force) {
-    LinearEquality eq;
+    LinearEquality& eq = qp.equalities.front();
     eq.a.assign(n, 1.0 / s.n_ref);
     for (std::size_t i = 0; i < n; ++i)
       if (!std::isfinite(heights_[i])) eq.a[i] = 0.0;
     eq.b = control.value / (A * s.p_ref * s.n_ref);
-    qp.equalities.push_back(std::move(eq));
   }
+  qp.x0.clear();
   if (warm_start_.size() == n) {
     qp.x0.resize(n);
     for (std::size_t i = 0; i < n; ++i) qp.x0[i] = warm_start_[i] / s.p_ref;
@@ -138,7 +162,8 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
   SolveOptions options = solve_options(solver, progress);
   if (exact_hessian_limit_ > 0) options.exact_hessian_limit = exact_hessian_limit_;
 
-  NormalSolution first;
+  NormalSolution& first = work_.first;
+  reset_keeping_storage(first);
   first.report.requested = to_string(solver.backend);
   first.report.operator_kind = compliance_->kind();
   // A point x of the scaled program as pressure, approach, gap and energy, certified.
@@ -147,7 +172,7 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
     for (std::size_t i = 0; i < n; ++i) sol.pressure[i] = std::max(x[i], 0.0) * s.p_ref;
     // The approach: given, or the pressure-weighted mean of C p + h over the contact (the
     // value that makes the gap vanish where p > 0); the backends' multipliers agree with it.
-    std::vector<double> w;
+    std::vector<double>& w = work_.w;
     compliance_->apply(sol.pressure, w);
     if (control.control == Control::approach) {
       sol.approach = control.value;
@@ -174,7 +199,8 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
         sol.report.certificate.worst() <= solver.certificate_tol ? SolveStatus::converged : SolveStatus::not_converged;
   };
   if (given) {
-    NormalSolution sol;
+    NormalSolution& sol = result;
+    reset_keeping_storage(sol);
     sol.report = first.report;
     sol.report.backend = "active-set polish";
     std::vector<double> x(n), lambda, g(n);
@@ -198,21 +224,25 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
     sol.report.message = polish_summary(polish);
     sol.report.iterations = polish.applies;
     sol.report.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return sol;
+    return;
   }
-  const auto order =
-      backend_order(solver.backend, native_first_ ? std::numeric_limits<std::size_t>::max() : n, solver.fallback);
-  AttemptLedger<NormalSolution> ledger(first);
+  std::vector<std::string>& order = work_.order;
+  backend_order(solver.backend, native_first_ ? std::numeric_limits<std::size_t>::max() : n, solver.fallback, order);
+  AttemptLedger<NormalSolution>& ledger = work_.ledger;
+  ledger.restart(first);
+  const double c0 = s.c0;
+  const NativeSolverInto native = [this, c0](const QuadraticProgram& q, const SolveOptions& o, SolveOutcome& out) {
+    solve_normal_native(q, o, preconditioner_.get(), c0, work_.native, out);
+  };
   for (std::size_t k = 0; k < order.size() && !ledger.converged(); ++k) {
     const std::string& backend = order[k];
     if (backend == "native" && !preconditioner_)
       preconditioner_ = std::make_shared<NormalPreconditioner>(*compliance_, grid_);
-    const TimedOutcome run = run_backend(backend, qp, options, [&](const QuadraticProgram& q, const SolveOptions& o) {
-      return solve_normal_native(q, o, preconditioner_.get(), s.c0);
-    });
+    TimedOutcome& run = work_.run;
+    run_backend(backend, qp, options, native, run);
     const SolveOutcome& outcome = run.outcome;
-    NormalSolution sol;
-    sol.report = first.report;
+    NormalSolution& sol = work_.trial;
+    sol = first;
     sol.report.backend = backend;
     sol.report.fallback_used = k > 0;
     sol.report.message = outcome.message;
@@ -223,17 +253,16 @@ NormalSolution NormalProblem::solve_or_polish(const NormalSpec& control, const S
     if (has_point) {
       fill_solution(outcome.x, sol);
       finish_backend_point(backend, outcome, qp, solver.certificate_tol, sol,
-                           [&](const std::vector<double>& x, const std::vector<double>&, NormalSolution& result) {
-                             fill_solution(x, result);
+                           [&](const std::vector<double>& x, const std::vector<double>&, NormalSolution& polished) {
+                             fill_solution(x, polished);
                            });
     } else {
       sol.report.status = SolveStatus::failed;
     }
-    ledger.record(std::move(sol), has_point, outcome.history);
+    ledger.record_swapping(sol, has_point, outcome.history);
   }
-  NormalSolution best = std::move(ledger).finish();
-  if (best.report.status == SolveStatus::converged) warm_start_ = best.pressure;
-  return best;
+  ledger.finish_into(result);
+  if (result.report.status == SolveStatus::converged) warm_start_.assign(result.pressure.begin(), result.pressure.end());
 }
 
 }  // namespace dc

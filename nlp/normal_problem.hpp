@@ -6,9 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "backend_choice.hpp"
+#include "certified_solve.hpp"
 #include "grid.hpp"
 #include "linear_operator.hpp"
 #include "material.hpp"
+#include "native_solvers.hpp"
 #include "normal_preconditioner.hpp"
 #include "normal_spec.hpp"
 #include "quadratic_program.hpp"
@@ -25,6 +28,9 @@ struct NormalSolution {
   SolverReport report;
 };
 
+/// Back to a default solution, the storage of its fields and report kept (solver_report.hpp).
+void reset_keeping_storage(NormalSolution& solution);
+
 /// Set up once per grid/materials (operator, plans), solve many times (warm starts).
 class NormalProblem {
  public:
@@ -38,6 +44,10 @@ class NormalProblem {
   /// the report says so.
   NormalSolution solve(const NormalSpec& control, const SolverOptions& solver,
                        const ProgressCallback& progress = {});
+  /// The same into `solution`, whose storage it fills again: a solve repeated at every step of
+  /// a run allocates nothing once its vectors and texts are sized.
+  void solve(const NormalSpec& control, const SolverOptions& solver, NormalSolution& solution,
+             const ProgressCallback& progress = {});
   /// A pressure from another form of this program (a finite body's sparse saddle form) finished
   /// by the active-set polish on it, to a hundredth of solver.certificate_tol: the solution and
   /// its certificate at the polished point (report.polished when the polish improved on it;
@@ -67,13 +77,26 @@ class NormalProblem {
 
  private:
   /// solve(), or with `given` (a pressure per element) polish() instead of the backends.
-  NormalSolution solve_or_polish(const NormalSpec& control, const SolverOptions& solver, const ProgressCallback& progress,
-                                 const std::vector<double>* given);
+  void solve_or_polish(const NormalSpec& control, const SolverOptions& solver, const ProgressCallback& progress,
+                       const std::vector<double>* given, NormalSolution& result);
+
+  /// solve()'s program, attempts, results and the native solver's vectors, filled again.
+  struct SolveWork {
+    QuadraticProgram qp;
+    NormalSolution first, trial;
+    AttemptLedger<NormalSolution> ledger;
+    TimedOutcome run;
+    std::vector<std::string> order;
+    std::vector<double> w;  // C p of a point
+    NativeNormalWorkspace native;
+  };
+  SolveWork work_;
 
   std::shared_ptr<const LinearOperator> compliance_;
   Grid grid_;
   std::vector<double> heights_;
   std::vector<double> warm_start_;
+  mutable std::vector<double> certify_work_;  // certify()'s C p
   bool native_first_ = false;
   int exact_hessian_limit_ = 0;
   /// The native solver's FFT preconditioner: built at the first native solve, then reused.

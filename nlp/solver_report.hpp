@@ -53,6 +53,10 @@ struct SolverReport {
   std::vector<FailedAttempt> failed_attempts;  ///< the backends tried before (or instead of) this one
 };
 
+/// Back to a default report, the storage of its strings and lists kept: a report filled again
+/// at every step of a run then allocates nothing once its texts have been as long before.
+void reset_keeping_storage(SolverReport& report);
+
 const char* to_string(SolveStatus status);
 /// A number for messages: %.3g (never %f, which prints small residuals as 0.000001).
 std::string format_number(double value);
