@@ -146,7 +146,7 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
         // with the grid, and the half-space's travel under it is small against the contact.
         const std::array<double, 2> travel =
             finite_ ? std::array<double, 2>{0.0, 0.0} : std::array<double, 2>{V.x() * dt_, V.y() * dt_};
-        solution_ = tangential_->convected_step(load, increment, travel, solver);
+        tangential_->convected_step(load, increment, travel, solver, solution_);
       }
       alternations_ += std::max(1, solution_.outer.iterations);
     };
@@ -176,7 +176,7 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
     state_.n_slip = solution_.n_slip;
   } else {
     ++alternations_;
-    normal_solution_ = normal_->solve(load, solver_);
+    normal_->solve(load, solver_, normal_solution_);
     pressure = &normal_solution_.pressure;
     state_.certificate = normal_solution_.report.certificate.worst();
     state_.converged = normal_solution_.report.status == SolveStatus::converged;

@@ -113,13 +113,15 @@ void TangentialProblem::Impl::add_rigid_and_load(const std::vector<double>& W, c
 
 /// The slip increment (3.8) of a traction that vanishes outside `window`, computed on the
 /// window's elements; W + rigid outside (where f = 0, so tau = 0 and the slip is not certified).
-std::vector<double> TangentialProblem::Impl::windowed_slip_increment(const std::vector<double>& W,
-                                                                      const std::vector<double>& tau,
-                                                                      const SupportWindow& window,
-                                                                      const LinearOperator& ct_window,
-                                                                      const std::array<double, 3>& increment) const {
+/// Into ds, with the window's vectors the Impl's (no allocation once sized).
+void TangentialProblem::Impl::windowed_slip_increment(const std::vector<double>& W, const std::vector<double>& tau,
+                                                      const SupportWindow& window, const LinearOperator& ct_window,
+                                                      const std::array<double, 3>& increment,
+                                                      std::vector<double>& ds) const {
   const std::size_t Nw = window.size();
-  std::vector<double> ds(comps * N), tau_window(comps * Nw), ds_window;
+  std::vector<double>&tau_window = window_tau_work, &ds_window = window_ds_work;
+  ds.resize(comps * N);
+  tau_window.resize(comps * Nw);
   for (std::size_t l = 0; l < Nw; ++l)
     for (int c = 0; c < comps; ++c) tau_window[c * Nw + l] = tau[c * N + window.global(grid, l)];
   ct_window.apply(tau_window, ds_window);
@@ -131,7 +133,6 @@ std::vector<double> TangentialProblem::Impl::windowed_slip_increment(const std::
     }
   for (std::size_t l = 0; l < Nw; ++l)
     for (int c = 0; c < comps; ++c) ds[c * N + window.global(grid, l)] += ds_window[c * Nw + l];
-  return ds;
 }
 
 /// Resultants F_x, F_y, M_z of a traction field.

@@ -16,20 +16,24 @@ namespace dc {
 using tangential_internal::relative_change;
 
 /// The normal problem at the heights h, from the cache when it was solved for the same.
-NormalSolution TangentialProblem::Impl::solve_normal(const std::vector<double>& h, const NormalSpec& load,
-                                                     const SolverOptions& solver) {
+const NormalSolution& TangentialProblem::Impl::solve_normal(const std::vector<double>& h, const NormalSpec& load,
+                                                            const SolverOptions& solver) {
   if (normal_cache && normal_cache_load.control == load.control && normal_cache_load.value == load.value &&
       normal_cache_tol == solver.tol &&
       normal_cache_heights == h)
     return *normal_cache;
   normal->set_heights(h);
   normal->set_native_first(native_first || native_first_always);
-  NormalSolution s = sparse ? sparse->normal(h, load, solver) : normal->solve(load, solver);
-  normal_cache = s;
+  normal_cache_heights.clear();  // no key while the cache is being written (a throw leaves it unmatched)
+  if (!normal_cache) normal_cache.emplace();
+  if (sparse)
+    *normal_cache = sparse->normal(h, load, solver);
+  else
+    normal->solve(load, solver, *normal_cache);  // into the cache's own storage
   normal_cache_heights = h;
   normal_cache_load = load;
   normal_cache_tol = solver.tol;
-  return s;
+  return *normal_cache;
 }
 
 /// The outer loop (4.26)-(4.27) / (3.31)-(3.32) around an inner tangential solve: the pressure
@@ -132,7 +136,7 @@ bool TangentialProblem::Impl::outer_loop(TangentialSolution& sol, const NormalSp
     }
     was_exact = exact_pass;
     mixed = ++pairs > 1;
-    shift_in = mixer.next(shift_in, shift_out);
+    mixer.next(shift_in, shift_out, shift_in);
     // The next pass is exact once it is expected to end the loop (the residual contracts by
     // the last pass's factor), and so is the last pass allowed: an unsettled loop reports
     // exact solves' last iterate.
@@ -175,12 +179,12 @@ SolverOptions TangentialProblem::Impl::loose_pass(const SolverOptions& solver, d
 /// marching step. It enters through W alone (the previous displacement at the upstream point),
 /// so the slip ds = W + rigid + Ct tau and the gap function (4.24)-(4.25) of the certificate
 /// are those of the convected step.
-TangentialSolution TangentialProblem::Impl::solve_step(const NormalSpec& normal_load,
-                                                       const std::array<ModeControl, 3>& modes,
-                                                       const std::array<double, 3>& given_increment,
-                                                       const std::array<double, 2>& shift, const SolverOptions& solver,
-                                                       const ProgressCallback& progress) {
+void TangentialProblem::Impl::solve_step(const NormalSpec& normal_load, const std::array<ModeControl, 3>& modes,
+                                         const std::array<double, 3>& given_increment,
+                                         const std::array<double, 2>& shift, const SolverOptions& solver,
+                                         const ProgressCallback& progress, TangentialSolution& sol) {
   const std::size_t n = comps * N;
+  reset_keeping_storage(sol);
   // The step's vectors are the Impl's (no allocation once sized).
   std::vector<double>&u_prev = step_u_prev, &W = step_W, &w21 = step_w21, &f = step_f;
   const bool marching = shift[0] == 1.0 && shift[1] == 0.0 && Ct_up;
@@ -191,29 +195,38 @@ TangentialSolution TangentialProblem::Impl::solve_step(const NormalSpec& normal_
     convected_displacement(shift[0], shift[1], u_prev);
   }
 
-  TangentialSolution sol;
   std::vector<double>& tau = step_tau;
   if (tau_warm.size() == n) tau = tau_warm;
   else tau.assign(n, 0.0);
   W.resize(n);
-  InnerResult inner;
+  InnerResult& inner = step_inner;
+  // What the inner solve reads, behind one pointer (a closure of two pointers is held by
+  // std::function without an allocation).
+  struct Pass {
+    const std::array<ModeControl, 3>& modes;
+    const std::array<double, 3>& given_increment;
+    const std::array<double, 2>& shift;
+    const ProgressCallback& progress;
+  } pass_data{modes, given_increment, shift, progress};
   outer_loop(sol, normal_load, solver, tau, f, true,
-             [&](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t,
-                 const SolverOptions& pass) {
+             [this, &pass_data](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t,
+                           const SolverOptions& pass) {
+               std::vector<double>&u = step_u_prev, &Wp = step_W, &w = step_w21;
+               const std::size_t m = comps * N;
                // Where friction acts, the memory must be exact: an element whose interpolated
                // memory needed a value beyond the grid's edge takes the apply's.
                if (!memory_beyond_grid.empty() &&
                    std::any_of(memory_beyond_grid.begin(), memory_beyond_grid.end(),
                                [&](std::size_t e) { return bound[e] > 0.0; }))
-                 convected_displacement(shift[0], shift[1], u_prev, true);
+                 convected_displacement(pass_data.shift[0], pass_data.shift[1], u, true);
                // (4.27): W = kappa B21 p - u_prev.
-               for (std::size_t i = 0; i < n; ++i) W[i] = -u_prev[i];
+               for (std::size_t i = 0; i < m; ++i) Wp[i] = -u[i];
                if (coupled) {
-                 B21->apply(p, w21);
-                 for (std::size_t i = 0; i < n; ++i) W[i] += w21[i];
+                 B21->apply(p, w);
+                 for (std::size_t i = 0; i < m; ++i) Wp[i] += w[i];
                }
-               inner = solve_tangential(W, bound, modes, given_increment, pass, progress);
-               t = inner.tau;
+               solve_tangential(Wp, bound, pass_data.modes, pass_data.given_increment, pass, pass_data.progress, step_inner);
+               t = step_inner.tau;
                return true;
              });
   // Results: slip increment ds = W + rigid + Ct tau (3.8), certificate, states.
@@ -230,7 +243,6 @@ TangentialSolution TangentialProblem::Impl::solve_step(const NormalSpec& normal_
   if (coupled)
     for (std::size_t i = 0; i < n; ++i) displacement_prev[i] += w21[i];
   sol.amplitudes = inner.increment;
-  return sol;
 }
 
 }  // namespace dc

@@ -83,7 +83,8 @@ TangentialSolution TangentialProblem::step(const TangentialLoad& load, const Sol
     s.tau_warm = std::move(tau_start);
     s.normal->set_warm_start(std::move(p_start));
   }
-  TangentialSolution sol = s.solve_step(load.normal, load.modes, increment, {0.0, 0.0}, solver, progress);
+  TangentialSolution sol;
+  s.solve_step(load.normal, load.modes, increment, {0.0, 0.0}, solver, progress, sol);
   for (int k = 0; k < 3; ++k) sol.amplitudes[k] += s.amplitude_prev[k];
   s.amplitude_prev = sol.amplitudes;
   if (s.coupled && sol.report.status == SolveStatus::converged)
@@ -183,7 +184,8 @@ TangentialSolution TangentialProblem::roll(const RollingLoad& load, double dista
     // No travel, no convective term: the quasi-static step (2.16) of the same controls; a
     // creepage applies no rigid slip over zero distance, a prescribed force is carried by a shift.
     if (!(load.velocity > 0.0)) throw InputError("tangential.velocity", "the rolling speed must be positive");
-    TangentialSolution sol = s.solve_step(load.normal, load.modes, {0.0, 0.0, 0.0}, {0.0, 0.0}, solver, progress);
+    TangentialSolution sol;
+    s.solve_step(load.normal, load.modes, {0.0, 0.0, 0.0}, {0.0, 0.0}, solver, progress, sol);
     for (int k = 0; k < 3; ++k) s.amplitude_prev[k] += sol.amplitudes[k];
     return sol;  // amplitudes: the rigid shift (m, m, rad) of this step; marching_steps = 0
   }
@@ -212,6 +214,14 @@ TangentialSolution TangentialProblem::roll(const RollingLoad& load, double dista
 
 TangentialSolution TangentialProblem::convected_step(const NormalSpec& normal, const std::array<double, 3>& increment,
                                                    const std::array<double, 2>& travel, const SolverOptions& solver) {
+  TangentialSolution sol;
+  convected_step(normal, increment, travel, solver, sol);
+  return sol;
+}
+
+void TangentialProblem::convected_step(const NormalSpec& normal, const std::array<double, 3>& increment,
+                                       const std::array<double, 2>& travel, const SolverOptions& solver,
+                                       TangentialSolution& sol) {
   Impl& s = *impl_;
   if (!std::isfinite(travel[0]) || !std::isfinite(travel[1])) throw InputError("travel", "must be finite");
   // 2-D (plane strain): there is no y direction to travel along, so a y travel is a caller's
@@ -234,9 +244,8 @@ TangentialSolution TangentialProblem::convected_step(const NormalSpec& normal, c
   // convected: it would change the memory 1000 times less than the solver's tolerance, and cost
   // two more operator applies per step (and, below zero, the operators of the shift -1).
   if (std::abs(shift_y) < 1e-12) shift_y = 0.0;
-  TangentialSolution sol = s.solve_step(normal, modes, increment, {travel[0] / s.grid.dx, shift_y}, solver, {});
+  s.solve_step(normal, modes, increment, {travel[0] / s.grid.dx, shift_y}, solver, {}, sol);
   for (int k = 0; k < 3; ++k) s.amplitude_prev[k] += sol.amplitudes[k];
-  return sol;
 }
 
 TangentialMemory TangentialProblem::memory() const {
@@ -305,6 +314,27 @@ const LinearOperator* TangentialProblem::convective_from_normal() {
   if (!s.half_space) throw InputError("tangential.regime", "convection is not available for a finite body");
   if (!s.D21_conv) s.D21_conv = s.half_space->tangential_from_normal_convective(1, s.kind);
   return s.D21_conv.get();
+}
+
+void reset_keeping_storage(TangentialSolution& solution) {
+  NormalSolution normal = std::move(solution.normal);
+  SolverReport report = std::move(solution.report);
+  std::vector<double> tx = std::move(solution.tx), ty = std::move(solution.ty), sx = std::move(solution.sx),
+                      sy = std::move(solution.sy), bound = std::move(solution.bound);
+  std::vector<int> state = std::move(solution.state);
+  reset_keeping_storage(normal);
+  reset_keeping_storage(report);
+  for (std::vector<double>* v : {&tx, &ty, &sx, &sy, &bound}) v->clear();
+  state.clear();
+  solution = TangentialSolution{};
+  solution.normal = std::move(normal);
+  solution.report = std::move(report);
+  solution.tx = std::move(tx);
+  solution.ty = std::move(ty);
+  solution.sx = std::move(sx);
+  solution.sy = std::move(sy);
+  solution.bound = std::move(bound);
+  solution.state = std::move(state);
 }
 
 std::vector<double> rolling_warm_start(const TangentialSolution& solution, int dimension) {

@@ -63,6 +63,9 @@ struct TangentialSolution {
   bool shift_undetermined = false;   ///< no friction (mu = 0): the resultant-controlled rigid modes have no unique value
 };
 
+/// Back to a default solution, the storage of its fields and reports kept (solver_report.hpp).
+void reset_keeping_storage(TangentialSolution& solution);
+
 /// A solution's traction in RollingLoad::warm_start's layout (tau_x of every element, then tau_y
 /// in 3-D): the start of a steady-rolling solve at nearby data (a neighbouring table point, the
 /// next dynamic step).
@@ -176,6 +179,9 @@ class TangentialProblem {
   /// heights. The memory advances (restore() to undo).
   TangentialSolution convected_step(const NormalSpec& normal, const std::array<double, 3>& increment,
                                     const std::array<double, 2>& travel, const SolverOptions& solver);
+  /// The same into `solution`, whose storage it fills again (a dynamic run's every step).
+  void convected_step(const NormalSpec& normal, const std::array<double, 3>& increment,
+                      const std::array<double, 2>& travel, const SolverOptions& solver, TangentialSolution& solution);
   TangentialMemory memory() const;
   /// The same into `into`, reusing its vectors (a dynamic run's commit of every step).
   void save_memory(TangentialMemory& into) const;

@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "anderson_mixing.hpp"
+#include "backend_choice.hpp"
+#include "certified_solve.hpp"
 #include "native_solvers.hpp"
 #include "proportional_predictor.hpp"
 #include "support_window.hpp"
@@ -138,10 +140,25 @@ struct TangentialProblem::Impl {
   double resultant_capacity(int k, const std::vector<double>& f) const;
   /// Prescribed resultants below what friction can carry, else gross sliding (InputError).
   void check_resultants(const std::vector<double>& f, const std::array<ModeControl, 3>& modes) const;
-  /// The convex program of one step, solved and certified.
-  InnerResult solve_tangential(const std::vector<double>& W, const std::vector<double>& f,
-                               const std::array<ModeControl, 3>& modes, const std::array<double, 3>& given_increment,
-                               const SolverOptions& solver, const ProgressCallback& progress);
+  /// The convex program of one step, solved and certified, into `result`.
+  void solve_tangential(const std::vector<double>& W, const std::vector<double>& f,
+                        const std::array<ModeControl, 3>& modes, const std::array<double, 3>& given_increment,
+                        const SolverOptions& solver, const ProgressCallback& progress, InnerResult& result);
+  /// solve_tangential's program, attempts, results and certificate vectors, filled again at
+  /// every solve (its native solver writes into `run`'s outcome).
+  struct ProgramWork {
+    QuadraticProgram qp;
+    InnerResult first, trial;
+    AttemptLedger<InnerResult> ledger;
+    TimedOutcome run;
+    std::vector<std::string> order;
+    std::vector<double> ds, ct_tau;
+  };
+  ProgramWork program_work;
+  NativeSolverInto native_solver = [this](const QuadraticProgram& q, const SolveOptions& o, SolveOutcome& out) {
+    solve_tangential_native(q, o, native_work, out);
+  };
+  InnerResult step_inner;  // solve_step's inner solve
   /// No friction anywhere (f(p) = 0): tau = 0, nothing to solve.
   InnerResult frictionless(const std::array<double, 3>& given_increment, const std::array<ModeControl, 3>& modes,
                            const SolverOptions& solver) const;
@@ -157,10 +174,11 @@ struct TangentialProblem::Impl {
   /// ds += W + rigid slip of the increments (3.8).
   void add_rigid_and_load(const std::vector<double>& W, const std::array<double, 3>& increment,
                           std::vector<double>& ds) const;
-  /// The slip increment (3.8) of a traction that vanishes outside `window`.
-  std::vector<double> windowed_slip_increment(const std::vector<double>& W, const std::vector<double>& tau,
-                                              const SupportWindow& window, const LinearOperator& ct_window,
-                                              const std::array<double, 3>& increment) const;
+  /// The slip increment (3.8) of a traction that vanishes outside `window`, into ds.
+  void windowed_slip_increment(const std::vector<double>& W, const std::vector<double>& tau,
+                               const SupportWindow& window, const LinearOperator& ct_window,
+                               const std::array<double, 3>& increment, std::vector<double>& ds) const;
+  mutable std::vector<double> window_tau_work, window_ds_work;  // windowed_slip_increment's
   /// Resultants F_x, F_y, M_z of a traction field.
   std::array<double, 3> resultants(const std::vector<double>& tau) const;
   /// The tangential certificate of a step: friction law, gap function, prescribed resultants.
@@ -175,7 +193,7 @@ struct TangentialProblem::Impl {
   using InnerSolve = std::function<bool(const std::vector<double>& p, const std::vector<double>& f,
                                         std::vector<double>& tau, const SolverOptions& pass)>;
   /// The normal problem at the heights h, from normal_cache when it was solved for the same.
-  NormalSolution solve_normal(const std::vector<double>& h, const NormalSpec& load, const SolverOptions& solver);
+  const NormalSolution& solve_normal(const std::vector<double>& h, const NormalSpec& load, const SolverOptions& solver);
   /// The outer loop around `inner` (false: the inner solve gave up).
   bool outer_loop(TangentialSolution& sol, const NormalSpec& normal_load, const SolverOptions& solver,
                   std::vector<double>& tau, std::vector<double>& f, bool inexact, const InnerSolve& inner);
@@ -184,10 +202,10 @@ struct TangentialProblem::Impl {
                                    const NormalSpec& normal_load);
   /// The solver of an inexact alternation: tolerance `tol`.
   static SolverOptions loose_pass(const SolverOptions& solver, double tol);
-  /// One step with the outer loop; `shift` (elements) the travel of the step.
-  TangentialSolution solve_step(const NormalSpec& normal_load, const std::array<ModeControl, 3>& modes,
-                                const std::array<double, 3>& given_increment, const std::array<double, 2>& shift,
-                                const SolverOptions& solver, const ProgressCallback& progress);
+  /// One step with the outer loop into `sol` (its storage kept); `shift` (elements) the travel.
+  void solve_step(const NormalSpec& normal_load, const std::array<ModeControl, 3>& modes,
+                  const std::array<double, 3>& given_increment, const std::array<double, 2>& shift,
+                  const SolverOptions& solver, const ProgressCallback& progress, TangentialSolution& sol);
 
   // Rolling (tangential_rolling.cpp).
   /// Steady rolling by Newton inside the outer loop; empty when Newton gives up (why_not).

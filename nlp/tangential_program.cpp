@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "active_set_polish.hpp"
@@ -66,9 +67,14 @@ void TangentialProblem::Impl::check_resultants(const std::vector<double>& f,
 
 /// The convex program of one step: min 1/2 tau'Ct tau + W'tau over |tau| <= f, with the
 /// resultant-controlled modes as equality rows; W excludes the resultant-controlled modes.
-TangentialProblem::Impl::InnerResult TangentialProblem::Impl::solve_tangential(
-    const std::vector<double>& W, const std::vector<double>& f, const std::array<ModeControl, 3>& modes,
-    const std::array<double, 3>& given_increment, const SolverOptions& solver, const ProgressCallback& progress) {
+/// The program, the attempts and their results are the Impl's (program_work), filled again:
+/// a solve repeated at every step of a run allocates nothing once they are sized.
+void TangentialProblem::Impl::solve_tangential(const std::vector<double>& W, const std::vector<double>& f,
+                                               const std::array<ModeControl, 3>& modes,
+                                               const std::array<double, 3>& given_increment,
+                                               const SolverOptions& solver, const ProgressCallback& progress,
+                                               InnerResult& result) {
+  ProgramWork& work = program_work;
   const double A = grid.area();
   const double ct0 = Ct->diagonal(0);
   const double f_ref = std::max(max_abs(f), 1e-300);
@@ -88,12 +94,16 @@ TangentialProblem::Impl::InnerResult TangentialProblem::Impl::solve_tangential(
   const TangentialPreconditioner* preconditioner = ops ? ops->preconditioner.get() : grid_preconditioner();
   std::optional<ScaledOperator> Q_inverse;
   if (preconditioner) Q_inverse.emplace(*preconditioner, ct0);
-  QuadraticProgram qp;
+  QuadraticProgram& qp = work.qp;
   qp.Q = &Q;
-  if (Q_inverse) qp.preconditioner = &*Q_inverse;
+  qp.preconditioner = Q_inverse ? &*Q_inverse : nullptr;
+  qp.block = nullptr;
   qp.c.resize(nw);
   qp.lower.assign(nw, -kInf);
   qp.upper.assign(nw, kInf);
+  qp.disks.clear();
+  qp.equalities.clear();
+  qp.x0.clear();
   for (std::size_t l = 0; l < Nw; ++l) {
     const std::size_t e = element(l);
     for (int c = 0; c < comps; ++c) {
@@ -135,20 +145,27 @@ TangentialProblem::Impl::InnerResult TangentialProblem::Impl::solve_tangential(
   }
   SolveOptions options = solve_options(solver, progress);
   if (exact_hessian_limit > 0) options.exact_hessian_limit = exact_hessian_limit;
-  SparseBlock body_rows;
+  std::optional<SparseBlock> body_rows;  // only the sparse form has them (an empty block allocates)
   if (sparse) {
     const double n_active = static_cast<double>(std::count_if(f.begin(), f.end(), [](double b) { return b > 0.0; }));
     body_rows = sparse->body_rows(f_ref, A * ct0 * f_ref * f_ref, f_ref * A * std::max(1.0, 0.25 * n_active));
-    qp.block = &body_rows;
+    qp.block = &*body_rows;
     options.exact_hessian_limit = sparse->exact_hessian_limit;
   }
-  if (std::all_of(f.begin(), f.end(), [](double b) { return b <= 0.0; })) return frictionless(given_increment, modes, solver);
+  if (std::all_of(f.begin(), f.end(), [](double b) { return b <= 0.0; })) {
+    result = frictionless(given_increment, modes, solver);
+    return;
+  }
 
-  InnerResult first;
+  InnerResult& first = work.first;
+  first.tau.clear();
+  first.shift_undetermined = false;
+  reset_keeping_storage(first.report);
   first.report.requested = to_string(solver.backend);
   first.report.operator_kind = sparse ? "sparse+" + sparse->halfspace->kind() : Ct->kind();
   first.increment = given_increment;
-  AttemptLedger<InnerResult> ledger(first);
+  AttemptLedger<InnerResult>& ledger = work.ledger;
+  ledger.restart(first);
   // The condensed program: the same program with the body's rows eliminated (Q the condensed
   // compliance, no block); the program itself when it has no block (no copy).
   ScaledOperator condensed_q(*Ct, 1.0 / ct0);
@@ -183,11 +200,11 @@ TangentialProblem::Impl::InnerResult TangentialProblem::Impl::solve_tangential(
     // Our own certificate decides, as for the normal problem: `auto` falls back on it.
     // On a window the slip is computed there alone: tau = 0 and f = 0 outside, where the
     // certificate does not look at the slip (certify_friction).
-    rep.certificate = step_certificate(
-        trial.tau,
-        ops ? windowed_slip_increment(W, trial.tau, window, *ops->compliance, trial.increment)
-            : slip_increment(W, trial.tau, trial.increment),
-        f, modes);
+    if (ops)
+      windowed_slip_increment(W, trial.tau, window, *ops->compliance, trial.increment, work.ds);
+    else
+      slip_increment(W, trial.tau, trial.increment, work.ds, work.ct_tau);
+    rep.certificate = step_certificate(trial.tau, work.ds, f, modes);
     const bool certified = rep.certificate.worst() <= solver.certificate_tol;
     rep.status = certified ? SolveStatus::converged : SolveStatus::not_converged;
   };
@@ -195,12 +212,11 @@ TangentialProblem::Impl::InnerResult TangentialProblem::Impl::solve_tangential(
   // keeps the first certified result, else the best certificate.
   const auto attempt = [&](const std::string& backend, const QuadraticProgram& program, bool fallback,
                            const std::string& label) {
-    const TimedOutcome run =
-        run_backend(backend, program, options, [this](const QuadraticProgram& q, const SolveOptions& o) {
-          return solve_tangential_native(q, o, native_work);
-        });
+    TimedOutcome& run = work.run;
+    run_backend(backend, program, options, native_solver, run);
     const SolveOutcome& out = run.outcome;
-    InnerResult trial = first;
+    InnerResult& trial = work.trial;
+    trial = first;
     SolverReport& rep = trial.report;
     rep.operator_kind = program.block ? "sparse+" + sparse->halfspace->kind() : Ct->kind();
     rep.backend = label;
@@ -220,10 +236,14 @@ TangentialProblem::Impl::InnerResult TangentialProblem::Impl::solve_tangential(
       const auto polished = finish_backend_point(backend, out, condensed, solver.certificate_tol, trial, certify_point);
       if (polished) rep.objective = condensed.objective(polished->data()) * ct0 * f_ref * f_ref * A;
     }
-    ledger.record(std::move(trial), has_point, out.history);
+    ledger.record_swapping(trial, has_point, out.history);
   };
-  const auto order = sparse ? sparse->backends(solver.backend, solver.fallback) : backend_order(solver.backend, native_first || native_first_always ? std::numeric_limits<std::size_t>::max() : n,
-                    solver.fallback);
+  std::vector<std::string>& order = work.order;
+  if (sparse)
+    order = sparse->backends(solver.backend, solver.fallback);
+  else
+    backend_order(solver.backend, native_first || native_first_always ? std::numeric_limits<std::size_t>::max() : n,
+                  solver.fallback, order);
   for (std::size_t k = 0; k < order.size() && !ledger.converged(); ++k) attempt(order[k], qp, k > 0, order[k]);
   // The sparse form failed with `auto`: the same program with the body's rows eliminated (Q the
   // condensed compliance, no block), as for the normal problem (FiniteContact::solve_sparse).
@@ -234,9 +254,8 @@ TangentialProblem::Impl::InnerResult TangentialProblem::Impl::solve_tangential(
       if (ledger.converged()) break;
     }
   }
-  InnerResult best = std::move(ledger).finish();
-  if (best.tau.empty()) best.tau.assign(n, 0.0);  // every backend failed: nothing to keep
-  return best;
+  ledger.finish_into(result);
+  if (result.tau.empty()) result.tau.assign(n, 0.0);  // every backend failed: nothing to keep
 }
 
 /// No friction anywhere (f(p) = 0: mu = 0): nothing to solve, tau = 0. Only zero resultants

@@ -128,7 +128,7 @@ TangentialProblem::Impl::March TangentialProblem::Impl::march(const RollingLoad&
   March m;
   for (m.steps = 1; m.steps <= max_steps; ++m.steps) {
     const std::vector<double> input = tau_prev;
-    m.sol = solve_step(load.normal, load.modes, increment, {1.0, 0.0}, step_solver, {});
+    solve_step(load.normal, load.modes, increment, {1.0, 0.0}, step_solver, {}, m.sol);
     if (m.sol.report.status != SolveStatus::converged && m.first_unconverged == 0) m.first_unconverged = m.steps;
     if (m.sol.report.status == SolveStatus::failed) break;
     for (int k = 0; k < 3; ++k) amplitude_prev[k] += m.sol.amplitudes[k];
