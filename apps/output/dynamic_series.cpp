@@ -1,23 +1,53 @@
 #include "dynamic_series.hpp"
 
+#include <charconv>
 #include <cstdio>
 #include <sstream>
 
 namespace dc::output {
 
+namespace {
+
+/// Appends `value` as printf's %.{precision}g would, and `separator` (std::to_chars: no locale,
+/// no allocation; glibc's printf takes heap scratch space for some doubles).
+char* put(char* at, char* end, double value, int precision, char separator) {
+  at = std::to_chars(at, end, value, std::chars_format::general, precision).ptr;
+  *at++ = separator;
+  return at;
+}
+
+char* put(char* at, char* end, int value, char separator) {
+  at = std::to_chars(at, end, value).ptr;
+  *at++ = separator;
+  return at;
+}
+
+}  // namespace
+
 void append_timeseries_row(std::ostream& out, const dynamics::DynamicSample& s) {
   const auto& st = s.state;
   const auto& cs = s.contact_state;
   char line[1024];
-  std::snprintf(line, sizeof line,
-                "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.6g,"
-                "%.8g,%.8g,%d,%d,%d,%.10g,%.3g,%d,%d,%d\n",
-                st.time, st.position.x(), st.position.y(), st.position.z(), st.velocity.x(), st.velocity.y(),
-                st.velocity.z(), st.omega.x(), st.omega.y(), st.omega.z(), s.contact.force.x(), s.contact.force.y(),
-                s.contact.force.z(), s.contact.moment.x(), s.contact.moment.y(), s.contact.moment.z(), cs.creepage,
-                cs.stick_fraction, cs.in_contact ? cs.approach : 0.0, cs.contact_area, cs.n_contact, cs.n_stick,
-                cs.n_slip, s.kinetic_energy, cs.certificate, s.newton_iterations, s.contact_solves, s.alternations);
-  out << line;
+  char* const end = line + sizeof line;
+  char* at = line;
+  for (double v : {st.time, st.position.x(), st.position.y(), st.position.z(), st.velocity.x(), st.velocity.y(),
+                   st.velocity.z(), st.omega.x(), st.omega.y(), st.omega.z()})
+    at = put(at, end, v, 10, ',');
+  for (double v : {s.contact.force.x(), s.contact.force.y(), s.contact.force.z(), s.contact.moment.x(),
+                   s.contact.moment.y(), s.contact.moment.z(), cs.creepage})
+    at = put(at, end, v, 8, ',');
+  at = put(at, end, cs.stick_fraction, 6, ',');
+  at = put(at, end, cs.in_contact ? cs.approach : 0.0, 8, ',');
+  at = put(at, end, cs.contact_area, 8, ',');
+  at = put(at, end, cs.n_contact, ',');
+  at = put(at, end, cs.n_stick, ',');
+  at = put(at, end, cs.n_slip, ',');
+  at = put(at, end, s.kinetic_energy, 10, ',');
+  at = put(at, end, cs.certificate, 3, ',');
+  at = put(at, end, s.newton_iterations, ',');
+  at = put(at, end, s.contact_solves, ',');
+  at = put(at, end, s.alternations, '\n');
+  out.write(line, at - line);
 }
 
 std::vector<DynamicPlotSeries> dynamic_plot_series(int dimension) {
