@@ -75,7 +75,23 @@ bool AndersonMixing::least_squares(std::size_t n, int m) {
   const Eigen::Index pivots = qr.nonzeroPivots();
   gamma_.assign(m, 0.0);
   if (pivots == 0) return true;
-  c_.applyOnTheLeft(qr.householderQ().setLength(pivots).adjoint());
+  // c = Q' c: the reflectors H_0, ..., H_{pivots-1} in turn, each as Eigen's
+  // applyHouseholderOnTheLeft on one column (whose outer-product temporary this avoids).
+  const Eigen::MatrixXd& factors = qr.matrixQR();
+  for (Eigen::Index k = 0; k < pivots; ++k) {
+    const double tau = qr.hCoeffs()(k);
+    const Eigen::Index length = rows - k;
+    auto v = c_.tail(length);
+    if (length == 1) {
+      v(0) *= 1.0 - tau;
+    } else if (tau != 0.0) {
+      const auto essential = factors.col(k).tail(length - 1);
+      double t = essential.dot(v.tail(length - 1));
+      t += v(0);
+      v(0) -= tau * t;
+      v.tail(length - 1) -= (tau * essential) * t;
+    }
+  }
   qr.matrixQR().topLeftCorner(pivots, pivots).template triangularView<Eigen::Upper>().solveInPlace(c_.topRows(pivots));
   for (Eigen::Index i = 0; i < pivots; ++i) gamma_[qr.colsPermutation().indices().coeff(i)] = c_(i);
   return true;
