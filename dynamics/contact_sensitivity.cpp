@@ -35,12 +35,14 @@ void TangentialSensitivity::solve_stick(const LinearOperator& op, bool symmetric
     }
   if (!(rr > 0.0)) return;
   if (!symmetric) {
-    const VectorMap apply = [&](const std::vector<double>& in, std::vector<double>& out) {
+    const auto rows = [&](const std::vector<double>& in, std::vector<double>& out) {
       op.apply(in, out);
       for (std::size_t e = 0; e < N; ++e)
         for (int c = 0; c < comps; ++c)
           if (!stick(e)) out[c * N + e] = in[c * N + e];  // identity off the stick set
     };
+    // std::function holds a closure of one reference in its own buffer (no allocation per call).
+    const VectorMap apply = [&rows](const std::vector<double>& in, std::vector<double>& out) { rows(in, out); };
     gmres(apply, {}, r_, x_, 1e-8, 40, 400, gmres_work_);
     return;
   }
@@ -144,7 +146,7 @@ Eigen::Matrix3d TangentialSensitivity::compute_full(const LinearOperator& Ct, co
       }
     }
   };
-  const VectorMap apply = [&](const std::vector<double>& in, std::vector<double>& out) {
+  const auto rows = [&](const std::vector<double>& in, std::vector<double>& out) {
     out.assign(m, 0.0);
     for (std::size_t e = 0; e < N; ++e)
       for (int c = 0; c < comps; ++c) full_[c * N + e] = contact(e) ? in[c * N + e] : 0.0;
@@ -173,7 +175,7 @@ Eigen::Matrix3d TangentialSensitivity::compute_full(const LinearOperator& Ct, co
   };
   // Block-Jacobi preconditioner: each element's own rows (stick: c_ee; slip: ct0 (I + g c_ee P),
   // whose inverse is (I - g c_ee/(1 + g c_ee) P)/ct0 with P = I - s s' a projector; normal: c0).
-  const VectorMap precondition = [&](const std::vector<double>& in, std::vector<double>& out) {
+  const auto block_jacobi = [&](const std::vector<double>& in, std::vector<double>& out) {
     out = in;
     for (std::size_t e = 0; e < N; ++e) {
       if (stick(e)) {
@@ -190,6 +192,11 @@ Eigen::Matrix3d TangentialSensitivity::compute_full(const LinearOperator& Ct, co
       }
       if (coupled && contact(e)) out[n + e] = in[n + e] / c0;
     }
+  };
+  // std::function holds a closure of one reference in its own buffer (no allocation per call).
+  const VectorMap apply = [&rows](const std::vector<double>& in, std::vector<double>& out) { rows(in, out); };
+  const VectorMap precondition = [&block_jacobi](const std::vector<double>& in, std::vector<double>& out) {
+    block_jacobi(in, out);
   };
   b_.assign(m, 0.0);
   x_.assign(m, 0.0);

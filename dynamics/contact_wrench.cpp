@@ -133,14 +133,15 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
   if (tangential_) {
     auto solve = [&](const SolverOptions& solver) {
       if (steady_step) {
-        RollingLoad rolling;
+        RollingLoad& rolling = rolling_;  // its warm start's storage kept from step to step
         rolling.normal = load;
         rolling.velocity = V.x();
         // Newton on the steady equations starts from the last solve's traction (the last trial
         // of this step, or the last accepted step's): nearby data, as a table's neighbour.
-        if (solution_.tx.size() == g.size()) rolling.warm_start = rolling_warm_start(solution_, g.dimension);
+        if (solution_.tx.size() == g.size()) rolling_warm_start(solution_, g.dimension, rolling.warm_start);
+        else rolling.warm_start.clear();
         for (int m = 0; m < 3; ++m) rolling.modes[m].value = increment[m] / (V.x() * dt_);
-        solution_ = tangential_->steady_rolling(rolling, solver);
+        tangential_->steady_rolling(rolling, solver, solution_);
       } else {
         // An fe_body's memory is not convected (shift and torsion, (2.16)): its surface moves
         // with the grid, and the half-space's travel under it is small against the contact.

@@ -101,6 +101,7 @@ class ContactWrench {
   TangentialMemory committed_;
   TangentialSensitivity sensitivity_;
   TangentialSolution solution_;
+  RollingLoad rolling_;  // the steady model's load of the last solve
   NormalSolution normal_solution_;
   ContactState state_;
   StepKinematics last_{};

@@ -22,23 +22,38 @@
 #include "vector_ops.hpp"
 
 namespace dc {
-namespace {
 
 using Vec = std::vector<double>;
 
+/// Newton's method on the steady equations; kept by a SteadyRollingWorkspace, so that its
+/// vectors, the Krylov basis and the iterates serve the next solve (no allocation once sized).
 class SteadyRollingNewton {
  public:
-  SteadyRollingNewton(const SteadyRollingProgram& p, const SolveOptions& o)
-      : p_(p), options_(o), comps_(p.comps), N_(p.bound.size()), n_(comps_ * N_), m_(p.modes.size()) {}
+  /// Solves `p` into `out` (its vectors and message refilled).
+  void solve(const SteadyRollingProgram& p, const SolveOptions& o, SteadyRollingOutcome& out) {
+    p_ = &p;
+    options_ = o;
+    comps_ = p.comps;
+    N_ = p.bound.size();
+    n_ = comps_ * N_;
+    m_ = p.modes.size();
+    applies_ = 0;
+    out.success = false;
+    out.newton_iterations = out.operator_applies = 0;
+    out.residual = 0.0;
+    out.message.clear();
+    iterate(out);
+  }
 
-  SteadyRollingOutcome solve();
+ private:
+  void iterate(SteadyRollingOutcome& out);
 
  private:
   // x = (t, a^): n_ + m_ entries.
   /// s^ of x into s_ (one apply of D).
   void slip(const Vec& x) {
     std::copy(x.begin(), x.begin() + n_, t_.begin());
-    p_.D->apply(t_, s_);
+    p_->D->apply(t_, s_);
     ++applies_;
     for (std::size_t i = 0; i < n_; ++i) {
       s_[i] = r_ * s_[i] + b_hat_[i];
@@ -78,8 +93,8 @@ class SteadyRollingNewton {
     }
     for (std::size_t k = 0; k < m_; ++k) {
       double sum = 0.0;
-      for (std::size_t i = 0; i < n_; ++i) sum += p_.modes[k][i] * x[i];
-      out[n_ + k] = (sum * p_.area * f_ref_ - p_.resultants[k]) / capacity_[k];
+      for (std::size_t i = 0; i < n_; ++i) sum += p_->modes[k][i] * x[i];
+      out[n_ + k] = (sum * p_->area * f_ref_ - p_->resultants[k]) / capacity_[k];
     }
   }
 
@@ -107,7 +122,7 @@ class SteadyRollingNewton {
   /// out = J v.
   void jacobian(const Vec& v, Vec& out) {
     std::copy(v.begin(), v.begin() + n_, t_.begin());
-    p_.D->apply(t_, ds_);
+    p_->D->apply(t_, ds_);
     ++applies_;
     for (std::size_t i = 0; i < n_; ++i) {
       ds_[i] *= r_;
@@ -129,8 +144,8 @@ class SteadyRollingNewton {
     }
     for (std::size_t k = 0; k < m_; ++k) {
       double sum = 0.0;
-      for (std::size_t i = 0; i < n_; ++i) sum += p_.modes[k][i] * v[i];
-      out[n_ + k] = sum * p_.area * f_ref_ / capacity_[k];
+      for (std::size_t i = 0; i < n_; ++i) sum += p_->modes[k][i] * v[i];
+      out[n_ + k] = sum * p_->area * f_ref_ / capacity_[k];
     }
   }
 
@@ -155,62 +170,62 @@ class SteadyRollingNewton {
     }
   }
 
-  const SteadyRollingProgram& p_;
+  const SteadyRollingProgram* p_ = nullptr;
   SolveOptions options_;
-  int comps_;
-  std::size_t N_, n_, m_;
+  int comps_ = 2;
+  std::size_t N_ = 0, n_ = 0, m_ = 0;
   double f_ref_ = 1.0, r_ = 1.0;
   double g_[2] = {1.0, 1.0};
   Vec rho_, b_hat_, capacity_, scale_mode_;
   std::vector<Vec> m_hat_;
   Vec t_, s_, ds_, zhat_, ratio_;
   std::vector<unsigned char> state_;
-  GmresWorkspace gmres_work_;  // the Newton iterations' Krylov basis, allocated once per solve
+  GmresWorkspace gmres_work_;  // the Newton iterations' Krylov basis, kept between solves
+  Vec x_, F_, x_trial_, F_trial_, d_, rhs_, merits_;  // iterate()'s
   int applies_ = 0;
 };
 
-SteadyRollingOutcome SteadyRollingNewton::solve() {
-  SteadyRollingOutcome out;
+void SteadyRollingNewton::iterate(SteadyRollingOutcome& out) {
   out.amplitudes.assign(m_, 0.0);
   out.tau.assign(n_, 0.0);
-  if (!p_.D || p_.D->rows() != n_ || p_.b.size() != n_ || p_.resultants.size() != m_ ||
-      (!p_.tau0.empty() && p_.tau0.size() != n_)) {
+  if (!p_->D || p_->D->rows() != n_ || p_->b.size() != n_ || p_->resultants.size() != m_ ||
+      (!p_->tau0.empty() && p_->tau0.size() != n_)) {
     out.message = "invalid program";
-    return out;
+    return;
   }
-  f_ref_ = max_abs(p_.bound);
+  f_ref_ = max_abs(p_->bound);
   if (!(f_ref_ > 0.0)) {
     out.success = m_ == 0;
     out.message = out.success ? "no friction: zero traction" : "no friction can carry the resultants";
-    return out;
+    return;
   }
-  const double d0 = p_.D->diagonal(0);
+  const double d0 = p_->D->diagonal(0);
   if (!(d0 > 0.0)) {
     out.message = "invalid program: the convective compliance has no positive diagonal";
-    return out;
+    return;
   }
   r_ = 1.0 / d0;
-  for (int c = 0; c < comps_; ++c) g_[c] = r_ * p_.D->diagonal(c * N_);
+  for (int c = 0; c < comps_; ++c) g_[c] = r_ * p_->D->diagonal(c * N_);
   rho_.resize(N_);
-  for (std::size_t e = 0; e < N_; ++e) rho_[e] = std::max(p_.bound[e], 0.0) / f_ref_;
+  for (std::size_t e = 0; e < N_; ++e) rho_[e] = std::max(p_->bound[e], 0.0) / f_ref_;
   b_hat_.resize(n_);
-  for (std::size_t i = 0; i < n_; ++i) b_hat_[i] = r_ * p_.b[i] / f_ref_;
+  for (std::size_t i = 0; i < n_; ++i) b_hat_[i] = r_ * p_->b[i] / f_ref_;
   m_hat_.resize(m_);
   scale_mode_.resize(m_);
   capacity_.resize(m_);
   for (std::size_t k = 0; k < m_; ++k) {
-    if (p_.modes[k].size() != n_) {
+    if (p_->modes[k].size() != n_) {
       out.message = "invalid program: mode size";
-      return out;
+      return;
     }
-    scale_mode_[k] = std::max(max_abs(p_.modes[k]), 1e-300);
-    m_hat_[k] = p_.modes[k];
+    scale_mode_[k] = std::max(max_abs(p_->modes[k]), 1e-300);
+    m_hat_[k] = p_->modes[k];
     for (double& v : m_hat_[k]) v /= scale_mode_[k];
     double cap = 0.0;
     for (std::size_t e = 0; e < N_; ++e) {
       double mm = 0.0;
-      for (int c = 0; c < comps_; ++c) mm += p_.modes[k][c * N_ + e] * p_.modes[k][c * N_ + e];
-      cap += p_.bound[e] * std::sqrt(mm) * p_.area;
+      for (int c = 0; c < comps_; ++c) mm += p_->modes[k][c * N_ + e] * p_->modes[k][c * N_ + e];
+      cap += p_->bound[e] * std::sqrt(mm) * p_->area;
     }
     capacity_[k] = cap > 0.0 ? cap : 1.0;
   }
@@ -221,9 +236,10 @@ SteadyRollingOutcome SteadyRollingNewton::solve() {
   ratio_.assign(N_, 0.0);
   state_.assign(N_, 0);
 
-  Vec x(n_ + m_, 0.0), F, x_trial, F_trial, d, rhs;
-  if (!p_.tau0.empty())
-    for (std::size_t i = 0; i < n_; ++i) x[i] = p_.tau0[i] / f_ref_;
+  Vec &x = x_, &F = F_, &x_trial = x_trial_, &F_trial = F_trial_, &d = d_, &rhs = rhs_;
+  x.assign(n_ + m_, 0.0);
+  if (!p_->tau0.empty())
+    for (std::size_t i = 0; i < n_; ++i) x[i] = p_->tau0[i] / f_ref_;
   project(x);
   residual(x, F);
   // The tolerance is relative to the largest bound; a small creepage (or resultant) drives a
@@ -231,14 +247,15 @@ SteadyRollingOutcome SteadyRollingNewton::solve() {
   // a hundredth of the bound the tolerance follows the driving level (scale-free, as the problem
   // is linear in full stick), so a creepage of 1e-12 is solved as well as one of 1e-3.
   double level = max_abs(b_hat_);
-  for (std::size_t k = 0; k < m_; ++k) level = std::max(level, std::abs(p_.resultants[k]) / capacity_[k]);
+  for (std::size_t k = 0; k < m_; ++k) level = std::max(level, std::abs(p_->resultants[k]) / capacity_[k]);
   const double tol = std::max(options_.tol, 1e-13) * std::clamp(100.0 * level, 1e-200, 1.0);
   // Non-monotone search: full (projected) Newton steps are taken while |(F, G)|_inf stays below
   // kGrowth times the largest of the last kMemory merits (the active set of a cold start moves
   // by many elements per step, which a monotone search would damp to a crawl); otherwise
   // backtrack against that reference. No new best merit in kStall iterations: give up.
   constexpr int kMemory = 4, kStall = 12;
-  std::vector<double> merits{max_abs(F)};
+  std::vector<double>& merits = merits_;
+  merits.assign(1, max_abs(F));
   double best = merits.back();
   int since_best = 0, it = 0;
   for (; it < options_.max_iter; ++it) {
@@ -302,13 +319,24 @@ SteadyRollingOutcome SteadyRollingNewton::solve() {
     for (int c = 0; c < comps_; ++c) out.tau[c * N_ + e] = scale * x[c * N_ + e] * f_ref_;
   }
   for (std::size_t k = 0; k < m_; ++k) out.amplitudes[k] = x[n_ + k] * f_ref_ / (r_ * scale_mode_[k]);
+  return;
+}
+
+SteadyRollingWorkspace::SteadyRollingWorkspace() : newton_(std::make_unique<SteadyRollingNewton>()) {}
+SteadyRollingWorkspace::~SteadyRollingWorkspace() = default;
+SteadyRollingWorkspace::SteadyRollingWorkspace(SteadyRollingWorkspace&&) noexcept = default;
+SteadyRollingWorkspace& SteadyRollingWorkspace::operator=(SteadyRollingWorkspace&&) noexcept = default;
+
+SteadyRollingOutcome solve_steady_rolling(const SteadyRollingProgram& program, const SolveOptions& options) {
+  SteadyRollingWorkspace work;
+  SteadyRollingOutcome out;
+  solve_steady_rolling(program, options, work, out);
   return out;
 }
 
-}  // namespace
-
-SteadyRollingOutcome solve_steady_rolling(const SteadyRollingProgram& program, const SolveOptions& options) {
-  return SteadyRollingNewton(program, options).solve();
+void solve_steady_rolling(const SteadyRollingProgram& program, const SolveOptions& options,
+                          SteadyRollingWorkspace& work, SteadyRollingOutcome& out) {
+  work.newton_->solve(program, options, out);
 }
 
 }  // namespace dc

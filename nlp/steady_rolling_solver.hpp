@@ -9,6 +9,7 @@
 // semismooth equation F(tau) = tau - Pi_{|t|<=f}(tau - r s(tau)) = 0 (Alart-Curnier form) by
 // Newton's method with GMRES on the matrix-free operator D.
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,5 +42,25 @@ struct SteadyRollingOutcome {
 /// Newton's method with a backtracking search on |F|; options.tol bounds the residual,
 /// options.max_iter the Newton iterations. Never throws for non-convergence (success = false).
 SteadyRollingOutcome solve_steady_rolling(const SteadyRollingProgram& program, const SolveOptions& options);
+
+class SteadyRollingNewton;
+/// The solver's vectors, Krylov basis and iterates kept between solves by a caller that solves
+/// many programs of one size (a dynamic run's every step, a creep-force table's points).
+class SteadyRollingWorkspace {
+ public:
+  SteadyRollingWorkspace();
+  ~SteadyRollingWorkspace();
+  SteadyRollingWorkspace(SteadyRollingWorkspace&&) noexcept;
+  SteadyRollingWorkspace& operator=(SteadyRollingWorkspace&&) noexcept;
+
+ private:
+  std::unique_ptr<SteadyRollingNewton> newton_;
+  friend void solve_steady_rolling(const SteadyRollingProgram&, const SolveOptions&, SteadyRollingWorkspace&,
+                                   SteadyRollingOutcome&);
+};
+/// The same with the caller's workspace into `out` (whose storage it fills again; the result
+/// does not depend on what the workspace held).
+void solve_steady_rolling(const SteadyRollingProgram& program, const SolveOptions& options,
+                          SteadyRollingWorkspace& work, SteadyRollingOutcome& out);
 
 }  // namespace dc

@@ -96,6 +96,13 @@ TangentialSolution TangentialProblem::step(const TangentialLoad& load, const Sol
 
 TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, const SolverOptions& solver,
                                                      const ProgressCallback& progress) {
+  TangentialSolution solution;
+  steady_rolling(load, solver, solution, progress);
+  return solution;
+}
+
+void TangentialProblem::steady_rolling(const RollingLoad& load, const SolverOptions& solver, TangentialSolution& out,
+                                       const ProgressCallback& progress) {
   Impl& s = *impl_;
   if (s.given_operators) throw InputError("tangential.regime", "rolling is not available for a finite body");
   s.reset();
@@ -112,16 +119,17 @@ TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, co
     std::array<double, 3> increment{};
     for (int k = 0; k < 3; ++k)
       if (load.modes[k].kind == ModeControl::Kind::amplitude) increment[k] = s.grid.dx * load.modes[k].value;
-    auto direct = s.steady_rolling_direct(load, increment, solver, progress, direct_failure);
+    // Into `out`'s own storage (a dynamic run's steady model solves at every step).
+    const bool direct = s.steady_rolling_direct(load, increment, solver, progress, direct_failure, out);
     if (direct || load.method == Method::newton) {
       if (!direct) {
-        direct.emplace();
-        direct->report.status = SolveStatus::failed;
-        direct->report.message = "steady rolling by Newton failed: " + direct_failure;
+        reset_keeping_storage(out);
+        out.report.status = SolveStatus::failed;
+        out.report.message = "steady rolling by Newton failed: " + direct_failure;
       }
-      for (int k = 0; k < 3; ++k) direct->amplitudes[k] /= s.grid.dx;
-      direct->rolling = true;
-      return *direct;
+      for (int k = 0; k < 3; ++k) out.amplitudes[k] /= s.grid.dx;
+      out.rolling = true;
+      return;
     }
     s.reset();
   }
@@ -170,7 +178,7 @@ TangentialSolution TangentialProblem::steady_rolling(const RollingLoad& load, co
     sol.report.status = SolveStatus::not_converged;
     sol.report.message += " [rolling did not reach a steady state in " + std::to_string(max_steps) + " steps]";
   }
-  return sol;
+  out = std::move(sol);
 }
 
 TangentialSolution TangentialProblem::roll(const RollingLoad& load, double distance, const SolverOptions& solver,
@@ -338,9 +346,14 @@ void reset_keeping_storage(TangentialSolution& solution) {
 }
 
 std::vector<double> rolling_warm_start(const TangentialSolution& solution, int dimension) {
-  std::vector<double> t = solution.tx;
-  if (dimension == 3) t.insert(t.end(), solution.ty.begin(), solution.ty.end());
+  std::vector<double> t;
+  rolling_warm_start(solution, dimension, t);
   return t;
+}
+
+void rolling_warm_start(const TangentialSolution& solution, int dimension, std::vector<double>& start) {
+  start.assign(solution.tx.begin(), solution.tx.end());
+  if (dimension == 3) start.insert(start.end(), solution.ty.begin(), solution.ty.end());
 }
 
 }  // namespace dc

@@ -70,6 +70,8 @@ void reset_keeping_storage(TangentialSolution& solution);
 /// in 3-D): the start of a steady-rolling solve at nearby data (a neighbouring table point, the
 /// next dynamic step).
 std::vector<double> rolling_warm_start(const TangentialSolution& solution, int dimension);
+/// The same into `start` (its storage kept).
+void rolling_warm_start(const TangentialSolution& solution, int dimension, std::vector<double>& start);
 
 /// The loading history of a TangentialProblem (the state its next step starts from): saved
 /// before a trial step and restored when the step is not accepted (dynamic steps).
@@ -132,6 +134,10 @@ class TangentialProblem {
   /// friction law and the gap function (4.24) of the steady slip.
   TangentialSolution steady_rolling(const RollingLoad& load, const SolverOptions& solver,
                                     const ProgressCallback& progress = {});
+  /// The same into `solution`, whose storage the Newton path fills again (a dynamic run's steady
+  /// model at every step).
+  void steady_rolling(const RollingLoad& load, const SolverOptions& solver, TangentialSolution& solution,
+                      const ProgressCallback& progress = {});
   /// Transient rolling: marches in +x from the CURRENT state (memory kept, no reset) over
   /// `distance` (m, >= 0): n = round(distance / dx) marching steps of dt = dx / V, at least one
   /// when distance > 0, each the convective step of steady_rolling() ((2.14), (3.8), (4.4)-(4.6)).

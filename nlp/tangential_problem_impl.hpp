@@ -21,6 +21,7 @@
 #include "certified_solve.hpp"
 #include "native_solvers.hpp"
 #include "proportional_predictor.hpp"
+#include "steady_rolling_solver.hpp"
 #include "support_window.hpp"
 #include "tangential_problem.hpp"
 #include "vector_ops.hpp"
@@ -208,11 +209,20 @@ struct TangentialProblem::Impl {
                   const SolverOptions& solver, const ProgressCallback& progress, TangentialSolution& sol);
 
   // Rolling (tangential_rolling.cpp).
-  /// Steady rolling by Newton inside the outer loop; empty when Newton gives up (why_not).
-  std::optional<TangentialSolution> steady_rolling_direct(const RollingLoad& load,
-                                                          const std::array<double, 3>& given_increment,
-                                                          const SolverOptions& solver, const ProgressCallback& progress,
-                                                          std::string& why_not);
+  /// Steady rolling by Newton inside the outer loop into `sol`; false when Newton gives up
+  /// (why_not).
+  bool steady_rolling_direct(const RollingLoad& load, const std::array<double, 3>& given_increment,
+                             const SolverOptions& solver, const ProgressCallback& progress, std::string& why_not,
+                             TangentialSolution& sol);
+  /// steady_rolling_direct's program, outcome and solver, filled again at every solve.
+  struct SteadyWork {
+    SteadyRollingProgram program;
+    SteadyRollingOutcome outcome;
+    SteadyRollingWorkspace solver;
+    std::vector<int> unknown_modes;
+    std::vector<double> w_here, w_up;
+  };
+  SteadyWork steady_work;
   struct March {
     TangentialSolution sol;  ///< the last step; amplitudes = rigid-mode increments of that step
     int steps = 0;           ///< marching steps done

@@ -3,6 +3,7 @@
 // (3.8)/(4.4)-(4.6) with the previous displacement taken upstream ((2.14), B* of (4.6)).
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <string>
 
 #include "backend_choice.hpp"
@@ -16,18 +17,26 @@ using tangential_internal::relative_change;
 
 /// Steady rolling solved directly (steady_rolling_solver.hpp) inside the outer loop; the
 /// slip per step of travel dx is ds = dx v_rigid + (C - S C) tau (+ kappa (B21 - S B21) p).
-/// Empty when Newton's method gives up (the caller then marches).
-std::optional<TangentialSolution> TangentialProblem::Impl::steady_rolling_direct(
-    const RollingLoad& load, const std::array<double, 3>& given_increment, const SolverOptions& solver,
-    const ProgressCallback& progress, std::string& why_not) {
+/// Into `sol` (its storage kept, as the program's, the outcome's and the solver's: a dynamic
+/// run's steady model solves at every step); false when Newton's method gives up (why_not; the
+/// caller then marches).
+bool TangentialProblem::Impl::steady_rolling_direct(const RollingLoad& load,
+                                                    const std::array<double, 3>& given_increment,
+                                                    const SolverOptions& solver, const ProgressCallback& progress,
+                                                    std::string& why_not, TangentialSolution& sol) {
   if (!D_conv) D_conv = half_space->tangential_convective(1, kind);
   if (coupled && !B21_up) B21_up = half_space->tangential_from_normal_shifted(1, 0, kind);
   const std::size_t n = comps * N;
-  SteadyRollingProgram program;
+  reset_keeping_storage(sol);
+  SteadyWork& work = steady_work;
+  SteadyRollingProgram& program = work.program;
   program.D = D_conv.get();
   program.comps = comps;
   program.area = grid.area();
-  std::vector<int> unknown_modes;
+  program.modes.clear();
+  program.resultants.clear();
+  std::vector<int>& unknown_modes = work.unknown_modes;
+  unknown_modes.clear();
   for (int k = 0; k < n_modes(); ++k) {
     if (load.modes[k].kind != ModeControl::Kind::resultant) continue;
     std::vector<double> m(n);
@@ -39,45 +48,61 @@ std::optional<TangentialSolution> TangentialProblem::Impl::steady_rolling_direct
   }
   SolveOptions options = solve_options(solver, progress);
   options.max_iter = std::min(solver.max_iter, 200);
-  TangentialSolution sol;
-  std::vector<double> tau = load.warm_start.size() == n ? load.warm_start : std::vector<double>(n, 0.0);
-  std::vector<double> f, w_up, w_here;
-  SteadyRollingOutcome outcome;
+  std::vector<double>& tau = step_tau;
+  if (load.warm_start.size() == n) tau = load.warm_start;
+  else tau.assign(n, 0.0);
+  std::vector<double>& f = step_f;
+  SteadyRollingOutcome& outcome = work.outcome;
+  outcome.message.clear();
   int newton = 0, applies = 0;
   const auto start = std::chrono::steady_clock::now();
+  // What the inner solve reads, behind one pointer (a closure of two pointers is held by
+  // std::function without an allocation).
+  struct Pass {
+    const RollingLoad& load;
+    const std::array<double, 3>& given_increment;
+    const SolveOptions& options;
+    int& newton;
+    int& applies;
+  } pass_data{load, given_increment, options, newton, applies};
   const bool ok = outer_loop(
       sol, load.normal, solver, tau, f, false,
-      [&](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t, const SolverOptions&) {
-        program.b.assign(n, 0.0);
+      [this, &pass_data](const std::vector<double>& p, const std::vector<double>& bound, std::vector<double>& t,
+                         const SolverOptions&) {
+        SteadyRollingProgram& prog = steady_work.program;
+        SteadyRollingOutcome& out = steady_work.outcome;
+        const std::size_t m = comps * N;
+        prog.b.assign(m, 0.0);
         for (std::size_t e = 0; e < N; ++e)
           for (int c = 0; c < comps; ++c)
-            for (int k = 0; k < n_modes(); ++k) program.b[c * N + e] += given_increment[k] * mode(k, e, c);
+            for (int k = 0; k < n_modes(); ++k) prog.b[c * N + e] += pass_data.given_increment[k] * mode(k, e, c);
         if (coupled) {
+          std::vector<double>&w_here = steady_work.w_here, &w_up = steady_work.w_up;
           B21->apply(p, w_here);
           B21_up->apply(p, w_up);
-          for (std::size_t i = 0; i < n; ++i) program.b[i] += w_here[i] - w_up[i];
+          for (std::size_t i = 0; i < m; ++i) prog.b[i] += w_here[i] - w_up[i];
         }
-        check_resultants(bound, load.modes);
+        check_resultants(bound, pass_data.load.modes);
         if (std::all_of(bound.begin(), bound.end(), [](double b) { return b <= 0.0; })) {
-          outcome.message = "no friction (f(p) = 0 over the whole contact)";
+          out.message = "no friction (f(p) = 0 over the whole contact)";
           return false;
         }
-        program.bound = bound;
-        program.tau0 = t;
-        outcome = solve_steady_rolling(program, options);
-        newton += outcome.newton_iterations;
-        applies += outcome.operator_applies;
-        if (!outcome.success) return false;
-        t = outcome.tau;
+        prog.bound = bound;
+        prog.tau0 = t;
+        solve_steady_rolling(prog, pass_data.options, steady_work.solver, out);
+        pass_data.newton += out.newton_iterations;
+        pass_data.applies += out.operator_applies;
+        if (!out.success) return false;
+        t = out.tau;
         return true;
       });
   if (!ok) {
     why_not = outcome.message;
-    return std::nullopt;
+    return false;
   }
   std::array<double, 3> amplitudes = given_increment;
   for (std::size_t r = 0; r < unknown_modes.size(); ++r) amplitudes[unknown_modes[r]] = outcome.amplitudes[r];
-  std::vector<double> ds;
+  std::vector<double>& ds = step_ds;
   D_conv->apply(tau, ds);
   for (std::size_t i = 0; i < n; ++i) ds[i] += program.b[i];
   for (std::size_t r = 0; r < program.modes.size(); ++r)
@@ -89,14 +114,16 @@ std::optional<TangentialSolution> TangentialProblem::Impl::steady_rolling_direct
   sol.report.iterations = applies;
   sol.newton_iterations = newton;
   sol.report.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  sol.report.message = "steady rolling by Newton: " + std::to_string(newton) + " iterations, " +
-                       std::to_string(applies) + " operator applies";
+  char message[96];
+  std::snprintf(message, sizeof message, "steady rolling by Newton: %d iterations, %d operator applies", newton,
+                applies);
+  sol.report.message.assign(message);
   finish(sol, tau, ds, f, load.modes, solver);
   tau_prev = tau;
   p_prev = sol.normal.pressure;
   displacement_prev.clear();  // not computed here: a later convected step applies the operators
   sol.amplitudes = amplitudes;
-  return sol;
+  return true;
 }
 
 /// Rolling in +x from the current state: up to `max_steps` marching steps of dx (dt = dx / V).
