@@ -10,6 +10,7 @@
 
 #include "fault_injection.hpp"
 #include "interrupt.hpp"
+#include "kept_storage.hpp"
 
 namespace dc {
 
@@ -51,19 +52,8 @@ TimedOutcome run_backend(const std::string& backend, const QuadraticProgram& qp,
 }
 
 void reset_keeping_storage(SolveOutcome& outcome) {
-  std::vector<double> x = std::move(outcome.x), multipliers = std::move(outcome.equality_multipliers),
-                      block_x = std::move(outcome.block_x);
-  std::string message = std::move(outcome.message);
-  std::vector<IterationRecord> history = std::move(outcome.history);
-  for (std::vector<double>* v : {&x, &multipliers, &block_x}) v->clear();
-  message.clear();
-  history.clear();
-  outcome = SolveOutcome{};
-  outcome.x = std::move(x);
-  outcome.equality_multipliers = std::move(multipliers);
-  outcome.block_x = std::move(block_x);
-  outcome.message = std::move(message);
-  outcome.history = std::move(history);
+  reset_keeping_members(outcome, &SolveOutcome::x, &SolveOutcome::equality_multipliers, &SolveOutcome::block_x,
+                        &SolveOutcome::message, &SolveOutcome::history);
 }
 
 void run_backend(const std::string& backend, const QuadraticProgram& qp, const SolveOptions& options,

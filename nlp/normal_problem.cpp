@@ -11,6 +11,7 @@
 #include "backend_choice.hpp"
 #include "certified_solve.hpp"
 #include "errors.hpp"
+#include "kept_storage.hpp"
 #include "native_solvers.hpp"
 #include "scaled_operator.hpp"
 
@@ -54,15 +55,7 @@ void NormalProblem::set_warm_start(std::vector<double> pressure) {
 }
 
 void reset_keeping_storage(NormalSolution& solution) {
-  std::vector<double> pressure = std::move(solution.pressure), gap = std::move(solution.gap);
-  SolverReport report = std::move(solution.report);
-  reset_keeping_storage(report);
-  pressure.clear();
-  gap.clear();
-  solution = NormalSolution{};
-  solution.pressure = std::move(pressure);
-  solution.gap = std::move(gap);
-  solution.report = std::move(report);
+  reset_keeping_members(solution, &NormalSolution::pressure, &NormalSolution::gap, &NormalSolution::report);
 }
 
 Certificate NormalProblem::certify(const std::vector<double>& p, double approach, const NormalSpec& control) const {

@@ -62,17 +62,8 @@ std::string fallback_warning(const SolverReport& r) {
 }
 
 void reset_keeping_storage(SolverReport& report) {
-  std::string backend = std::move(report.backend), requested = std::move(report.requested),
-              message = std::move(report.message), operator_kind = std::move(report.operator_kind);
-  std::vector<FailedAttempt> failed = std::move(report.failed_attempts);
-  report = SolverReport{};
-  for (std::string* text : {&backend, &requested, &message, &operator_kind}) text->clear();
-  failed.clear();
-  report.backend = std::move(backend);
-  report.requested = std::move(requested);
-  report.message = std::move(message);
-  report.operator_kind = std::move(operator_kind);
-  report.failed_attempts = std::move(failed);
+  reset_keeping_members(report, &SolverReport::backend, &SolverReport::requested, &SolverReport::message,
+                        &SolverReport::operator_kind, &SolverReport::failed_attempts);
 }
 
 }  // namespace dc

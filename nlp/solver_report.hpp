@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "kept_storage.hpp"
+
 
 #include "iteration_record.hpp"
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "errors.hpp"
+#include "kept_storage.hpp"
 #include "tangential_problem_impl.hpp"
 
 namespace dc {
@@ -325,24 +326,9 @@ const LinearOperator* TangentialProblem::convective_from_normal() {
 }
 
 void reset_keeping_storage(TangentialSolution& solution) {
-  NormalSolution normal = std::move(solution.normal);
-  SolverReport report = std::move(solution.report);
-  std::vector<double> tx = std::move(solution.tx), ty = std::move(solution.ty), sx = std::move(solution.sx),
-                      sy = std::move(solution.sy), bound = std::move(solution.bound);
-  std::vector<int> state = std::move(solution.state);
-  reset_keeping_storage(normal);
-  reset_keeping_storage(report);
-  for (std::vector<double>* v : {&tx, &ty, &sx, &sy, &bound}) v->clear();
-  state.clear();
-  solution = TangentialSolution{};
-  solution.normal = std::move(normal);
-  solution.report = std::move(report);
-  solution.tx = std::move(tx);
-  solution.ty = std::move(ty);
-  solution.sx = std::move(sx);
-  solution.sy = std::move(sy);
-  solution.bound = std::move(bound);
-  solution.state = std::move(state);
+  reset_keeping_members(solution, &TangentialSolution::normal, &TangentialSolution::report, &TangentialSolution::tx,
+                        &TangentialSolution::ty, &TangentialSolution::sx, &TangentialSolution::sy,
+                        &TangentialSolution::bound, &TangentialSolution::state);
 }
 
 std::vector<double> rolling_warm_start(const TangentialSolution& solution, int dimension) {
