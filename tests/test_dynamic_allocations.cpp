@@ -18,6 +18,7 @@
 
 #include "case_model.hpp"
 #include "cli_runner.hpp"
+#include "dynamic_case_support.hpp"
 #include "dynamic_simulation.hpp"
 
 #if !DYNCONTACT_SANITIZED
@@ -69,34 +70,40 @@ void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::f
 namespace dc::dynamics {
 namespace {
 
-TEST(DynamicAllocations, ASteadyRollingStepAllocatesNothing) {
-#if DYNCONTACT_SANITIZED
-  GTEST_SKIP() << "the sanitizers' runtimes own operator new";
-#else
-  nlohmann::json doc = dc::test::example_json("bowling-ball");
-  doc["grid"]["nx"] = doc["grid"]["ny"] = 16;
-  doc["time"] = {{"dt", 1e-4}, {"t_end", 0.04}, {"scheme", "bdf2"}};
-  doc["contact_model"] = "transient";
-  const double V = 3.0, R = doc["body"]["radius"].get<double>();
-  doc["body"]["initial"]["velocity"] = {V, 0, 0};
-  doc["body"]["initial"]["omega"] = {0, V / R, 0};
-  const Case c = build_case(doc);
-  ASSERT_NE(c.materials.kappa(), 0.0);
+#if !DYNCONTACT_SANITIZED
+/// Runs `c` and returns the operator-new calls between each accepted step and the one before.
+std::vector<long long> allocations_per_step(const Case& c, DynamicResult& result) {
   DynamicSimulation sim(c);
   std::vector<long long> per_step;
   per_step.reserve(1000);
   long long last = operator_new_calls.load();
-  const DynamicResult r = sim.run([&](const DynamicSample&) {
+  result = sim.run([&](const DynamicSample&) {
     const long long now = operator_new_calls.load();
     per_step.push_back(now - last);
     last = operator_new_calls.load();
   });
+  return per_step;
+}
+
+long long sum_from(const std::vector<long long>& per_step, std::size_t first) {
+  long long sum = 0;
+  for (std::size_t k = first; k < per_step.size(); ++k) sum += per_step[k];
+  return sum;
+}
+#endif
+
+TEST(DynamicAllocations, ASteadyRollingStepAllocatesNothing) {
+#if DYNCONTACT_SANITIZED
+  GTEST_SKIP() << "the sanitizers' runtimes own operator new";
+#else
+  const Case c = build_case(dc::test::free_rolling_bowling_ball(16, 0.04));
+  ASSERT_NE(c.materials.kappa(), 0.0);
+  DynamicResult r;
+  const std::vector<long long> per_step = allocations_per_step(c, r);
   ASSERT_TRUE(r.completed) << r.status;
   ASSERT_EQ(per_step.size(), 400u);
-  long long steady = 0;
-  for (std::size_t k = 300; k < per_step.size(); ++k) steady += per_step[k];
-  EXPECT_EQ(steady, 0) << "allocations in steps 301-400; step 301 alone: " << per_step[300]
-                       << ", step 1: " << per_step[0];
+  EXPECT_EQ(sum_from(per_step, 300), 0) << "allocations in steps 301-400; step 301 alone: " << per_step[300]
+                                        << ", step 1: " << per_step[0];
 #endif
 }
 
@@ -106,22 +113,12 @@ TEST(DynamicAllocations, ASteadyModelStepAllocatesNothing) {
 #else
   nlohmann::json doc = dc::test::example_json("cylinder-dynamic-2d");
   doc["time"]["t_end"] = 200 * doc["time"]["dt"].get<double>();
-  const Case c = build_case(doc);
-  DynamicSimulation sim(c);
-  std::vector<long long> per_step;
-  per_step.reserve(1000);
-  long long last = operator_new_calls.load();
-  const DynamicResult r = sim.run([&](const DynamicSample&) {
-    const long long now = operator_new_calls.load();
-    per_step.push_back(now - last);
-    last = operator_new_calls.load();
-  });
+  DynamicResult r;
+  const std::vector<long long> per_step = allocations_per_step(build_case(doc), r);
   ASSERT_TRUE(r.completed) << r.status;
   ASSERT_EQ(per_step.size(), 200u);
   ASSERT_GT(r.sensitivities, 50) << "most steps take a fresh steady sensitivity";
-  long long later = 0;
-  for (std::size_t k = 150; k < per_step.size(); ++k) later += per_step[k];
-  EXPECT_EQ(later, 0) << "allocations in steps 151-200; step 151 alone: " << per_step[150];
+  EXPECT_EQ(sum_from(per_step, 150), 0) << "allocations in steps 151-200; step 151 alone: " << per_step[150];
 #endif
 }
 

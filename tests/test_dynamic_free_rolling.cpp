@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "case_model.hpp"
-#include "cli_runner.hpp"
+#include "dynamic_case_support.hpp"
 #include "dynamic_simulation.hpp"
 
 namespace dc::dynamics {
@@ -24,14 +24,7 @@ double spread(const std::vector<double>& fx, std::size_t from, std::size_t to) {
 }
 
 TEST(DynamicFreeRolling, TheTangentialContactModeDecaysToSteadyRolling) {
-  nlohmann::json doc = dc::test::example_json("bowling-ball");
-  doc["grid"]["nx"] = doc["grid"]["ny"] = 16;
-  doc["time"] = {{"dt", 1e-4}, {"t_end", 0.04}, {"scheme", "bdf2"}};
-  doc["contact_model"] = "transient";
-  const double V = 3.0, R = doc["body"]["radius"].get<double>();
-  doc["body"]["initial"]["velocity"] = {V, 0, 0};
-  doc["body"]["initial"]["omega"] = {0, V / R, 0};  // rolling, not yet at the contact's creepage
-  const Case c = build_case(doc);
+  const Case c = build_case(dc::test::free_rolling_bowling_ball(16, 0.04));
   ASSERT_NE(c.materials.kappa(), 0.0);
   DynamicSimulation sim(c);
   std::vector<double> fx;
