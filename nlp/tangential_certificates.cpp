@@ -120,17 +120,12 @@ void TangentialProblem::Impl::windowed_slip_increment(const std::vector<double>&
                                                       std::vector<double>& ds) const {
   const std::size_t Nw = window.size();
   std::vector<double>&tau_window = window_tau_work, &ds_window = window_ds_work;
-  ds.resize(comps * N);
   tau_window.resize(comps * Nw);
   for (std::size_t l = 0; l < Nw; ++l)
     for (int c = 0; c < comps; ++c) tau_window[c * Nw + l] = tau[c * N + window.global(grid, l)];
   ct_window.apply(tau_window, ds_window);
-  for (std::size_t e = 0; e < N; ++e)
-    for (int c = 0; c < comps; ++c) {
-      double rigid = 0.0;
-      for (int k = 0; k < n_modes(); ++k) rigid += increment[k] * mode(k, e, c);
-      ds[c * N + e] = W[c * N + e] + rigid;
-    }
+  ds.assign(comps * N, 0.0);
+  add_rigid_and_load(W, increment, ds);
   for (std::size_t l = 0; l < Nw; ++l)
     for (int c = 0; c < comps; ++c) ds[c * N + window.global(grid, l)] += ds_window[c * Nw + l];
 }
