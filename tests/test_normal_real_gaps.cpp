@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <functional>
 #include <random>
 
@@ -18,7 +19,6 @@
 namespace dc {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 MaterialPair steel() { return {Elastic::from_G_nu(82e9, 0.28), Elastic::from_G_nu(82e9, 0.28)}; }
 
@@ -191,9 +191,9 @@ TEST(NormalRealGaps, ConeAgainstSneddon) {
   // A cone h = r tan(beta): P = 2 E* delta^2 / (pi tan(beta)), a = 2 delta / (pi tan(beta))
   // (Sneddon 1965; Johnson, Contact Mechanics, eq. 5.42 with cot(alpha) = tan(beta)). The apex
   // is not resolved by the grid: 2 % at a = 0.8 of the half-width on 96^2 (4 % on 48^2).
-  const double beta = 2.0 * kPi / 180.0, a = 1e-3;
-  const double delta = 0.5 * kPi * a * std::tan(beta);
-  const double P = 2.0 * steel().E_star() * delta * delta / (kPi * std::tan(beta));
+  const double beta = 2.0 * std::numbers::pi / 180.0, a = 1e-3;
+  const double delta = 0.5 * std::numbers::pi * a * std::tan(beta);
+  const double P = 2.0 * steel().E_star() * delta * delta / (std::numbers::pi * std::tan(beta));
   for (int n : {48, 96}) {
     const Grid g = Grid::make(3, n, n, -1.25 * a, 1.25 * a, -1.25 * a, 1.25 * a);
     const auto cone = [beta](double x, double y) { return std::hypot(x, y) * std::tan(beta); };
@@ -214,13 +214,13 @@ TEST(NormalRealGaps, RoughSphere) {
       double kx, ky, amplitude, phase;
     };
     std::vector<Mode> modes;
-    const double q_low = 2.0 * kPi / (64.0 * dx), q_high = 2.0 * kPi / (4.0 * dx), H = 0.8;
+    const double q_low = 2.0 * std::numbers::pi / (64.0 * dx), q_high = 2.0 * std::numbers::pi / (4.0 * dx), H = 0.8;
     double slope2 = 0.0;
     for (int m = 0; m < 400; ++m) {
-      const double q = q_low * std::pow(q_high / q_low, u(rng)), angle = 2.0 * kPi * u(rng);
+      const double q = q_low * std::pow(q_high / q_low, u(rng)), angle = 2.0 * std::numbers::pi * u(rng);
       // log-uniform q: amplitude^2 ~ C(q) q^2 dq ~ q^(-2H) per mode
       const double amplitude = std::pow(q / q_low, -H);
-      modes.push_back({q * std::cos(angle), q * std::sin(angle), amplitude, 2.0 * kPi * u(rng)});
+      modes.push_back({q * std::cos(angle), q * std::sin(angle), amplitude, 2.0 * std::numbers::pi * u(rng)});
       slope2 += 0.5 * amplitude * amplitude * q * q;
     }
     const double scale = 0.1 / std::sqrt(slope2);

@@ -58,6 +58,7 @@ const std::vector<BlockUse>& block_uses() {
       {"dimensionless", {P::paper_cylinder}},
       {"sweep", {P::paper_cylinder, P::dynamic}},
       {"fe_body", {P::finite, P::dynamic}},
+      {"accuracy", {P::normal, P::tangential}},
   };
   return uses;
 }
@@ -100,7 +101,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   JsonBlock top(document, "");
   top.allow({"schema", "name", "description", "problem", "dimension", "materials", "profile", "grid", "normal",
              "friction", "tangential", "fe_body", "body", "loads", "time", "traction_model", "dimensionless",
-             "solver", "sweep", "output", "normal_model", "contact_model"});
+             "solver", "sweep", "output", "normal_model", "contact_model", "accuracy"});
   Case c;
   c.source = document;
   for (auto it = document.begin(); it != document.end(); ++it) c.blocks.push_back(it.key());
@@ -138,6 +139,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   }
   if (top.has("solver")) c.solver = read_solver(top.at("solver"));
   if (top.has("output")) c.output = read_output(top.at("output"));
+  if (top.has("accuracy")) c.accuracy = read_accuracy(top.at("accuracy"), c.problem);
   if (c.problem == ProblemKind::dynamic) {
     c.dynamic = read_dynamic(document, c);
     if (!has_normal && !fe) has_normal = dynamics::dynamic_sizing_load(*c.dynamic, c, c.normal);
@@ -145,8 +147,11 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   if (fe) read_finite_blocks(document, c, base_dir);  // read_fe_body.cpp
   if (required("grid") && !fe) {
     if (!has_profile) throw InputError("profile", "missing required key (the grid needs a profile)");
-    c.grid = read_grid(top.at("grid"), c, has_normal);
-    c.allow_edge_contact = JsonBlock(top.at("grid"), "grid").boolean_or("allow_edge_contact", false);
+    // An accuracy target sizes the grid itself: the block (its extent or bounds) is optional.
+    static const nlohmann::json no_grid = nlohmann::json::object();
+    const nlohmann::json& grid = c.accuracy.target && !top.has("grid") ? no_grid : top.at("grid");
+    c.grid = read_grid(grid, c, has_normal);
+    c.allow_edge_contact = JsonBlock(grid, "grid").boolean_or("allow_edge_contact", false);
     check_contact_in_grid(c);
     check_dense_operator_size(c);
   }

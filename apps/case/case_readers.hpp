@@ -25,6 +25,9 @@ FrictionSpec read_friction(const nlohmann::json& j);
 /// "solver": the solver's options, each checked by SolverOptions::validate().
 SolverOptions read_solver(const nlohmann::json& j);
 
+/// "accuracy": the error estimate and the target of a `problem` (its quantities checked).
+AccuracySpec read_accuracy(const nlohmann::json& j, ProblemKind problem);
+
 /// "output": the folder, which files, snapshots.
 OutputSpec read_output(const nlohmann::json& j);
 

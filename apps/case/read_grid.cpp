@@ -84,7 +84,13 @@ Grid read_grid(const json& j, const Case& c, bool has_normal) {
   const bool three_d = c.dimension == 3;
   o.allow({"nx", "ny", "x", "y", "extent", "allow_edge_contact"});
   (void)o.boolean_or("allow_edge_contact", false);  // read into Case by build_case
-  const int nx = o.integer("nx");
+  // With an accuracy target the element counts are the refinement's start (optional): about 16
+  // elements across the closed-form contact estimate (extent k: nx = 2 k * 8), a multiple of 4
+  // so that the grids of 2 and 4 times the element size cover the same bounds.
+  const bool target = c.accuracy.target.has_value();
+  const double start_extent = o.has("extent") ? o.positive("extent") : 1.5;
+  const int start_count = std::max(16, 4 * static_cast<int>(std::ceil(2.0 * start_extent * (three_d ? 8 : 32) / 4.0)));
+  const int nx = target && !o.has("nx") ? start_count : o.integer("nx");
   if (nx < 1) throw InputError("grid.nx", "must be at least 1, got " + std::to_string(nx));
   // One element across cannot represent a pressure distribution (a 1 x 1 grid puts the whole
   // load on one uniform element: the peak comes out about 3 times too low).
@@ -93,7 +99,7 @@ Grid read_grid(const json& j, const Case& c, bool has_normal) {
                                 "8 or more across the contact for a usable peak pressure)");
   int ny = 1;
   if (three_d) {
-    ny = o.integer("ny");
+    ny = target && !o.has("ny") ? start_count : o.integer("ny");
     if (ny < 1) throw InputError("grid.ny", "must be at least 1, got " + std::to_string(ny));
     if (ny == 1)
       throw InputError("grid.ny", "one element across cannot resolve the contact pressure in 3-D; use at least 2 "
@@ -105,11 +111,11 @@ Grid read_grid(const json& j, const Case& c, bool has_normal) {
   if (static_cast<double>(nx) * ny > 4194304.0)
     throw InputError("grid", "too many elements (" + std::to_string(static_cast<long long>(nx) * ny) +
                                  "; at most 2048 x 2048)");
-  const bool has_x = o.has("x"), has_extent = o.has("extent");
+  const bool has_x = o.has("x"), has_extent = o.has("extent") || (target && !o.has("x"));
   if (has_x && has_extent) throw InputError("grid.extent", "give either extent or x/y bounds, not both");
   if (has_extent) {
     if (three_d && o.has("y")) throw InputError("grid.y", "give either extent or x/y bounds, not both");
-    const double k = o.positive("extent");
+    const double k = start_extent;
     double ax = 0.0, ay = 0.0;
     hertz_semi_axes(c, has_normal, ax, ay);
     if (!(std::isfinite(ax) && ax > 0.0 && std::isfinite(ay) && ay > 0.0))

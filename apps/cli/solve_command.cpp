@@ -18,6 +18,7 @@
 #include "interrupt.hpp"
 #include "interrupt_handler.hpp"
 #include "plot_writer.hpp"
+#include "accuracy_run.hpp"
 #include "result_limits.hpp"
 #include "summary_writer.hpp"
 #include "table_ranks.hpp"
@@ -37,6 +38,28 @@ void print_line(const char* label, double value, const char* unit, const nlohman
   if (ref.is_object() && ref.contains(ref_key) && ref[ref_key].is_number())
     std::printf("  (closed form %.5g)", ref[ref_key].get<double>());
   std::printf("\n");
+}
+
+/// The accuracy lines: the grids, each result's estimated relative error, the target.
+void print_accuracy(const nlohmann::json& a) {
+  std::string grids;
+  for (const auto& g : a["grids"])
+    grids += (grids.empty() ? "" : ", ") + std::to_string(g["nx"].get<int>()) +
+             (g.contains("ny") ? " x " + std::to_string(g["ny"].get<int>()) : std::string());
+  if (a.contains("unavailable")) {
+    std::printf("  %-16s no estimate: %s\n", "accuracy", a["unavailable"].get<std::string>().c_str());
+  } else {
+    std::printf("  %-16s estimated relative error (grids %s; %.0f %% extra time)\n", "accuracy", grids.c_str(),
+                100.0 * a["cost_fraction"].get<double>());
+    for (const auto& [name, q] : a["quantities"].items()) {
+      std::printf("    %-18s %-12.6g +- %.2g", name.c_str(), q["value"].get<double>(), q["error_estimate"].get<double>());
+      if (q["order"].is_number()) std::printf("  (order %.2f)", q["order"].get<double>());
+      std::printf("  %s\n", q["method"].get<std::string>().c_str());
+    }
+  }
+  if (a["target"].is_number())
+    std::printf("  %-16s %.3g on %s: %s (%s)\n", "target", a["target"].get<double>(), a["grid"].dump().c_str(),
+                a["met"].get<bool>() ? "met" : "NOT met", a.value("stopped_by", std::string()).c_str());
 }
 
 /// The tangential lines of the report (from the summary, like the normal ones).
@@ -134,6 +157,9 @@ int run_solve(const SolveArgs& args) {
     std::cerr << "interrupted before a result was finished; wrote " << path << '\n';
     return runs::interrupted_exit_code();
   }
+  // The grid solved: the case's, or the one an accuracy target chose.
+  Case solved = c;
+  solved.grid = run.grid;
   nlohmann::json& s = run.summary;
   if (run.interrupted) s["status"] = "interrupted";
   nlohmann::json files = {{"summary", "summary.json"}};
@@ -142,17 +168,17 @@ int run_solve(const SolveArgs& args) {
       nlohmann::json per_step = nlohmann::json::array();
       for (std::size_t k = 0; k < run.fields.size(); ++k) {
         const std::string name = "fields_" + std::to_string(k) + ".csv";
-        output::write_fields(dir, c.grid, run.fields[k], name);
+        output::write_fields(dir, solved.grid, run.fields[k], name);
         per_step.push_back(name);
         s["steps"][k]["fields"] = name;
       }
       files["fields_steps"] = per_step;
     }
-    output::write_fields(dir, c.grid, run.fields.back());
+    output::write_fields(dir, solved.grid, run.fields.back());
     files["fields"] = "fields.csv";
   }
   if (c.output.plots && !run.interrupted) {  // an interrupted run writes its data, not figures
-    Case plotted = c;
+    Case plotted = solved;
     plotted.normal = run.normal;  // the closed-form curve of the last step's load
     nlohmann::json plots = nlohmann::json::array();
     for (const auto& p : output::write_static_plots(dir, plotted, run.fields.back()))
@@ -160,7 +186,7 @@ int run_solve(const SolveArgs& args) {
     files["plots"] = plots;
   }
   s["files"] = files;
-  const std::vector<ResultLimit> limits = runs::attach_result_limits(c, s);
+  const std::vector<ResultLimit> limits = runs::attach_result_limits(solved, s);
   const std::string summary_path = output::write_summary(dir, s);
 
   const SolverReport& r = run.report;
@@ -174,8 +200,9 @@ int run_solve(const SolveArgs& args) {
     print_line(two_d ? "contact width" : "contact area", s["contact_area"].get<double>(), two_d ? "m" : "m^2", ref,
                "contact_area");
     print_line("max pressure", s["max_pressure"].get<double>(), "Pa", ref, "max_pressure");
-    std::printf("  %-16s %d of %zu elements\n", "in contact", s["n_contact"].get<int>(), c.grid.size());
+    std::printf("  %-16s %d of %zu elements\n", "in contact", s["n_contact"].get<int>(), solved.grid.size());
     if (c.problem == ProblemKind::tangential) print_tangential(c, s);
+    if (s.contains("accuracy")) print_accuracy(s["accuracy"]);
     if (r.backend == "none") std::printf("note: %s\n", r.message.c_str());
     std::printf("wrote %s\n", summary_path.c_str());
     std::fflush(stdout);
@@ -188,6 +215,13 @@ int run_solve(const SolveArgs& args) {
     return runs::interrupted_exit_code();
   }
   if (runs::report_limits(limits, dir)) return runs::kExitBadInput;
+  if (runs::accuracy_target_missed(s)) {
+    const nlohmann::json& a = s["accuracy"];
+    std::cerr << "error: accuracy: the target " << a["target"].get<double>() << " was not met (stopped by "
+              << a.value("stopped_by", std::string("?")) << " on " << a["grid"].dump()
+              << "); results written to " << dir << "\n";
+    return runs::kExitUnconverged;
+  }
   if (!run.converged) {
     const std::string what = std::string(to_string(r.status)) + (r.message.empty() ? "" : ": " + r.message);
     if (c.solver.accept_unconverged) {

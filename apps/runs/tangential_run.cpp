@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "accuracy_run.hpp"
 #include "finite_run.hpp"
 #include "interrupt.hpp"
 #include "normal_run.hpp"
@@ -155,9 +156,13 @@ TangentialRun run_tangential(const Case& c, bool progress) {
   return run;
 }
 
-StaticRun run_static(const Case& c, bool progress) {
-  if (c.problem == ProblemKind::finite) return run_finite_static(c, progress);
+StaticRun run_static(const Case& c, bool progress) { return run_static_with_accuracy(c, progress); }
+
+StaticRun run_static_once(const Case& c, bool progress) {
   StaticRun out;
+  if (c.problem == ProblemKind::finite) out = run_finite_static(c, progress);
+  out.grid = c.grid;
+  if (c.problem == ProblemKind::finite) return out;
   if (c.problem == ProblemKind::tangential) {
     TangentialRun run = run_tangential(c, progress);
     out.summary = std::move(run.summary);

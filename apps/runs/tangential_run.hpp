@@ -53,9 +53,13 @@ struct StaticRun {
   bool converged = false;
   bool history = false;                      ///< a loading history: summary "steps", fields_<k>.csv
   bool interrupted = false;                  ///< an interrupt came during a history: the steps finished
+  Grid grid;                                 ///< the grid solved (an accuracy target chooses it)
 };
 
-/// Runs a normal or tangential case (run_normal / run_tangential).
+/// Runs a static case (normal, tangential, finite) with its accuracy block
+/// (run_static_with_accuracy, accuracy_run.hpp): what `solve`, `compare` and Python call.
 StaticRun run_static(const Case& c, bool progress);
+/// One solve of a static case on its grid (run_normal / run_tangential / run_finite_static).
+StaticRun run_static_once(const Case& c, bool progress);
 
 }  // namespace dc::runs

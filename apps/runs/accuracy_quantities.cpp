@@ -1,0 +1,57 @@
+#include "accuracy_quantities.hpp"
+
+#include <cmath>
+
+namespace dc::runs {
+namespace {
+
+double number(const nlohmann::json& s, const char* key) {
+  return s.contains(key) && s[key].is_number() ? s[key].get<double>() : 0.0;
+}
+
+bool is_pair(const nlohmann::json& s, const char* key) {
+  return s.contains(key) && s[key].is_array() && s[key].size() == 2;
+}
+
+}  // namespace
+
+std::vector<QuantityValue> accuracy_quantities(const nlohmann::json& s) {
+  using C = Convergence;
+  std::vector<QuantityValue> q;
+  const double force = std::abs(number(s, "normal_force"));
+  const double pressure = number(s, "max_pressure");
+  // The control fixes one of force and approach; the other is the answer (approach under force
+  // control converges at O(h^2) overall but not from grid to grid: docs/accuracy.md).
+  const bool force_control = s.value("control", std::string("force")) == "force";
+  if (force_control)
+    q.push_back({"approach", number(s, "approach"), C::smooth, 0.0});
+  else
+    q.push_back({"normal_force", force, C::smooth, 0.0});
+  q.push_back({"max_pressure", pressure, C::smooth, 0.0});
+  // An element is in the contact or not: the area moves by whole elements, not monotonically.
+  q.push_back({"contact_area", number(s, "contact_area"), C::band, 0.0});
+  if (s.contains("contact_half_width")) q.push_back({"contact_half_width", number(s, "contact_half_width"), C::band, 0.0});
+  if (!is_pair(s, "tangential_force")) return q;
+
+  const double fx = s["tangential_force"][0].get<double>(), fy = s["tangential_force"][1].get<double>();
+  const double capacity = number(s, "friction_capacity");
+  const double tiny = 1e-6 * capacity;  // a force component that is zero in the continuum
+  q.push_back({"tangential_force", std::hypot(fx, fy), C::smooth, tiny});
+  q.push_back({"Fx", fx, C::smooth, tiny});
+  q.push_back({"Fy", fy, C::smooth, tiny});
+  const double mz = number(s, "twisting_moment");
+  const double length = std::sqrt(std::max(number(s, "contact_area"), 0.0));
+  q.push_back({"twisting_moment", mz, C::smooth, tiny * length});
+  q.push_back({"Mz", mz, C::smooth, tiny * length});
+  if (is_pair(s, "rigid_shift"))
+    q.push_back({"rigid_shift", std::hypot(s["rigid_shift"][0].get<double>(), s["rigid_shift"][1].get<double>()),
+                 C::smooth, 0.0});
+  if (is_pair(s, "creepage"))
+    q.push_back({"creepage", std::hypot(s["creepage"][0].get<double>(), s["creepage"][1].get<double>()), C::smooth, 0.0});
+  const double area = number(s, "contact_area");
+  q.push_back({"stick_area", number(s, "stick_area"), C::band, 1e-6 * area});
+  q.push_back({"slip_area", number(s, "slip_area"), C::band, 1e-6 * area});
+  return q;
+}
+
+}  // namespace dc::runs

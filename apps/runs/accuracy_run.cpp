@@ -1,0 +1,324 @@
+#include "accuracy_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "accuracy_quantities.hpp"
+#include "discretisation_error.hpp"
+#include "interrupt.hpp"
+#include "tangential_run.hpp"
+
+namespace dc::runs {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// A measure of the element size: the grids' ratio is what the estimate uses.
+double element_size(const Grid& g) { return g.dimension == 3 ? std::sqrt(g.dx * g.dy) : g.dx; }
+
+/// The fewest elements across the contact a coarse grid may have for its answer to count: below
+/// it the peak pressure is off by tens of per cent and the sequence is not asymptotic.
+constexpr int kMinAcross3d = 6, kMinAcross2d = 8;
+
+int fewest_across(const nlohmann::json& summary) {
+  const nlohmann::json& a = summary.value("elements_across_contact", nlohmann::json());
+  if (a.is_number()) return a.get<int>();
+  if (a.is_array() && a.size() == 2) return std::min(a[0].get<int>(), a[1].get<int>());
+  return 0;
+}
+
+/// One solved grid.
+struct GridSolve {
+  Grid grid;
+  StaticRun run;
+  double seconds = 0.0;
+};
+
+/// The grids solved so far, by element counts (a refinement by 2 reuses the last two grids).
+class GridSolves {
+ public:
+  GridSolves(const Case& c, bool progress) : case_(c), progress_(progress) {}
+  /// The coarse grids take the backend that solved the fine one (auto would give the smallest
+  /// grids to Ipopt, at several times the native solver's time); the fallbacks stay.
+  void use_backend_of(const SolverReport& fine) {
+    if (case_.solver.backend != Backend::automatic) return;
+    if (const auto b = backend_from_string(fine.backend); b && *b != Backend::automatic) backend_ = *b;
+  }
+  const GridSolve& solve(const Grid& g) {
+    const auto key = std::make_pair(g.nx, g.ny);
+    const auto found = solved_.find(key);
+    if (found != solved_.end() && same_bounds(found->second.grid, g)) return found->second;
+    Case on_grid = case_;
+    on_grid.grid = g;
+    on_grid.solver.backend = backend_;
+    // The same operator on every grid: auto would build the dense matrix on the smaller ones,
+    // which costs more than their FFT solve.
+    if (on_grid.solver.operator_kind == OperatorKind::automatic && g.size() < case_.grid.size())
+      on_grid.solver.operator_kind = OperatorKind::fft;
+    GridSolve s;
+    s.grid = g;
+    const auto start = Clock::now();
+    s.run = run_static_once(on_grid, progress_);
+    s.seconds = seconds_since(start);
+    return solved_[key] = std::move(s);
+  }
+
+ private:
+  static bool same_bounds(const Grid& a, const Grid& b) {
+    return a.x0 == b.x0 && a.y0 == b.y0 && a.x_max() == b.x_max() && a.y_max() == b.y_max();
+  }
+  const Case& case_;
+  bool progress_;
+  Backend backend_ = case_.solver.backend;
+  std::map<std::pair<int, int>, GridSolve> solved_;
+};
+
+/// The estimate of a fine grid: its coarsenings by 2 and 4 where they still resolve the contact
+/// and converge.
+struct Estimate {
+  std::vector<const GridSolve*> levels;  // finest first
+  std::string unavailable;               // why there is none (empty: there is one)
+  struct Quantity {
+    QuantityValue quantity;
+    DiscretisationError error;
+    std::vector<double> values;  // per grid, finest first
+  };
+  std::vector<Quantity> quantities;
+  double coarse_seconds = 0.0;
+  bool interrupted = false;  // during a coarse solve
+};
+
+Estimate estimate_on(GridSolves& solves, const Grid& fine_grid) {
+  Estimate e;
+  const GridSolve& fine = solves.solve(fine_grid);
+  e.levels.push_back(&fine);
+  if (!fine.run.converged || fine.run.interrupted) {
+    e.unavailable = fine.run.interrupted ? "interrupted" : "the solve did not converge";
+    return e;
+  }
+  solves.use_backend_of(fine.run.report);
+  const int min_across = fine_grid.dimension == 3 ? kMinAcross3d : kMinAcross2d;
+  const int across = fewest_across(fine.run.summary);
+  for (int factor : {2, 4}) {
+    if (across / factor < min_across) {
+      if (e.levels.size() == 1)
+        e.unavailable = "the contact is " + std::to_string(across) + " elements across: a grid of twice the element "
+                        "size would have fewer than " + std::to_string(min_across);
+      break;
+    }
+    const GridSolve* solved = nullptr;
+    try {
+      solved = &solves.solve(coarsened(fine_grid, factor));
+    } catch (const Interrupted&) {  // the fine answer stands; the run says it was interrupted
+      e.unavailable = "interrupted";
+      e.interrupted = true;
+      return e;
+    }
+    const GridSolve& coarse = *solved;
+    e.coarse_seconds += coarse.seconds;
+    if (!coarse.run.converged) {
+      if (e.levels.size() == 1) e.unavailable = "the solve on the grid of twice the element size did not converge";
+      break;
+    }
+    e.levels.push_back(&coarse);
+  }
+  if (e.levels.size() < 2) return e;
+  std::vector<std::vector<QuantityValue>> per_level;
+  for (const GridSolve* l : e.levels) per_level.push_back(accuracy_quantities(l->run.summary));
+  for (const QuantityValue& q : per_level[0]) {
+    std::vector<GridValue> values;
+    for (std::size_t k = 0; k < per_level.size(); ++k)
+      for (const QuantityValue& v : per_level[k])
+        if (v.name == q.name) values.push_back({element_size(e.levels[k]->grid), v.value});
+    if (values.size() < 2) continue;
+    // Prescribed by the case (the same on every grid) or zero in the continuum (within its
+    // scale on every grid): no discretisation error to report.
+    const bool same = std::all_of(values.begin(), values.end(), [&](const GridValue& v) {
+      return std::abs(v.value - values[0].value) <= 1e-12 * std::abs(values[0].value);
+    });
+    const bool zero = std::all_of(values.begin(), values.end(), [&](const GridValue& v) { return std::abs(v.value) <= q.scale; });
+    if (same || zero) continue;
+    ErrorEstimateOptions options;
+    options.scale = q.scale;
+    e.quantities.push_back({q, estimate_discretisation_error(values, q.convergence, options), {}});
+    for (const GridValue& v : values) e.quantities.back().values.push_back(v.value);
+  }
+  return e;
+}
+
+/// The named quantity's relative error (0 when the case prescribes it: not among the results);
+/// HUGE_VAL without an estimate.
+double named_error(const Estimate& e, const std::string& name) {
+  if (!e.unavailable.empty()) return HUGE_VAL;
+  for (const auto& q : e.quantities)
+    if (q.quantity.name == name) return q.error.relative_error;
+  return 0.0;
+}
+
+const DiscretisationError* named_estimate(const Estimate& e, const std::string& name) {
+  for (const auto& q : e.quantities)
+    if (q.quantity.name == name) return &q.error;
+  return nullptr;
+}
+
+nlohmann::json grid_json(const Grid& g) {
+  nlohmann::json j = {{"nx", g.nx}};
+  if (g.dimension == 3) j["ny"] = g.ny;
+  return j;
+}
+
+nlohmann::json accuracy_json(const Estimate& e, const AccuracySpec& spec) {
+  nlohmann::json a;
+  const GridSolve& fine = *e.levels.front();
+  a["grid"] = grid_json(fine.grid);
+  nlohmann::json grids = nlohmann::json::array();
+  for (const GridSolve* l : e.levels) {
+    nlohmann::json g = grid_json(l->grid);
+    g["time_s"] = l->seconds;
+    grids.push_back(g);
+  }
+  a["grids"] = grids;
+  if (!e.unavailable.empty()) {
+    a["estimate"] = nullptr;
+    a["unavailable"] = e.unavailable;
+  } else {
+    nlohmann::json q = nlohmann::json::object();
+    for (const auto& [value, err, per_grid] : e.quantities) {
+      nlohmann::json entry = {{"value", err.value},
+                              {"values", per_grid},
+                              {"extrapolated", err.extrapolated},
+                              {"error_estimate", err.relative_error},
+                              {"error_estimate_absolute", err.error},
+                              {"method", err.method}};
+      entry["order"] = err.order ? nlohmann::json(*err.order) : nlohmann::json();
+      q[value.name] = entry;
+    }
+    a["quantities"] = q;
+    // The estimate's cost: the coarse solves over the fine one (3-D about 1/4 + 1/16).
+    a["cost_fraction"] = fine.seconds > 0.0 ? e.coarse_seconds / fine.seconds : 0.0;
+  }
+  a["target"] = spec.target ? nlohmann::json(*spec.target) : nlohmann::json();
+  a["met"] = nlohmann::json();
+  return a;
+}
+
+std::vector<std::string> target_quantities(const AccuracySpec& spec) {
+  return spec.quantities.empty() ? std::vector<std::string>{"max_pressure"} : spec.quantities;
+}
+
+/// The grid `g` with its bounds grown by `factor` about their centre and the element size kept
+/// (element counts rounded up to a multiple of 4).
+Grid grown(const Grid& g, double factor) {
+  auto count = [&](int n) { return 4 * static_cast<int>(std::ceil(n * factor / 4.0)); };
+  const int nx = count(g.nx);
+  const double cx = 0.5 * (g.x0 + g.x_max()), hx = 0.5 * nx * g.dx;
+  if (g.dimension == 2) return Grid::make(2, nx, 1, cx - hx, cx + hx, 0.0, 0.0);
+  const int ny = count(g.ny);
+  const double cy = 0.5 * (g.y0 + g.y_max()), hy = 0.5 * ny * g.dy;
+  return Grid::make(3, nx, ny, cx - hx, cx + hx, cy - hy, cy + hy);
+}
+
+Grid refined(const Grid& g, int factor) {
+  if (g.dimension == 2) return Grid::make(2, g.nx * factor, 1, g.x0, g.x_max(), 0.0, 0.0);
+  return Grid::make(3, g.nx * factor, g.ny * factor, g.x0, g.x_max(), g.y0, g.y_max());
+}
+
+StaticRun finish(const Estimate& e, nlohmann::json accuracy) {
+  StaticRun run = e.levels.front()->run;
+  run.interrupted = run.interrupted || e.interrupted;
+  run.summary["accuracy"] = std::move(accuracy);
+  return run;
+}
+
+/// accuracy.target: refine until every named quantity's estimated error is below the target.
+StaticRun refine_to_target(const Case& c, bool progress) {
+  const AccuracySpec& spec = c.accuracy;
+  const double target = *spec.target;
+  const auto names = target_quantities(spec);
+  const auto start = Clock::now();
+  GridSolves solves(c, progress);
+  Grid grid = c.grid;
+  int refinements = 0, growths = 0;
+  for (;;) {
+    const Estimate e = estimate_on(solves, grid);
+    const GridSolve& fine = *e.levels.front();
+    nlohmann::json a = accuracy_json(e, spec);
+    a["quantities_targeted"] = names;
+    a["refinements"] = refinements;
+    a["extent_growths"] = growths;
+    a["time_s"] = seconds_since(start);
+    auto stop = [&](const char* why) {
+      a["met"] = std::string(why) == "target";
+      a["stopped_by"] = why;
+      return finish(e, a);
+    };
+    if (e.interrupted || fine.run.interrupted) return stop("interrupted");
+    if (!fine.run.converged) return stop("unconverged");
+    // The contact reaches the grid's edge: grow the bounds, keep the element size.
+    const bool at_edge = fine.run.summary.value("contact_touches_boundary", false) && !c.allow_edge_contact;
+    double worst = 0.0, order = 2.0;
+    for (const std::string& n : names) {
+      const double err = named_error(e, n);
+      if (err / target > worst) {
+        worst = err / target;
+        const DiscretisationError* d = named_estimate(e, n);
+        order = d && d->method == "band" ? 1.0 : d && d->order ? std::clamp(*d->order, 1.0, 2.0) : 2.0;
+      }
+    }
+    if (!at_edge && worst <= 1.0) return stop("target");
+    Grid next = at_edge ? grown(grid, 1.5) : grid;
+    if (at_edge) {
+      ++growths;
+    } else {
+      // The element size the estimate asks for, with a margin: refine by 2, or by 4 when the
+      // error is far from the target (no estimate: by 2).
+      const double factor = std::isfinite(worst) ? std::pow(worst / 0.8, 1.0 / order) : 2.0;
+      next = refined(grid, factor > 2.0 ? 4 : 2);
+      if (static_cast<double>(next.size()) > static_cast<double>(spec.max_elements) && factor > 2.0)
+        next = refined(grid, 2);
+      ++refinements;
+    }
+    if (static_cast<double>(next.size()) > static_cast<double>(spec.max_elements)) return stop("max_elements");
+    // The next solves' time, from this grid's (a little worse than linear in the elements).
+    const double growth = static_cast<double>(next.size()) / static_cast<double>(grid.size());
+    const double predicted = (fine.seconds + e.coarse_seconds) * std::pow(growth, 1.1);
+    if (seconds_since(start) + predicted > spec.max_seconds) return stop("max_seconds");
+    grid = next;
+  }
+}
+
+}  // namespace
+
+Grid coarsened(const Grid& g, int factor) {
+  auto count = [&](int n) { return std::max(1, static_cast<int>(std::lround(static_cast<double>(n) / factor))); };
+  if (g.dimension == 2) return Grid::make(2, count(g.nx), 1, g.x0, g.x_max(), 0.0, 0.0);
+  return Grid::make(3, count(g.nx), count(g.ny), g.x0, g.x_max(), g.y0, g.y_max());
+}
+
+StaticRun run_static_with_accuracy(const Case& c, bool progress) {
+  const bool applies = c.problem == ProblemKind::normal || c.problem == ProblemKind::tangential;
+  if (!applies || !c.accuracy.estimate) return run_static_once(c, progress);
+  if (c.accuracy.target) return refine_to_target(c, progress);
+  GridSolves solves(c, progress);
+  const Estimate e = estimate_on(solves, c.grid);
+  // An interrupted history has no estimate: its coarse grids would solve the whole history.
+  if (e.levels.front()->run.interrupted) return e.levels.front()->run;
+  return finish(e, accuracy_json(e, c.accuracy));
+}
+
+bool accuracy_target_missed(const nlohmann::json& summary) {
+  if (!summary.contains("accuracy")) return false;
+  const nlohmann::json& a = summary["accuracy"];
+  return a.value("met", nlohmann::json()).is_boolean() && !a["met"].get<bool>();
+}
+
+}  // namespace dc::runs

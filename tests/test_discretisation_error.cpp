@@ -1,0 +1,109 @@
+// The discretisation error estimate (core/discretisation_error.hpp) on sequences whose error is
+// known: Q_h = Q* + C h^p, non-monotone values, bands, two grids, zero values.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "discretisation_error.hpp"
+
+namespace {
+
+using dc::Convergence;
+using dc::GridValue;
+
+/// Q* + C h^p on h, 2h, 4h (finest first).
+std::vector<GridValue> power_law(double q_star, double c, double p, double h = 0.01, int grids = 3) {
+  std::vector<GridValue> v;
+  for (int k = 0; k < grids; ++k) {
+    const double hk = h * std::pow(2.0, k);
+    v.push_back({hk, q_star + c * std::pow(hk, p)});
+  }
+  return v;
+}
+
+TEST(DiscretisationError, SecondOrderSequenceIsExtrapolatedExactlyAndBoundedWithinThreeTimes) {
+  const auto v = power_law(2.0, 50.0, 2.0);
+  const auto e = dc::estimate_discretisation_error(v, Convergence::smooth);
+  EXPECT_EQ(e.method, "richardson");
+  ASSERT_TRUE(e.order.has_value());
+  EXPECT_NEAR(*e.order, 2.0, 1e-9);
+  EXPECT_NEAR(e.extrapolated, 2.0, 1e-12);
+  const double truth = std::abs(v[0].value - 2.0);
+  EXPECT_GE(e.error, truth);        // not below the true error
+  EXPECT_LE(e.error, 3.0 * truth);  // and within a factor 3
+  EXPECT_NEAR(e.relative_error, e.error / v[0].value, 1e-15);
+}
+
+TEST(DiscretisationError, FirstOrderSequenceIsNotUnderestimated) {
+  const auto v = power_law(-1.0, 3.0, 1.0);
+  const auto e = dc::estimate_discretisation_error(v, Convergence::smooth);
+  ASSERT_TRUE(e.order.has_value());
+  EXPECT_NEAR(*e.order, 1.0, 1e-9);
+  EXPECT_NEAR(e.extrapolated, -1.0, 1e-12);
+  const double truth = std::abs(v[0].value + 1.0);
+  EXPECT_GE(e.error, truth);
+  EXPECT_LE(e.error, 3.0 * truth);
+}
+
+TEST(DiscretisationError, AHighObservedOrderDoesNotShrinkTheEstimate) {
+  // Order 4 on these grids: credited with the expected order, so the bound exceeds the truth.
+  const auto v = power_law(1.0, 1e4, 4.0);
+  const auto e = dc::estimate_discretisation_error(v, Convergence::smooth);
+  ASSERT_TRUE(e.order.has_value());
+  EXPECT_NEAR(*e.order, 4.0, 1e-6);
+  EXPECT_GE(e.error, std::abs(v[0].value - 1.0));
+}
+
+TEST(DiscretisationError, AFinePairThatAgreesByChanceKeepsTheCoarsePairsPrediction) {
+  // The finest two values almost agree (the contact set gained an element), the coarser pair
+  // does not: the estimate stays at the coarser pair's prediction.
+  std::vector<GridValue> v = {{0.01, 1.0 + 1e-4}, {0.02, 1.0 + 1.01e-4}, {0.04, 1.0 + 2e-3}};
+  const auto e = dc::estimate_discretisation_error(v, Convergence::smooth);
+  const double coarse_pair = (2e-3 - 1.01e-4) / ((std::pow(2.0, 1.75) - 1.0) * std::pow(2.0, 1.75));
+  EXPECT_GE(e.error, coarse_pair);
+}
+
+TEST(DiscretisationError, NonMonotoneValuesGetABandOfTheChanges) {
+  std::vector<GridValue> v = {{0.01, 1.000}, {0.02, 1.004}, {0.04, 0.990}};
+  const auto e = dc::estimate_discretisation_error(v, Convergence::smooth);
+  EXPECT_EQ(e.method, "band");
+  EXPECT_FALSE(e.order.has_value());
+  EXPECT_DOUBLE_EQ(e.extrapolated, 1.0);
+  EXPECT_NEAR(e.error, std::max(0.004, 0.014 / std::pow(2.0, 1.75)), 1e-15);
+}
+
+TEST(DiscretisationError, BandQuantitiesTakeTheLargestChange) {
+  std::vector<GridValue> v = {{0.01, 10.0}, {0.02, 10.3}, {0.04, 10.1}};
+  const auto e = dc::estimate_discretisation_error(v, Convergence::band);
+  EXPECT_EQ(e.method, "band");
+  EXPECT_NEAR(e.error, 0.3, 1e-12);
+  EXPECT_NEAR(e.relative_error, 0.03, 1e-12);
+}
+
+TEST(DiscretisationError, TwoGridsAssumeTheExpectedOrderWithTheLargerSafetyFactor) {
+  const auto v = power_law(5.0, 100.0, 2.0, 0.01, 2);
+  const auto e = dc::estimate_discretisation_error(v, Convergence::smooth);
+  EXPECT_EQ(e.method, "assumed_order");
+  EXPECT_FALSE(e.order.has_value());
+  const double d = std::abs(v[0].value - v[1].value);
+  EXPECT_NEAR(e.error, 3.0 * d / (std::pow(2.0, 1.75) - 1.0), 1e-12);
+  EXPECT_GE(e.error, std::abs(v[0].value - 5.0));
+}
+
+TEST(DiscretisationError, AZeroValueIsJudgedAgainstItsScale) {
+  std::vector<GridValue> v = {{0.01, 1e-9}, {0.02, 2e-9}, {0.04, -1e-9}};
+  dc::ErrorEstimateOptions o;
+  o.scale = 1.0;
+  const auto e = dc::estimate_discretisation_error(v, Convergence::smooth, o);
+  EXPECT_LT(e.relative_error, 1e-8);
+}
+
+TEST(DiscretisationError, RejectsFewerThanTwoGridsAndUnorderedSizes) {
+  EXPECT_THROW(dc::estimate_discretisation_error({{0.01, 1.0}}, Convergence::smooth), std::invalid_argument);
+  EXPECT_THROW(dc::estimate_discretisation_error({{0.02, 1.0}, {0.01, 1.1}}, Convergence::smooth),
+               std::invalid_argument);
+}
+
+}  // namespace
