@@ -17,6 +17,7 @@ const std::vector<AccuracyQuantityName>& accuracy_quantity_names() {
       {"tangential_force", false}, {"Fx", false},             {"Fy", false},
       {"twisting_moment", false},  {"Mz", false},             {"rigid_shift", false},
       {"creepage", false},         {"stick_area", false},     {"slip_area", false},
+      {"stick_fraction", false},
   };
   return names;
 }

@@ -33,24 +33,29 @@ std::vector<QuantityValue> accuracy_quantities(const nlohmann::json& s) {
   if (s.contains("contact_half_width")) q.push_back({"contact_half_width", number(s, "contact_half_width"), C::band, 0.0});
   if (!is_pair(s, "tangential_force")) return q;
 
+  // The tangential results depend on where the contact edge and the stick-slip boundary fall
+  // within an element: from grid to grid they change by up to 10 x their error (Carter's
+  // creepage, Mindlin's shift: docs/accuracy.md), so Richardson's number falls below the true
+  // error in one case of four. They get the band of the changes, which holds in 19 of 20.
   const double fx = s["tangential_force"][0].get<double>(), fy = s["tangential_force"][1].get<double>();
   const double capacity = number(s, "friction_capacity");
   const double tiny = 1e-6 * capacity;  // a force component that is zero in the continuum
-  q.push_back({"tangential_force", std::hypot(fx, fy), C::smooth, tiny});
-  q.push_back({"Fx", fx, C::smooth, tiny});
-  q.push_back({"Fy", fy, C::smooth, tiny});
+  q.push_back({"tangential_force", std::hypot(fx, fy), C::band, tiny});
+  q.push_back({"Fx", fx, C::band, tiny});
+  q.push_back({"Fy", fy, C::band, tiny});
   const double mz = number(s, "twisting_moment");
   const double length = std::sqrt(std::max(number(s, "contact_area"), 0.0));
-  q.push_back({"twisting_moment", mz, C::smooth, tiny * length});
-  q.push_back({"Mz", mz, C::smooth, tiny * length});
+  q.push_back({"twisting_moment", mz, C::band, tiny * length});
+  q.push_back({"Mz", mz, C::band, tiny * length});
   if (is_pair(s, "rigid_shift"))
     q.push_back({"rigid_shift", std::hypot(s["rigid_shift"][0].get<double>(), s["rigid_shift"][1].get<double>()),
-                 C::smooth, 0.0});
+                 C::band, 0.0});
   if (is_pair(s, "creepage"))
-    q.push_back({"creepage", std::hypot(s["creepage"][0].get<double>(), s["creepage"][1].get<double>()), C::smooth, 0.0});
+    q.push_back({"creepage", std::hypot(s["creepage"][0].get<double>(), s["creepage"][1].get<double>()), C::band, 0.0});
   const double area = number(s, "contact_area");
   q.push_back({"stick_area", number(s, "stick_area"), C::band, 1e-6 * area});
   q.push_back({"slip_area", number(s, "slip_area"), C::band, 1e-6 * area});
+  if (area > 0.0) q.push_back({"stick_fraction", number(s, "stick_area") / area, C::band, 1e-6});
   return q;
 }
 

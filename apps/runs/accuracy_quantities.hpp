@@ -22,10 +22,10 @@ struct QuantityValue {
 };
 
 /// The results of a normal or tangential summary (a history: its last step's keys) that the
-/// case did not prescribe: approach or normal force (whichever the control leaves free), peak
-/// pressure, contact area (and the 2-D half-width) as bands; a tangential step adds its force
-/// (magnitude and components), twisting moment, the rigid shift or creepage it found, and its
-/// stick and slip areas (bands).
+/// case did not prescribe: approach or normal force (whichever the control leaves free) and peak
+/// pressure (smooth), contact area (and the 2-D half-width) as bands; a tangential step adds, as
+/// bands, its force (magnitude and components), twisting moment, the rigid shift or creepage it
+/// found, and its stick and slip areas.
 std::vector<QuantityValue> accuracy_quantities(const nlohmann::json& summary);
 
 }  // namespace dc::runs
