@@ -169,6 +169,25 @@ TEST_F(CliAccuracy, TangentialTargetIsMetAgainstCarter) {
   EXPECT_LE(std::abs(value - xi) / xi, 3e-3);
 }
 
+/// The refinement's last grid, warm-started from the grid before it, gives the answer of a cold
+/// solve on that grid (to the solver's tolerance), in no more iterations.
+TEST_F(CliAccuracy, AWarmStartedRefinementGivesTheColdAnswer) {
+  json c = hertz_case(false);
+  c["grid"] = {{"extent", 1.3}};
+  c["accuracy"] = {{"target", 1e-4}};
+  c["solver"] = {{"backend", "native"}};
+  const json refined = solve(c);
+  ASSERT_GT(refined.at("accuracy").at("refinements").get<int>(), 0);
+  json cold = c;
+  cold["grid"]["nx"] = refined.at("grid").at("nx");
+  cold["grid"]["ny"] = refined.at("grid").at("ny");
+  cold["accuracy"] = {{"estimate", false}};
+  const json direct = solve(cold);
+  for (const char* q : {"max_pressure", "approach"})
+    EXPECT_NEAR(refined.at(q).get<double>() / direct.at(q).get<double>(), 1.0, 1e-7) << q;
+  EXPECT_LE(refined.at("solver").at("iterations").get<int>(), direct.at("solver").at("iterations").get<int>());
+}
+
 /// A target the budget cannot reach: the finest grid's results, met false, exit 3.
 TEST_F(CliAccuracy, AMissedTargetSaysWhyAndExitsThree) {
   json c = hertz_case(false);

@@ -10,8 +10,10 @@
 
 namespace dc {
 
-NormalSolution solve_normal_case(const ContactSpec& c, const ProgressCallback& progress) {
+NormalSolution solve_normal_case(const ContactSpec& c, const ProgressCallback& progress,
+                                 const std::vector<double>* warm_pressure) {
   NormalProblem problem(c.grid, c.materials, profile_heights(c.profile, c.grid), c.solver.operator_kind);
+  if (warm_pressure && warm_pressure->size() == c.grid.size()) problem.set_warm_start(*warm_pressure);
   return problem.solve(c.normal, c.solver, progress);
 }
 

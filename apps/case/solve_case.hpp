@@ -8,8 +8,10 @@
 
 namespace dc {
 
-/// The whole normal case: grid, profile, operator, solve.
-NormalSolution solve_normal_case(const ContactSpec& c, const ProgressCallback& progress = {});
+/// The whole normal case: grid, profile, operator, solve; from `warm_pressure` (one per element)
+/// when given (a refined grid starting from a coarser grid's answer).
+NormalSolution solve_normal_case(const ContactSpec& c, const ProgressCallback& progress = {},
+                                 const std::vector<double>* warm_pressure = nullptr);
 
 /// The tangential problem of a case (grid, materials, profile, friction, solver.operator), set up
 /// and in its unloaded state. Throws InputError("friction") when the case has no friction.

@@ -31,15 +31,18 @@
 namespace dc::python {
 
 /// A case given as a dict, JSON text, or a path (str or os.PathLike), validated.
-Case case_from(const py::object& arg) {
-  if (py::isinstance<py::dict>(arg)) return build_case(from_python(arg), ".");
+/// The case document of a dict, JSON text, or a path (str or os.PathLike).
+nlohmann::json case_document(const py::object& arg) {
+  if (py::isinstance<py::dict>(arg)) return from_python(arg);
   const std::string text = py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
   const auto first = text.find_first_not_of(" \t\r\n");
-  if (first != std::string::npos && text[first] == '{') return build_case(parse_case_text(text, "case"), ".");
+  if (first != std::string::npos && text[first] == '{') return parse_case_text(text, "case");
   nlohmann::json doc = read_case_file(text);
   if (doc.is_object() && !doc.contains("name")) doc["name"] = std::filesystem::path(text).stem().string();
-  return build_case(doc, ".");
+  return doc;
 }
+
+Case case_from(const py::object& arg) { return build_case(case_document(arg), "."); }
 
 }  // namespace dc::python
 
@@ -66,8 +69,17 @@ py::dict fields_dict(const dc::Grid& g, const dc::output::StaticFields& f) {
   return d;
 }
 
-py::dict solve(const py::object& case_arg, const py::object& out, bool progress) {
-  const dc::Case c = case_from(case_arg);
+py::dict solve(const py::object& case_arg, const py::object& out, bool progress, const py::object& accuracy) {
+  nlohmann::json document = case_document(case_arg);
+  if (!accuracy.is_none()) {  // accuracy=1e-3: the case's accuracy.target (its other accuracy keys kept)
+    if (!py::isinstance<py::float_>(accuracy) && !py::isinstance<py::int_>(accuracy))
+      throw dc::InputError("accuracy", "expected a relative error (a number such as 1e-3)");
+    if (document.is_object()) {
+      if (!document.contains("accuracy") || !document["accuracy"].is_object()) document["accuracy"] = nlohmann::json::object();
+      document["accuracy"]["target"] = accuracy.cast<double>();
+    }
+  }
+  const dc::Case c = dc::build_case(document, ".");
   if (c.problem == dc::ProblemKind::dynamic || c.problem == dc::ProblemKind::paper_cylinder) {
     if (!out.is_none())
       throw dc::InputError("out", "solve() writes files for normal and tangential cases; run dynamic and "
@@ -87,18 +99,21 @@ py::dict solve(const py::object& case_arg, const py::object& out, bool progress)
     py::gil_scoped_release release;
     run = dc::runs::run_static(c, progress);
   }
+  dc::Case solved = c;  // on the grid solved (an accuracy target chooses it)
+  solved.grid = run.grid;
   nlohmann::json summary = run.summary;
-  dc::runs::attach_result_limits(c, summary);  // as `dyncontact solve` writes them
+  dc::runs::attach_result_limits(solved, summary);  // as `dyncontact solve` writes them
   std::string advice = "; the result is in this exception's .result";
   if (folder.lock) {  // summary.json last: complete or absent
-    dc::output::write_fields(folder.dir, c.grid, run.fields.back());
+    dc::output::write_fields(folder.dir, solved.grid, run.fields.back());
     summary["files"] = {{"summary", "summary.json"}, {"fields", "fields.csv"}};
     dc::output::write_summary(folder.dir, summary);
     advice = "; the results are written to " + folder.dir + " and are in this exception's .result";
   }
   py::dict result = to_python(summary);
-  result["fields"] = fields_dict(c.grid, run.fields.back());
+  result["fields"] = fields_dict(solved.grid, run.fields.back());
   enforce_summary_limits(summary, result, advice);
+  enforce_accuracy_target(summary, result, advice);
   return result;
 }
 
@@ -202,7 +217,8 @@ PYBIND11_MODULE(dyncontact, m) {
   bind_errors(m);
 
   m.def("solve", &solve, py::arg("case"), py::arg("out") = py::none(), py::arg("progress") = false,
-        "solve(case, out=None, progress=False) -> dict\n\n"
+        py::arg("accuracy") = py::none(),
+        "solve(case, out=None, progress=False, accuracy=None) -> dict\n\n"
         "Solves a case given as a dict, a JSON string or a path to a case file\n"
         "(the format of CASES.md; `dyncontact example NAME` prints complete ones). Returns the\n"
         "summary (the keys of summary.json: normal_force, approach, max_pressure, contact_area,\n"
@@ -220,7 +236,12 @@ PYBIND11_MODULE(dyncontact, m) {
         "that is an error (the command line's exit 2) raises ResultLimitError (an InputError; .key,\n"
         ".limits, and .result: this summary with its fields), after writing the files when `out` is\n"
         "given; the others are ResultLimitWarning warnings. OutputError (an OSError) when a file\n"
-        "cannot be written.");
+        "cannot be written.\n\n"
+        "A normal or tangential result carries 'accuracy' (docs/accuracy.md): each result's value,\n"
+        "extrapolated value and estimated relative error from the grids of 2 and 4 times the element\n"
+        "size. accuracy=1e-3 asks for that relative error instead of a grid (the case's accuracy.target;\n"
+        "grid.nx/ny may then be left out): the grid is refined until the named quantities\n"
+        "(accuracy.quantities, default max_pressure) meet it, else AccuracyError (.result).");
 
   bind_problems(m);
   bind_runs(m);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "accuracy_run.hpp"
 #include "case_model.hpp"
 #include "errors.hpp"
 #include "output_files.hpp"
@@ -18,10 +19,12 @@ PyObject* g_input_error = nullptr;
 PyObject* g_result_limit_error = nullptr;
 PyObject* g_result_limit_warning = nullptr;
 PyObject* g_solver_fallback_warning = nullptr;
+PyObject* g_accuracy_error = nullptr;
 
 struct ResultLimitTag {};    // py::exception's C++ type: none is thrown (enforce_limits raises)
 struct ResultLimitWarningTag {};
 struct SolverFallbackWarningTag {};
+struct AccuracyErrorTag {};
 
 /// An exception instance of `type` with `message` and .key.
 py::object error_with_key(PyObject* type, const std::string& message, const std::string& key) {
@@ -56,6 +59,13 @@ void bind_errors(py::module_& m) {
   result_limit_warning.attr("__doc__") =
       "A limit of a result that is not an error (a UserWarning), e.g. a contact resolved by fewer than\n"
       "4 elements, or one the case accepts (grid.allow_edge_contact): the result's 'limits' list it too.";
+  static py::exception<AccuracyErrorTag> accuracy_error(m, "AccuracyError", PyExc_RuntimeError);
+  g_accuracy_error = accuracy_error.ptr();
+  accuracy_error.attr("__doc__") =
+      "The accuracy asked for (solve(..., accuracy=...) or the case's accuracy.target) was not reached\n"
+      "within accuracy.max_elements or accuracy.max_seconds (a RuntimeError; `dyncontact solve` exits 3).\n"
+      ".result holds the result of the finest grid solved, with its 'accuracy' block (met: False,\n"
+      "stopped_by, the estimated error of each quantity).";
   static py::exception<dc::OutputError> output_error(m, "OutputError", PyExc_OSError);
   output_error.attr("__doc__") =
       "A file of solve(out=...) could not be written (an OSError: errno, strerror and filename when a\n"
@@ -90,6 +100,17 @@ void enforce_limits(const nlohmann::json& limits, const py::object& result, cons
     const std::string text = l.value("key", "") + ": " + l.value("message", "");
     if (PyErr_WarnEx(g_result_limit_warning, text.c_str(), 1) != 0) throw py::error_already_set();  // an error filter
   }
+}
+
+void enforce_accuracy_target(const nlohmann::json& summary, const py::object& result, const std::string& advice) {
+  if (!runs::accuracy_target_missed(summary)) return;
+  const nlohmann::json& a = summary["accuracy"];
+  py::object err = py::handle(g_accuracy_error)("accuracy: the target " + std::to_string(a["target"].get<double>()) +
+                                                " was not met (stopped by " + a.value("stopped_by", std::string("?")) +
+                                                " on " + a["grid"].dump() + ")" + advice);
+  err.attr("result") = result;
+  PyErr_SetObject(g_accuracy_error, err.ptr());
+  throw py::error_already_set();
 }
 
 void warn_fallback(const nlohmann::json& solver) {

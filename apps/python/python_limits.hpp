@@ -31,6 +31,10 @@ void enforce_limits(const nlohmann::json& limits, const py::object& result, cons
 /// `auto`'s first backend failed and another answered ("fallback_warning"); nothing otherwise.
 void warn_fallback(const nlohmann::json& solver);
 
+/// AccuracyError (a RuntimeError with .result) when the summary's accuracy target was not met
+/// (the command line's exit 3); nothing otherwise.
+void enforce_accuracy_target(const nlohmann::json& summary, const py::object& result, const std::string& advice);
+
 /// warn_fallback on a summary's "solver", then enforce_limits on its "limits" and on those of
 /// each of its "runs" (a sweep).
 void enforce_summary_limits(const nlohmann::json& summary, const py::object& result, const std::string& advice);

@@ -10,6 +10,7 @@
 
 #include "accuracy_quantities.hpp"
 #include "discretisation_error.hpp"
+#include "grid_interpolation.hpp"
 #include "interrupt.hpp"
 #include "tangential_run.hpp"
 
@@ -53,7 +54,9 @@ class GridSolves {
     if (case_.solver.backend != Backend::automatic) return;
     if (const auto b = backend_from_string(fine.backend); b && *b != Backend::automatic) backend_ = *b;
   }
-  const GridSolve& solve(const Grid& g) {
+  /// `g` solved (once: a grid asked for again is the one solved before); a normal case from the
+  /// pressure of `warm_from` interpolated to `g` (a refinement starts from the coarser answer).
+  const GridSolve& solve(const Grid& g, const GridSolve* warm_from = nullptr) {
     const auto key = std::make_pair(g.nx, g.ny);
     const auto found = solved_.find(key);
     if (found != solved_.end() && same_bounds(found->second.grid, g)) return found->second;
@@ -66,8 +69,11 @@ class GridSolves {
       on_grid.solver.operator_kind = OperatorKind::fft;
     GridSolve s;
     s.grid = g;
+    std::vector<double> warm;
+    if (warm_from && case_.problem == ProblemKind::normal && !warm_from->run.fields.empty())
+      warm = interpolate_to_grid(warm_from->grid, warm_from->run.fields.back().p, g);
     const auto start = Clock::now();
-    s.run = run_static_once(on_grid, progress_);
+    s.run = run_static_once(on_grid, progress_, warm.empty() ? nullptr : &warm);
     s.seconds = seconds_since(start);
     return solved_[key] = std::move(s);
   }
@@ -97,9 +103,25 @@ struct Estimate {
   bool interrupted = false;  // during a coarse solve
 };
 
-Estimate estimate_on(GridSolves& solves, const Grid& fine_grid) {
+/// A history's results at its peak load step (the largest normal force; the last of equal ones),
+/// else the summary's own.
+int peak_load_step_index(const nlohmann::json& summary) {
+  if (!summary.contains("steps") || !summary["steps"].is_array() || summary["steps"].empty()) return -1;
+  const nlohmann::json& steps = summary["steps"];
+  std::size_t peak = 0;
+  for (std::size_t k = 0; k < steps.size(); ++k)
+    if (std::abs(steps[k].value("normal_force", 0.0)) >= std::abs(steps[peak].value("normal_force", 0.0))) peak = k;
+  return static_cast<int>(peak);
+}
+
+const nlohmann::json& peak_load_step(const nlohmann::json& summary) {
+  const int k = peak_load_step_index(summary);
+  return k < 0 ? summary : summary["steps"][static_cast<std::size_t>(k)];
+}
+
+Estimate estimate_on(GridSolves& solves, const Grid& fine_grid, const GridSolve* warm_from = nullptr) {
   Estimate e;
-  const GridSolve& fine = solves.solve(fine_grid);
+  const GridSolve& fine = solves.solve(fine_grid, warm_from);
   e.levels.push_back(&fine);
   if (!fine.run.converged || fine.run.interrupted) {
     e.unavailable = fine.run.interrupted ? "interrupted" : "the solve did not converge";
@@ -107,7 +129,7 @@ Estimate estimate_on(GridSolves& solves, const Grid& fine_grid) {
   }
   solves.use_backend_of(fine.run.report);
   const int min_across = fine_grid.dimension == 3 ? kMinAcross3d : kMinAcross2d;
-  const int across = fewest_across(fine.run.summary);
+  const int across = fewest_across(peak_load_step(fine.run.summary));
   for (int factor : {2, 4}) {
     if (across / factor < min_across) {
       if (e.levels.size() == 1)
@@ -133,7 +155,7 @@ Estimate estimate_on(GridSolves& solves, const Grid& fine_grid) {
   }
   if (e.levels.size() < 2) return e;
   std::vector<std::vector<QuantityValue>> per_level;
-  for (const GridSolve* l : e.levels) per_level.push_back(accuracy_quantities(l->run.summary));
+  for (const GridSolve* l : e.levels) per_level.push_back(accuracy_quantities(peak_load_step(l->run.summary)));
   for (const QuantityValue& q : per_level[0]) {
     std::vector<GridValue> values;
     for (std::size_t k = 0; k < per_level.size(); ++k)
@@ -206,6 +228,7 @@ nlohmann::json accuracy_json(const Estimate& e, const AccuracySpec& spec) {
     // The estimate's cost: the coarse solves over the fine one (3-D about 1/4 + 1/16).
     a["cost_fraction"] = fine.seconds > 0.0 ? e.coarse_seconds / fine.seconds : 0.0;
   }
+  if (const int k = peak_load_step_index(fine.run.summary); k >= 0) a["step"] = k;  // a history's peak load
   a["target"] = spec.target ? nlohmann::json(*spec.target) : nlohmann::json();
   a["met"] = nlohmann::json();
   return a;
@@ -248,8 +271,10 @@ StaticRun refine_to_target(const Case& c, bool progress) {
   GridSolves solves(c, progress);
   Grid grid = c.grid;
   int refinements = 0, growths = 0;
+  const GridSolve* previous = nullptr;  // the last fine grid: the next one starts from its answer
   for (;;) {
-    const Estimate e = estimate_on(solves, grid);
+    const Estimate e = estimate_on(solves, grid, previous);
+    previous = e.levels.front();
     const GridSolve& fine = *e.levels.front();
     nlohmann::json a = accuracy_json(e, spec);
     a["quantities_targeted"] = names;

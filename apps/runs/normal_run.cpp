@@ -9,13 +9,13 @@
 
 namespace dc::runs {
 
-NormalRun run_normal(const Case& c, bool progress) {
+NormalRun run_normal(const Case& c, bool progress, const std::vector<double>* warm_pressure) {
   NormalRun run;
   {
     Progress reporter("solving " + c.name + " (" + to_string(c.solver.backend) + ")", progress);
     // time_s: the whole solve (set-up and every backend tried), not only the last attempt.
     const auto start = std::chrono::steady_clock::now();
-    run.solution = solve_normal_case(c, reporter.callback());
+    run.solution = solve_normal_case(c, reporter.callback(), warm_pressure);
     run.solution.report.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     reporter.finish();
   }

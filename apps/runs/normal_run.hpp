@@ -19,6 +19,7 @@ struct NormalRun {
 
 /// Solves with dc::solve_normal_case, a progress line on stderr when `progress` and the
 /// solve takes over a second.
-NormalRun run_normal(const Case& c, bool progress);
+/// `warm_pressure`: the solve's start (one pressure per element), else cold.
+NormalRun run_normal(const Case& c, bool progress, const std::vector<double>* warm_pressure = nullptr);
 
 }  // namespace dc::runs

@@ -158,7 +158,7 @@ TangentialRun run_tangential(const Case& c, bool progress) {
 
 StaticRun run_static(const Case& c, bool progress) { return run_static_with_accuracy(c, progress); }
 
-StaticRun run_static_once(const Case& c, bool progress) {
+StaticRun run_static_once(const Case& c, bool progress, const std::vector<double>* warm_pressure) {
   StaticRun out;
   if (c.problem == ProblemKind::finite) out = run_finite_static(c, progress);
   out.grid = c.grid;
@@ -175,7 +175,7 @@ StaticRun run_static_once(const Case& c, bool progress) {
     out.interrupted = run.interrupted;
     return out;
   }
-  NormalRun run = run_normal(c, progress);
+  NormalRun run = run_normal(c, progress, warm_pressure);
   out.summary = std::move(run.summary);
   out.fields.push_back(std::move(run.fields));
   out.normal = c.normal;

@@ -59,7 +59,8 @@ struct StaticRun {
 /// Runs a static case (normal, tangential, finite) with its accuracy block
 /// (run_static_with_accuracy, accuracy_run.hpp): what `solve`, `compare` and Python call.
 StaticRun run_static(const Case& c, bool progress);
-/// One solve of a static case on its grid (run_normal / run_tangential / run_finite_static).
-StaticRun run_static_once(const Case& c, bool progress);
+/// One solve of a static case on its grid (run_normal / run_tangential / run_finite_static);
+/// a normal case from `warm_pressure` (one per element) when given.
+StaticRun run_static_once(const Case& c, bool progress, const std::vector<double>* warm_pressure = nullptr);
 
 }  // namespace dc::runs

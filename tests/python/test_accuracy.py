@@ -1,0 +1,56 @@
+"""The accuracy block from Python (issue 28): every normal and tangential result carries its
+estimated discretisation error; solve(case, accuracy=...) chooses the grid for a relative error,
+met against Hertz's closed form; an unreachable target raises AccuracyError with the result."""
+import copy
+
+import pytest
+
+import dyncontact
+
+from example_cases import example
+
+
+def test_result_dict_carries_the_accuracy_block():
+    r = dyncontact.solve(example("hertz-sphere"))
+    a = r["accuracy"]
+    p = a["quantities"]["max_pressure"]
+    assert p["value"] == r["max_pressure"]
+    assert set(p) >= {"value", "extrapolated", "error_estimate", "order", "method", "values"}
+    # The estimate bounds the true error against Hertz, within a factor 3 on this grid.
+    true = abs(r["hertz"]["relative_difference"]["max_pressure"])
+    assert true <= p["error_estimate"] <= 3 * true
+    assert [g["nx"] for g in a["grids"]] == [64, 32, 16]
+
+
+@pytest.mark.parametrize("target", [1e-2, 1e-3])
+def test_accuracy_argument_chooses_the_grid_and_meets_hertz(target):
+    case = example("hertz-ellipse")
+    del case["grid"]  # the target sizes the grid
+    r = dyncontact.solve(case, accuracy=target)
+    a = r["accuracy"]
+    assert a["met"] is True and a["target"] == target
+    assert r["grid"]["nx"] == a["grid"]["nx"] == r["fields"]["p"].shape[1]
+    assert abs(r["hertz"]["relative_difference"]["max_pressure"]) <= target
+
+
+def test_an_unreachable_target_raises_accuracy_error_with_the_result():
+    case = example("hertz-sphere")
+    case["accuracy"] = {"max_elements": 10000}
+    with pytest.raises(dyncontact.AccuracyError) as e:
+        dyncontact.solve(case, accuracy=1e-6)
+    a = e.value.result["accuracy"]
+    assert a["met"] is False and a["stopped_by"] == "max_elements"
+    assert isinstance(e.value, RuntimeError)
+
+
+def test_bad_accuracy_is_an_input_error_naming_the_key():
+    with pytest.raises(dyncontact.InputError) as e:
+        dyncontact.solve(example("hertz-sphere"), accuracy="fine")
+    assert e.value.key == "accuracy"
+    with pytest.raises(dyncontact.InputError) as e:
+        dyncontact.solve(example("hertz-sphere"), accuracy=-1.0)
+    assert e.value.key == "accuracy.target"
+    dynamic = copy.deepcopy(example("ball-impact"))
+    with pytest.raises(dyncontact.InputError) as e:
+        dyncontact.solve(dynamic, accuracy=1e-3)
+    assert e.value.key == "accuracy"
