@@ -74,4 +74,27 @@ DiscretisationError estimate_discretisation_error(const std::vector<GridValue>& 
   return e;
 }
 
+DiscretisationError estimate_discretisation_error_shifted(const std::vector<ShiftedGridValue>& values,
+                                                          Convergence kind, const ErrorEstimateOptions& options) {
+  std::vector<GridValue> own;
+  for (const ShiftedGridValue& v : values) own.push_back({v.h, v.value});
+  if (values.size() < 3) return estimate_discretisation_error(own, kind, options);
+  const double r = values[1].h / values[0].h, r2 = values[2].h / values[1].h;
+  const double m0 = values[0].shifted_mean, m1 = values[1].shifted_mean, m2 = values[2].shifted_mean;
+  const double d1 = m0 - m1, d2 = m1 - m2;
+  if (!(d1 * d2 > 0.0 && std::abs(d1) < std::abs(d2))) return estimate_discretisation_error(own, kind, options);
+  const double observed = std::log(d2 / d1) / std::log(std::sqrt(r * r2));
+  const double p = std::clamp(observed, 1.0, 3.0);
+  const double q_fine = m0 + d1 / (std::pow(r, p) - 1.0), q_coarse = m1 + d2 / (std::pow(r2, p) - 1.0);
+  DiscretisationError e;
+  e.value = values[0].value;
+  e.extrapolated = q_fine;
+  e.order = observed;
+  e.method = "richardson_shifted";
+  constexpr double kSafety = 2.0;
+  e.error = kSafety * (std::abs(e.value - q_fine) + std::abs(q_fine - q_coarse));
+  e.relative_error = relative_to(e.error, e.value, options.scale);
+  return e;
+}
+
 }  // namespace dc

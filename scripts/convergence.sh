@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# Grid convergence against the closed forms (issue 28's evidence): solves the bundled Hertz
-# cases on a sequence of grids (the same extent, the element size halved and in between),
-# reads each run's relative difference to the closed form from summary.json ("hertz"), fits
-# the observed order of each quantity (least squares of log|error| against log h over the
-# finer half of the grids), and sets a three-grid Richardson estimate (h, 2h, 4h, the observed
-# order; and Roache's grid convergence index with a safety factor of 1.25) beside the true
-# error. Writes OUT/convergence.tsv, OUT/richardson.tsv and a log-log figure per case
-# (OUT/<case>.svg, gnuplot), prints the fitted orders.
+# Grid convergence against the closed forms (issue 28, docs/accuracy.md): solves the Hertz
+# sphere, ellipse and line contact, Carter's rolling cylinder and Cattaneo's shifted sphere on a
+# sequence of grids (the same extent, the element size halved and in between), takes each run's
+# relative difference to its closed form (summary.json "hertz"; Carter's creepage and Mindlin's
+# shift computed here), fits the observed order of each quantity (least squares of log|error|
+# against log h over the finer half of the grids), and sets the program's own error estimate
+# (summary.json "accuracy") beside the true error. Writes OUT/convergence.tsv, OUT/orders.tsv,
+# OUT/estimates.tsv and a log-log figure per case with the fitted orders (OUT/<case>.svg,
+# gnuplot); prints the orders and how often the estimate is within 1-3x the true error.
 #   scripts/convergence.sh [--out DIR]      (default out/convergence)
 # Environment: DYNCONTACT_BUILD_DIR (default build).
 set -euo pipefail
@@ -30,11 +31,13 @@ cases=(
   "hertz-sphere 3 16 24 32 48 64 96 128 192 256"
   "hertz-ellipse 3 16 24 32 48 64 96 128 192 256"
   "hertz-cylinder-2d 2 32 48 64 96 128 192 256 384 512 768 1024 1536 2048"
+  "carter-2d 2 50 64 100 128 200 256 400 512 800 1024"
+  "cattaneo-sphere 3 24 32 48 64 96 128"
 )
 for spec in "${cases[@]}"; do
   read -r name dim grids <<<"$spec"
   for n in $grids; do
-    sets=(--set "grid.nx=$n" --set output.plots=false)
+    sets=(--set "grid.nx=$n" --set output.plots=false --set output.fields=false)
     [[ $dim == 3 ]] && sets+=(--set "grid.ny=$n")
     DYNCONTACT_THREADS=1 "$BUILD_DIR/bin/dyncontact" solve "examples/$name.json" --out "$work/$name-$n" -q "${sets[@]}" \
       >/dev/null || { echo "convergence: $name on $n elements did not solve" >&2; exit 1; }
@@ -45,15 +48,35 @@ done
 /usr/bin/env python3 - "$work" "$out" <<'PY'
 import json, math, os, sys
 work, out = sys.argv[1], sys.argv[2]
-quantities = ["max_pressure", "approach", "contact_area"]
-rows, rich, fits = [], [], []
+
+def closed_form_errors(name, s):
+    """Relative differences to the closed form: Hertz's from summary.json, Carter's creepage and
+    Mindlin's shift (Johnson 7.42, 8.2) from the case's data."""
+    if name in ("carter-2d", "cattaneo-sphere"):
+        m = s["materials"]
+        E, nu = m["body"]["E"], m["body"]["nu"]  # the two bodies are alike in these examples
+        e_star, G = E / (2 * (1 - nu * nu)), E / (2 * (1 + nu))
+        case = json.load(open(os.path.join("examples", name + ".json")))
+        P, mu, R = case["normal"]["force"], case["friction"]["mu"], case["profile"]["radius"]
+        Q = abs(case["tangential"]["force"][0])
+        if name == "carter-2d":
+            a = math.sqrt(4 * P * R / (math.pi * e_star))
+            ref, value = mu * a / R * (1 - math.sqrt(1 - Q / (mu * P))), math.hypot(*s["creepage"])
+            return {"creepage": (value - ref) / ref}
+        a = (3 * P * R / (4 * e_star)) ** (1 / 3)
+        ref = 3 * mu * P / (16 * a) * 2 * (2 - nu) / G * (1 - (1 - Q / (mu * P)) ** (2 / 3))
+        return {"rigid_shift": (math.hypot(*s["rigid_shift"]) - ref) / ref}
+    return s["hertz"]["relative_difference"]
+
+quantities = ["max_pressure", "approach", "contact_area", "creepage", "rigid_shift"]
+rows, estimates, fits = [], [], {}
 for line in open(os.path.join(work, "cases")):
     name, *grids = line.split()
     grids = [int(g) for g in grids]
     data = {}
     for n in grids:
         s = json.load(open(os.path.join(work, f"{name}-{n}", "summary.json")))
-        data[n] = (s["grid"]["dx"], s["hertz"]["relative_difference"], s)
+        data[n] = (s["grid"]["dx"], closed_form_errors(name, s), s)
     for q in quantities:
         if q not in data[grids[0]][1]:
             continue
@@ -64,50 +87,47 @@ for line in open(os.path.join(work, "cases")):
         if len(fine) >= 2:
             mx = sum(x for x, _ in fine) / len(fine)
             my = sum(y for _, y in fine) / len(fine)
-            slope = sum((x - mx) * (y - my) for x, y in fine) / sum((x - mx) ** 2 for x, _ in fine)
-            fits.append((name, q, slope))
-        # Three grids h, 2h, 4h among the runs: value = reference * (1 + relative difference).
+            fits[(name, q)] = sum((x - mx) * (y - my) for x, y in fine) / sum((x - mx) ** 2 for x, _ in fine)
+        # The program's own estimate (summary.json "accuracy") beside the true error.
         for n in grids:
-            if n % 4 or n // 2 not in data or n // 4 not in data:
-                continue
-            ref = data[n][2]["hertz"][q]
-            f, m, c = (ref * (1 + data[k][1][q]) for k in (n, n // 2, n // 4))
-            d1, d2 = f - m, m - c
+            a = data[n][2].get("accuracy", {}).get("quantities", {}).get(q)
             true = abs(data[n][1][q])
-            if d1 != 0 and d1 * d2 > 0 and abs(d2 / d1) > 1.0:
-                p = math.log2(abs(d2 / d1))
-                est = abs(d1) / (2 ** p - 1) / abs(f)
-            else:
-                p = float("nan")
-                est = max(abs(d1), abs(d2)) / abs(f)  # not monotone: the band of the last two changes
-            gci = 1.25 * est if not math.isnan(p) else est
-            rich.append((name, q, n, true, est, gci, p))
+            if a and true > 0:
+                estimates.append((name, q, n, true, a["error_estimate"], a["method"], a["error_estimate"] / true))
 with open(os.path.join(out, "convergence.tsv"), "w") as t:
     t.write("case\tquantity\tnx\th\trelative_error\n")
     for r in rows:
         t.write("%s\t%s\t%d\t%.6g\t%.6g\n" % r)
-with open(os.path.join(out, "richardson.tsv"), "w") as t:
-    t.write("case\tquantity\tnx\ttrue_error\trichardson\tgci_1.25\tobserved_order\n")
-    for r in rich:
-        t.write("%s\t%s\t%d\t%.3e\t%.3e\t%.3e\t%.2f\n" % r)
+with open(os.path.join(out, "orders.tsv"), "w") as t:
+    t.write("case\tquantity\tfitted_order\n")
+    for (name, q), p in fits.items():
+        t.write("%s\t%s\t%.2f\n" % (name, q, p))
+with open(os.path.join(out, "estimates.tsv"), "w") as t:
+    t.write("case\tquantity\tnx\ttrue_error\testimate\tmethod\testimate_over_true\n")
+    for r in estimates:
+        t.write("%s\t%s\t%d\t%.3e\t%.3e\t%s\t%.2f\n" % r)
 print("fitted orders (finer half of the grids):")
-for name, q, p in fits:
+for (name, q), p in fits.items():
     print(f"  {name:20s} {q:14s} {p:5.2f}")
-print("three-grid estimates (estimate / true error):")
-for name, q, n, true, est, gci, p in rich:
-    ratio = est / true if true > 0 else float("inf")
-    print(f"  {name:20s} {q:14s} nx {n:5d}  true {true:.2e}  Richardson {est:.2e} (x {ratio:.2f})  "
-          f"GCI {gci:.2e} (x {gci / true if true > 0 else float('inf'):.2f})  order {p:.2f}")
+print("the program's estimates against the true errors (estimate / true):")
+groups = {}
+for name, q, n, true, est, method, ratio in estimates:
+    groups.setdefault((name, q), []).append(ratio)
+for (name, q), r in groups.items():
+    within = sum(1 for x in r if 1 <= x <= 3)
+    below = sum(1 for x in r if x < 1)
+    print(f"  {name:20s} {q:14s} {len(r):3d} grids: within 1-3x {within:3d}, below {below:3d}, "
+          f"range {min(r):.2f}-{max(r):.2f}")
 PY
 
 if command -v gnuplot >/dev/null 2>&1; then
   while read -r name _; do
-    for q in max_pressure approach contact_area; do
-      awk -F'\t' -v c="$name" -v q="$q" '$1 == c && $2 == q { print $4, $5 }' "$out/convergence.tsv" >"$work/$name-$q.dat"
-    done
     plot=""
-    for q in max_pressure approach contact_area; do
-      [[ -s "$work/$name-$q.dat" ]] && plot+="${plot:+, }'$work/$name-$q.dat' with linespoints title '$q' noenhanced"
+    for q in max_pressure approach contact_area creepage rigid_shift; do
+      awk -F'\t' -v c="$name" -v q="$q" '$1 == c && $2 == q { print $4, $5 }' "$out/convergence.tsv" >"$work/$name-$q.dat"
+      order=$(awk -F'\t' -v c="$name" -v q="$q" '$1 == c && $2 == q { print $3 }' "$out/orders.tsv")
+      [[ -s "$work/$name-$q.dat" ]] &&
+        plot+="${plot:+, }'$work/$name-$q.dat' with linespoints title '$q (order ${order:-?})' noenhanced"
     done
     gnuplot <<EOF
 set terminal svg size 640,480
@@ -121,4 +141,4 @@ plot $plot
 EOF
   done <"$work/cases"
 fi
-echo "wrote $out/convergence.tsv, $out/richardson.tsv and the figures $out/*.svg"
+echo "wrote $out/convergence.tsv, $out/orders.tsv, $out/estimates.tsv and the figures $out/*.svg"

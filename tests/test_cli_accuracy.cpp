@@ -100,22 +100,26 @@ TEST_F(CliAccuracy, HertzPeakPressureEstimatesAreWithinThreeTimesTheTrueError) {
   EXPECT_GE(within, 9) << "of " << cases;
 }
 
-/// The line contact's peak pressure depends on where the contact edge falls in an element: its
-/// estimate is conservative, not below the true error in at least 9 of 10 grids.
-TEST_F(CliAccuracy, LineContactPeakPressureEstimateIsNotBelowTheTrueError) {
-  int not_below = 0;
+/// The line contact's peak pressure depends on where the contact edge falls in an element; with
+/// the grids shifted by thirds of an element the estimate is within 1x to 3x the true error in at
+/// least 9 of 10 grids.
+TEST_F(CliAccuracy, LineContactPeakPressureEstimatesAreWithinThreeTimesTheTrueError) {
+  int within = 0;
   for (int n : {80, 110, 140, 170, 200, 230, 260, 290, 320, 350}) {
     json c = line_case();
     c["grid"] = {{"nx", n}, {"extent", 1.25}};
     const Estimated p = against_hertz(solve(c), "max_pressure");
-    not_below += p.ratio() >= 1.0;
+    within += p.ratio() >= 1.0 && p.ratio() <= 3.0;
+    EXPECT_EQ(p.method, "richardson_shifted");
     std::printf("line %3d: max_pressure estimate/true %.2f (%s)\n", n, p.ratio(), p.method.c_str());
   }
-  EXPECT_GE(not_below, 9);
+  EXPECT_GE(within, 9);
 }
 
-/// Carter's creepage (force given): the band is not below the true error in at least 9 of 10 grids.
-TEST_F(CliAccuracy, CarterCreepageBandIsNotBelowTheTrueError) {
+/// Carter's creepage (force given): the estimate is not below the true error in at least 9 of 10
+/// grids (within 3 x in 6: where the contact edge falls by chance, the error is 50 x smaller
+/// than on the neighbouring grids).
+TEST_F(CliAccuracy, CarterCreepageEstimateIsNotBelowTheTrueError) {
   const json base = carter_case();
   const dc::MaterialPair m{dc::Elastic::from_E_nu(2.1e11, 0.3), dc::Elastic::from_E_nu(2.1e11, 0.3)};
   const double P = 2.0e5, R = 0.015, mu = 0.25;

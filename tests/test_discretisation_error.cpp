@@ -100,6 +100,35 @@ TEST(DiscretisationError, AZeroValueIsJudgedAgainstItsScale) {
   EXPECT_LT(e.relative_error, 1e-8);
 }
 
+/// A first-order error plus a part that depends on where the contact edge falls in an element
+/// (a sine of the edge's position in element units): the grid's own value is off by the sine,
+/// the mean over the grids shifted by thirds of an element is not.
+TEST(DiscretisationError, ShiftedGridsSeparateTheEdgePositionFromTheSmoothError) {
+  const double q_star = 1.0, c = 0.5, amplitude = 2.0, edge = 0.37;
+  auto q = [&](double h, double shift) {
+    return q_star + c * h + amplitude * h * std::sin(2.0 * std::acos(-1.0) * (edge / h + shift));
+  };
+  for (double h : {0.003, 0.0041, 0.0057}) {
+    std::vector<dc::ShiftedGridValue> v;
+    for (int k = 0; k < 3; ++k) {
+      const double hk = h * (1 << k);
+      v.push_back({hk, q(hk, 0.0), (q(hk, 0.0) + q(hk, 1.0 / 3.0) + q(hk, 2.0 / 3.0)) / 3.0});
+    }
+    const auto e = dc::estimate_discretisation_error_shifted(v, Convergence::smooth);
+    EXPECT_EQ(e.method, "richardson_shifted");
+    EXPECT_NEAR(e.extrapolated, q_star, 1e-12);  // the means are exactly first order here
+    const double truth = std::abs(v[0].value - q_star);
+    EXPECT_GE(e.error, truth) << h;
+    EXPECT_LE(e.error, 3.0 * truth) << h;
+  }
+}
+
+TEST(DiscretisationError, ShiftedMeansThatAreNotMonotoneFallBackToTheGridsOwnValues) {
+  const std::vector<dc::ShiftedGridValue> v = {{0.01, 1.0, 1.001}, {0.02, 1.004, 0.999}, {0.04, 0.99, 1.003}};
+  const auto e = dc::estimate_discretisation_error_shifted(v, Convergence::smooth);
+  EXPECT_EQ(e.method, "band");
+}
+
 TEST(DiscretisationError, RejectsFewerThanTwoGridsAndUnorderedSizes) {
   EXPECT_THROW(dc::estimate_discretisation_error({{0.01, 1.0}}, Convergence::smooth), std::invalid_argument);
   EXPECT_THROW(dc::estimate_discretisation_error({{0.02, 1.0}, {0.01, 1.1}}, Convergence::smooth),

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <string>
 #include <utility>
 #include <vector>
@@ -57,7 +58,7 @@ class GridSolves {
   /// `g` solved (once: a grid asked for again is the one solved before); a normal case from the
   /// pressure of `warm_from` interpolated to `g` (a refinement starts from the coarser answer).
   const GridSolve& solve(const Grid& g, const GridSolve* warm_from = nullptr) {
-    const auto key = std::make_pair(g.nx, g.ny);
+    const auto key = std::make_tuple(g.nx, g.ny, g.x0, g.y0);
     const auto found = solved_.find(key);
     if (found != solved_.end() && same_bounds(found->second.grid, g)) return found->second;
     Case on_grid = case_;
@@ -85,7 +86,7 @@ class GridSolves {
   const Case& case_;
   bool progress_;
   Backend backend_ = case_.solver.backend;
-  std::map<std::pair<int, int>, GridSolve> solved_;
+  std::map<std::tuple<int, int, double, double>, GridSolve> solved_;
 };
 
 /// The estimate of a fine grid: its coarsenings by 2 and 4 where they still resolve the contact
@@ -154,8 +155,32 @@ Estimate estimate_on(GridSolves& solves, const Grid& fine_grid, const GridSolve*
     e.levels.push_back(&coarse);
   }
   if (e.levels.size() < 2) return e;
+  auto quantities_of = [](const GridSolve& l) { return accuracy_quantities(peak_load_step(l.run.summary)); };
   std::vector<std::vector<QuantityValue>> per_level;
-  for (const GridSolve* l : e.levels) per_level.push_back(accuracy_quantities(peak_load_step(l->run.summary)));
+  for (const GridSolve* l : e.levels) per_level.push_back(quantities_of(*l));
+  // 2-D: every size also on the grids shifted by a third and two thirds of an element
+  // (estimate_discretisation_error_shifted); skipped where one of them fails or cuts the contact.
+  std::vector<std::vector<std::vector<QuantityValue>>> shifted(e.levels.size());
+  bool use_shifted = fine_grid.dimension == 2 && e.levels.size() == 3;
+  for (std::size_t k = 0; k < e.levels.size() && use_shifted; ++k)
+    for (double share : {1.0 / 3.0, 2.0 / 3.0}) {
+      const Grid& g = e.levels[k]->grid;
+      const double dx = share * g.dx;
+      const GridSolve* s = nullptr;
+      try {
+        s = &solves.solve(Grid::make(2, g.nx, 1, g.x0 + dx, g.x_max() + dx, 0.0, 0.0));
+      } catch (const Interrupted&) {
+        e.interrupted = true;
+        use_shifted = false;
+        break;
+      }
+      e.coarse_seconds += s->seconds;
+      if (!s->run.converged || s->run.summary.value("contact_touches_boundary", false)) {
+        use_shifted = false;
+        break;
+      }
+      shifted[k].push_back(quantities_of(*s));
+    }
   for (const QuantityValue& q : per_level[0]) {
     std::vector<GridValue> values;
     for (std::size_t k = 0; k < per_level.size(); ++k)
@@ -171,7 +196,20 @@ Estimate estimate_on(GridSolves& solves, const Grid& fine_grid, const GridSolve*
     if (same || zero) continue;
     ErrorEstimateOptions options;
     options.scale = q.scale;
-    e.quantities.push_back({q, estimate_discretisation_error(values, q.convergence, options), {}});
+    DiscretisationError estimate = estimate_discretisation_error(values, q.convergence, options);
+    if (use_shifted && values.size() == 3) {
+      std::vector<ShiftedGridValue> with_shifts;
+      for (std::size_t k = 0; k < values.size(); ++k) {
+        double sum = values[k].value;
+        int count = 1;
+        for (const auto& shift : shifted[k])
+          for (const QuantityValue& v : shift)
+            if (v.name == q.name) sum += v.value, ++count;
+        with_shifts.push_back({values[k].h, values[k].value, sum / count});
+      }
+      estimate = estimate_discretisation_error_shifted(with_shifts, q.convergence, options);
+    }
+    e.quantities.push_back({q, estimate, {}});
     for (const GridValue& v : values) e.quantities.back().values.push_back(v.value);
   }
   return e;
