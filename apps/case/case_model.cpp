@@ -58,7 +58,7 @@ const std::vector<BlockUse>& block_uses() {
       {"dimensionless", {P::paper_cylinder}},
       {"sweep", {P::paper_cylinder, P::dynamic}},
       {"fe_body", {P::finite, P::dynamic}},
-      {"accuracy", {P::normal, P::tangential}},
+      {"accuracy", {P::normal, P::tangential, P::dynamic}},
   };
   return uses;
 }
@@ -140,12 +140,13 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   if (top.has("solver")) c.solver = read_solver(top.at("solver"));
   if (top.has("output")) c.output = read_output(top.at("output"));
   if (top.has("accuracy")) c.accuracy = read_accuracy(top.at("accuracy"), c.problem);
+  if (!top.has("accuracy") && c.problem == ProblemKind::dynamic) c.accuracy.estimate = false;  // opt-in there
   if (c.problem == ProblemKind::dynamic) {
     c.dynamic = read_dynamic(document, c);
     if (!has_normal && !fe) has_normal = dynamics::dynamic_sizing_load(*c.dynamic, c, c.normal);
   }
   if (fe) read_finite_blocks(document, c, base_dir);  // read_fe_body.cpp
-  if (required("grid") && !fe) {
+  if ((required("grid") || c.accuracy.target) && !fe) {
     if (!has_profile) throw InputError("profile", "missing required key (the grid needs a profile)");
     // An accuracy target sizes the grid itself: the block (its extent or bounds) is optional.
     static const nlohmann::json no_grid = nlohmann::json::object();

@@ -12,12 +12,16 @@ using namespace case_json;
 
 const std::vector<AccuracyQuantityName>& accuracy_quantity_names() {
   static const std::vector<AccuracyQuantityName> names = {
-      {"max_pressure", true},      {"approach", true},        {"normal_force", true},
-      {"contact_area", true},      {"contact_half_width", true},
-      {"tangential_force", false}, {"Fx", false},             {"Fy", false},
-      {"twisting_moment", false},  {"Mz", false},             {"rigid_shift", false},
-      {"creepage", false},         {"stick_area", false},     {"slip_area", false},
-      {"stick_fraction", false},
+      {"max_pressure", true, true, false},      {"approach", true, true, false},
+      {"normal_force", true, true, false},      {"contact_area", true, true, false},
+      {"contact_half_width", true, true, false}, {"tangential_force", false, true, false},
+      {"Fx", false, true, false},               {"Fy", false, true, false},
+      {"twisting_moment", false, true, false},  {"Mz", false, true, false},
+      {"rigid_shift", false, true, false},      {"creepage", false, true, false},
+      {"stick_area", false, true, false},       {"slip_area", false, true, false},
+      {"stick_fraction", false, true, false},   {"max_normal_force", false, false, true},
+      {"max_approach", false, false, true},     {"max_contact_area", false, false, true},
+      {"contact_time", false, false, true},     {"rebound_velocity", false, false, true},
   };
   return names;
 }
@@ -26,7 +30,7 @@ AccuracySpec read_accuracy(const json& j, ProblemKind problem) {
   JsonBlock o(j, "accuracy");
   o.allow({"estimate", "target", "quantities", "max_elements", "max_seconds"});
   AccuracySpec a;
-  a.estimate = o.boolean_or("estimate", true);
+  a.estimate = o.boolean_or("estimate", problem != ProblemKind::dynamic || o.has("target"));
   if (o.has("target")) {
     a.target = o.positive("target");
     if (*a.target >= 0.5) throw InputError("accuracy.target", "a relative error below 0.5 (e.g. 1e-3), got " + fmt(*a.target));
@@ -42,11 +46,14 @@ AccuracySpec read_accuracy(const json& j, ProblemKind problem) {
       if (!e.is_string()) throw InputError("accuracy.quantities", "expected names, found " + describe(e));
       const std::string name = e.get<std::string>();
       const auto& names = accuracy_quantity_names();
+      auto of_problem = [&](const AccuracyQuantityName& n) {
+        return problem == ProblemKind::dynamic ? n.dynamic : problem == ProblemKind::tangential ? n.tangential : n.normal;
+      };
       const auto it = std::find_if(names.begin(), names.end(), [&](const auto& n) { return name == n.name; });
       std::string list;
       for (const auto& n : names)
-        if (n.normal || problem == ProblemKind::tangential) list += (list.empty() ? "" : ", ") + std::string(n.name);
-      if (it == names.end() || (!it->normal && problem != ProblemKind::tangential))
+        if (of_problem(n)) list += (list.empty() ? "" : ", ") + std::string(n.name);
+      if (it == names.end() || !of_problem(*it))
         throw InputError("accuracy.quantities", "unknown quantity '" + name + "' for problem " + to_string(problem) +
                                                     " (expected one of: " + list + ")");
       a.quantities.push_back(name);

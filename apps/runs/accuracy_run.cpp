@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "accuracy_estimate.hpp"
 #include "accuracy_quantities.hpp"
 #include "discretisation_error.hpp"
 #include "grid_interpolation.hpp"
@@ -23,9 +24,6 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
-
-/// A measure of the element size: the grids' ratio is what the estimate uses.
-double element_size(const Grid& g) { return g.dimension == 3 ? std::sqrt(g.dx * g.dy) : g.dx; }
 
 /// The fewest elements across the contact a coarse grid may have for its answer to count: below
 /// it the peak pressure is off by tens of per cent and the sequence is not asymptotic.
@@ -94,12 +92,7 @@ class GridSolves {
 struct Estimate {
   std::vector<const GridSolve*> levels;  // finest first
   std::string unavailable;               // why there is none (empty: there is one)
-  struct Quantity {
-    QuantityValue quantity;
-    DiscretisationError error;
-    std::vector<double> values;  // per grid, finest first
-  };
-  std::vector<Quantity> quantities;
+  std::vector<EstimatedQuantity> quantities;
   double coarse_seconds = 0.0;
   bool interrupted = false;  // during a coarse solve
 };
@@ -181,59 +174,10 @@ Estimate estimate_on(GridSolves& solves, const Grid& fine_grid, const GridSolve*
       }
       shifted[k].push_back(quantities_of(*s));
     }
-  for (const QuantityValue& q : per_level[0]) {
-    std::vector<GridValue> values;
-    for (std::size_t k = 0; k < per_level.size(); ++k)
-      for (const QuantityValue& v : per_level[k])
-        if (v.name == q.name) values.push_back({element_size(e.levels[k]->grid), v.value});
-    if (values.size() < 2) continue;
-    // Prescribed by the case (the same on every grid) or zero in the continuum (within its
-    // scale on every grid): no discretisation error to report.
-    const bool same = std::all_of(values.begin(), values.end(), [&](const GridValue& v) {
-      return std::abs(v.value - values[0].value) <= 1e-12 * std::abs(values[0].value);
-    });
-    const bool zero = std::all_of(values.begin(), values.end(), [&](const GridValue& v) { return std::abs(v.value) <= q.scale; });
-    if (same || zero) continue;
-    ErrorEstimateOptions options;
-    options.scale = q.scale;
-    DiscretisationError estimate = estimate_discretisation_error(values, q.convergence, options);
-    if (use_shifted && values.size() == 3) {
-      std::vector<ShiftedGridValue> with_shifts;
-      for (std::size_t k = 0; k < values.size(); ++k) {
-        double sum = values[k].value;
-        int count = 1;
-        for (const auto& shift : shifted[k])
-          for (const QuantityValue& v : shift)
-            if (v.name == q.name) sum += v.value, ++count;
-        with_shifts.push_back({values[k].h, values[k].value, sum / count});
-      }
-      estimate = estimate_discretisation_error_shifted(with_shifts, q.convergence, options);
-    }
-    e.quantities.push_back({q, estimate, {}});
-    for (const GridValue& v : values) e.quantities.back().values.push_back(v.value);
-  }
+  std::vector<double> sizes;
+  for (const GridSolve* l : e.levels) sizes.push_back(element_size(l->grid));
+  e.quantities = estimate_quantities(sizes, per_level, use_shifted ? &shifted : nullptr);
   return e;
-}
-
-/// The named quantity's relative error (0 when the case prescribes it: not among the results);
-/// HUGE_VAL without an estimate.
-double named_error(const Estimate& e, const std::string& name) {
-  if (!e.unavailable.empty()) return HUGE_VAL;
-  for (const auto& q : e.quantities)
-    if (q.quantity.name == name) return q.error.relative_error;
-  return 0.0;
-}
-
-const DiscretisationError* named_estimate(const Estimate& e, const std::string& name) {
-  for (const auto& q : e.quantities)
-    if (q.quantity.name == name) return &q.error;
-  return nullptr;
-}
-
-nlohmann::json grid_json(const Grid& g) {
-  nlohmann::json j = {{"nx", g.nx}};
-  if (g.dimension == 3) j["ny"] = g.ny;
-  return j;
 }
 
 nlohmann::json accuracy_json(const Estimate& e, const AccuracySpec& spec) {
@@ -251,18 +195,7 @@ nlohmann::json accuracy_json(const Estimate& e, const AccuracySpec& spec) {
     a["estimate"] = nullptr;
     a["unavailable"] = e.unavailable;
   } else {
-    nlohmann::json q = nlohmann::json::object();
-    for (const auto& [value, err, per_grid] : e.quantities) {
-      nlohmann::json entry = {{"value", err.value},
-                              {"values", per_grid},
-                              {"extrapolated", err.extrapolated},
-                              {"error_estimate", err.relative_error},
-                              {"error_estimate_absolute", err.error},
-                              {"method", err.method}};
-      entry["order"] = err.order ? nlohmann::json(*err.order) : nlohmann::json();
-      q[value.name] = entry;
-    }
-    a["quantities"] = q;
+    a["quantities"] = quantities_json(e.quantities);
     // The estimate's cost: the coarse solves over the fine one (3-D about 1/4 + 1/16).
     a["cost_fraction"] = fine.seconds > 0.0 ? e.coarse_seconds / fine.seconds : 0.0;
   }
@@ -328,25 +261,15 @@ StaticRun refine_to_target(const Case& c, bool progress) {
     if (!fine.run.converged) return stop("unconverged");
     // The contact reaches the grid's edge: grow the bounds, keep the element size.
     const bool at_edge = fine.run.summary.value("contact_touches_boundary", false) && !c.allow_edge_contact;
-    double worst = 0.0, order = 2.0;
-    for (const std::string& n : names) {
-      const double err = named_error(e, n);
-      if (err / target > worst) {
-        worst = err / target;
-        const DiscretisationError* d = named_estimate(e, n);
-        order = d && d->method == "band" ? 1.0 : d && d->order ? std::clamp(*d->order, 1.0, 2.0) : 2.0;
-      }
-    }
-    if (!at_edge && worst <= 1.0) return stop("target");
+    const TargetGap gap = target_gap(e.quantities, e.unavailable.empty(), names, target);
+    if (!at_edge && gap.worst <= 1.0) return stop("target");
     Grid next = at_edge ? grown(grid, 1.5) : grid;
     if (at_edge) {
       ++growths;
     } else {
-      // The element size the estimate asks for, with a margin: refine by 2, or by 4 when the
-      // error is far from the target (no estimate: by 2).
-      const double factor = std::isfinite(worst) ? std::pow(worst / 0.8, 1.0 / order) : 2.0;
-      next = refined(grid, factor > 2.0 ? 4 : 2);
-      if (static_cast<double>(next.size()) > static_cast<double>(spec.max_elements) && factor > 2.0)
+      const int factor = refinement_factor(gap);
+      next = refined(grid, factor);
+      if (static_cast<double>(next.size()) > static_cast<double>(spec.max_elements) && factor > 2)
         next = refined(grid, 2);
       ++refinements;
     }

@@ -1,0 +1,99 @@
+#include "accuracy_estimate.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dc::runs {
+
+double element_size(const Grid& g) { return g.dimension == 3 ? std::sqrt(g.dx * g.dy) : g.dx; }
+
+nlohmann::json grid_json(const Grid& g) {
+  nlohmann::json j = {{"nx", g.nx}};
+  if (g.dimension == 3) j["ny"] = g.ny;
+  return j;
+}
+
+std::vector<EstimatedQuantity> estimate_quantities(
+    const std::vector<double>& element_sizes, const std::vector<std::vector<QuantityValue>>& per_level,
+    const std::vector<std::vector<std::vector<QuantityValue>>>* shifted) {
+  std::vector<EstimatedQuantity> out;
+  if (per_level.empty()) return out;
+  for (const QuantityValue& q : per_level[0]) {
+    std::vector<GridValue> values;
+    for (std::size_t k = 0; k < per_level.size() && k < element_sizes.size(); ++k)
+      for (const QuantityValue& v : per_level[k])
+        if (v.name == q.name) values.push_back({element_sizes[k], v.value});
+    if (values.size() < 2) continue;
+    const bool same = std::all_of(values.begin(), values.end(), [&](const GridValue& v) {
+      return std::abs(v.value - values[0].value) <= 1e-12 * std::abs(values[0].value);
+    });
+    const bool zero = std::all_of(values.begin(), values.end(), [&](const GridValue& v) { return std::abs(v.value) <= q.scale; });
+    if (same || zero) continue;
+    ErrorEstimateOptions options;
+    options.scale = q.scale;
+    DiscretisationError estimate = estimate_discretisation_error(values, q.convergence, options);
+    if (shifted && values.size() == 3 && shifted->size() >= 3) {
+      std::vector<ShiftedGridValue> with_shifts;
+      for (std::size_t k = 0; k < values.size(); ++k) {
+        double sum = values[k].value;
+        int count = 1;
+        for (const auto& shift : (*shifted)[k])
+          for (const QuantityValue& v : shift)
+            if (v.name == q.name) sum += v.value, ++count;
+        with_shifts.push_back({values[k].h, values[k].value, sum / count});
+      }
+      estimate = estimate_discretisation_error_shifted(with_shifts, q.convergence, options);
+    }
+    EstimatedQuantity e{q, estimate, {}};
+    for (const GridValue& v : values) e.values.push_back(v.value);
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
+nlohmann::json quantities_json(const std::vector<EstimatedQuantity>& quantities) {
+  nlohmann::json q = nlohmann::json::object();
+  for (const auto& [value, err, per_grid] : quantities) {
+    nlohmann::json entry = {{"value", err.value},
+                            {"values", per_grid},
+                            {"extrapolated", err.extrapolated},
+                            {"error_estimate", err.relative_error},
+                            {"error_estimate_absolute", err.error},
+                            {"method", err.method}};
+    entry["order"] = err.order ? nlohmann::json(*err.order) : nlohmann::json();
+    q[value.name] = entry;
+  }
+  return q;
+}
+
+double named_error(const std::vector<EstimatedQuantity>& quantities, const std::string& name) {
+  const DiscretisationError* e = named_estimate(quantities, name);
+  return e ? e->relative_error : 0.0;
+}
+
+const DiscretisationError* named_estimate(const std::vector<EstimatedQuantity>& quantities, const std::string& name) {
+  for (const auto& q : quantities)
+    if (q.quantity.name == name) return &q.error;
+  return nullptr;
+}
+
+TargetGap target_gap(const std::vector<EstimatedQuantity>& quantities, bool available,
+                     const std::vector<std::string>& names, double target) {
+  TargetGap gap;
+  for (const std::string& n : names) {
+    const double err = available ? named_error(quantities, n) : HUGE_VAL;
+    if (err / target <= gap.worst) continue;
+    gap.worst = err / target;
+    const DiscretisationError* d = available ? named_estimate(quantities, n) : nullptr;
+    gap.order = d && d->method == "band" ? 1.0 : d && d->order ? std::clamp(*d->order, 1.0, 2.0) : 2.0;
+  }
+  return gap;
+}
+
+int refinement_factor(const TargetGap& gap) {
+  // The element size the estimate asks for, with a margin of 0.8 on the target; no estimate: 2.
+  const double factor = std::isfinite(gap.worst) ? std::pow(gap.worst / 0.8, 1.0 / gap.order) : 2.0;
+  return factor > 2.0 ? 4 : 2;
+}
+
+}  // namespace dc::runs

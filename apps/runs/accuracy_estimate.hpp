@@ -1,0 +1,58 @@
+#pragma once
+// The error estimates of a run's results from their values on a sequence of grids (finest
+// first), for the static runs (accuracy_run.hpp) and the dynamic ones (dynamic_accuracy.hpp):
+// which results are reported, and the "quantities" entries of summary.json's accuracy block.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "accuracy_quantities.hpp"
+#include "discretisation_error.hpp"
+#include "grid.hpp"
+
+namespace dc::runs {
+
+struct EstimatedQuantity {
+  QuantityValue quantity;
+  DiscretisationError error;
+  std::vector<double> values;  ///< per grid, finest first
+};
+
+/// A measure of the element size: the grids' ratio is what the estimate uses.
+double element_size(const Grid& g);
+
+/// {"nx"} (3-D also "ny").
+nlohmann::json grid_json(const Grid& g);
+
+/// Each result of the finest grid (per_level[0]) estimated from its values on the grids of
+/// `element_sizes`; with `shifted` (per level, the results of its shifted grids: 2-D) by the
+/// shifted-grid estimate. A result the case prescribes (the same on every grid) or one that is
+/// zero in the continuum (within its scale on every grid) is left out.
+std::vector<EstimatedQuantity> estimate_quantities(
+    const std::vector<double>& element_sizes, const std::vector<std::vector<QuantityValue>>& per_level,
+    const std::vector<std::vector<std::vector<QuantityValue>>>* shifted = nullptr);
+
+/// The "quantities" object: name -> {value, values, extrapolated, error_estimate,
+/// error_estimate_absolute, method, order}.
+nlohmann::json quantities_json(const std::vector<EstimatedQuantity>& quantities);
+
+/// The named result's relative error; 0 when it is not among them (the case prescribes it).
+double named_error(const std::vector<EstimatedQuantity>& quantities, const std::string& name);
+/// The named result's estimate, null when it is not among them.
+const DiscretisationError* named_estimate(const std::vector<EstimatedQuantity>& quantities, const std::string& name);
+
+/// The refinement a target asks for: the largest ratio of a named result's error to the target,
+/// and the order to refine it by (a band: 1; else the observed within [1, 2]; none: 2).
+struct TargetGap {
+  double worst = 0.0;  ///< <= 1: met; HUGE_VAL: a named result has no estimate
+  double order = 2.0;
+};
+TargetGap target_gap(const std::vector<EstimatedQuantity>& quantities, bool available,
+                     const std::vector<std::string>& names, double target);
+
+/// The refinement factor (2 or 4) that brings `gap` to the target with a margin: 4 when the
+/// error is far from it.
+int refinement_factor(const TargetGap& gap);
+
+}  // namespace dc::runs

@@ -1,0 +1,66 @@
+#include "dynamic_peaks.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dc::runs {
+namespace {
+
+/// Where a linear function from a (at t0) to b (at t1) is zero.
+double crossing(double t0, double a, double t1, double b) {
+  return a == b ? t1 : t0 + (t1 - t0) * a / (a - b);
+}
+
+nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+
+}  // namespace
+
+void ContactPeaks::add(const dynamics::DynamicSample& s) {
+  const dynamics::ContactState& cs = s.contact_state;
+  const double t = s.state.time, gap = s.state.position.z() - radius_, vz = s.state.velocity.z();
+  if (cs.in_contact) {
+    max_force_ = std::max(max_force_, std::abs(s.contact.force.z()));
+    max_approach_ = std::max(max_approach_, cs.approach);
+    max_area_ = std::max(max_area_, cs.contact_area);
+  }
+  if (!started_) {  // the first step: a body that starts touching touched at t = 0
+    if (cs.in_contact && gap <= 0.0) first_touch_ = 0.0;
+  } else if (cs.in_contact && !previous_contact_ && std::isnan(first_touch_)) {
+    first_touch_ = gap < 0.0 && previous_gap_ > 0.0 ? crossing(previous_time_, previous_gap_, t, gap) : t;
+  } else if (!cs.in_contact && previous_contact_ && std::isfinite(first_touch_) && std::isnan(release_)) {
+    const bool crossed = previous_gap_ < 0.0 && gap > 0.0;
+    release_ = crossed ? crossing(previous_time_, previous_gap_, t, gap) : previous_time_;
+    const double w = crossed ? (release_ - previous_time_) / (t - previous_time_) : 0.0;
+    rebound_velocity_ = (1.0 - w) * previous_vz_ + w * vz;
+  }
+  started_ = true;
+  previous_contact_ = cs.in_contact;
+  previous_time_ = t;
+  previous_gap_ = gap;
+  previous_vz_ = vz;
+}
+
+nlohmann::json ContactPeaks::to_json() const {
+  const double duration = std::isfinite(release_) && std::isfinite(first_touch_) ? release_ - first_touch_ : kNone;
+  return {{"max_normal_force", max_force_},
+          {"max_approach", max_approach_},
+          {"max_contact_area", max_area_},
+          {"first_touch", number_or_null(first_touch_)},
+          {"release", number_or_null(release_)},
+          {"contact_time", number_or_null(duration)},
+          {"rebound_velocity", number_or_null(rebound_velocity_)}};
+}
+
+std::vector<QuantityValue> ContactPeaks::quantities() const {
+  using C = Convergence;
+  std::vector<QuantityValue> q = {{"max_normal_force", max_force_, C::smooth, 0.0},
+                                  {"max_approach", max_approach_, C::smooth, 0.0},
+                                  {"max_contact_area", max_area_, C::band, 0.0}};
+  if (std::isfinite(release_)) {
+    q.push_back({"contact_time", release_ - first_touch_, C::smooth, 0.0});
+    q.push_back({"rebound_velocity", rebound_velocity_, C::smooth, 0.0});
+  }
+  return q;
+}
+
+}  // namespace dc::runs
