@@ -20,15 +20,21 @@ TrajectoryPoint trajectory_point(const RigidBody& body, const RigidBodyState& st
   return p;
 }
 
+void LocalErrorEstimate::note_speed(const TrajectoryPoint& p) {
+  speed_ref_ = std::max({speed_ref_, p.velocity.norm(), p.rho_omega.norm()});
+}
+
 void LocalErrorEstimate::restart(const TrajectoryPoint& p) {
   last_ = p;
   has_previous_ = false;
+  note_speed(p);
 }
 
 void LocalErrorEstimate::accept(const TrajectoryPoint& p) {
   previous_ = last_;
   last_ = p;
   has_previous_ = true;
+  note_speed(p);
 }
 
 double LocalErrorEstimate::error(const RigidBodyState& end, Scheme scheme, const StepSizeOptions& o) const {
@@ -57,10 +63,10 @@ double LocalErrorEstimate::error(const RigidBodyState& end, Scheme scheme, const
   const Eigen::Vector3d e_R = C * (end.position - predicted(last_.position, last_.velocity, previous_.position));
   const Eigen::Vector3d e_V = C * (end.velocity - predicted(last_.velocity, last_.acceleration, previous_.velocity));
   const Eigen::Vector3d e_W = C * (rho_omega - predicted(last_.rho_omega, last_.rho_alpha, previous_.rho_omega));
-  // Weights atol + rtol |y| per vector (a component crossing zero keeps its vector's scale): the
-  // position's, and one speed max(|V|, rho |Omega|) for the six velocity components.
-  const double w_R = o.atol + o.rtol * std::max(last_.position.norm(), end.position.norm());
-  const double speed = std::max({last_.velocity.norm(), last_.rho_omega.norm(), end.velocity.norm(), rho_omega.norm()});
+  // Weights (one scale per vector: a component crossing zero keeps it): velocities
+  // atol + rtol v_ref, positions atol + rtol v_ref h.
+  const double speed = std::max({speed_ref_, end.velocity.norm(), rho_omega.norm()});
+  const double w_R = o.atol + o.rtol * speed * h;
   const double w_V = o.atol + o.rtol * speed;
   const double sum = (e_R / w_R).squaredNorm() + (e_V / w_V).squaredNorm() + (e_W / w_V).squaredNorm();
   return std::sqrt(sum / 9.0);

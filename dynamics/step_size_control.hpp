@@ -36,6 +36,10 @@ struct StepSizeOptions {
 
 /// The local error of the next step from the last two accepted points: restart() at the start
 /// and after an event (where the stepper restarts with bdf1), accept() after every accepted step.
+/// The weights: velocities atol + rtol v_ref, positions atol + rtol v_ref h (the distance the
+/// reference speed covers in the step: an error per unit step, so that a contact's phase, e.g.
+/// an impact's duration, errs by about rtol, whatever the origin of the coordinates), v_ref the
+/// largest speed max(|V|, rho |Omega|) of the run so far.
 class LocalErrorEstimate {
  public:
   explicit LocalErrorEstimate(double gyration_radius) : rho_(gyration_radius) {}
@@ -50,8 +54,10 @@ class LocalErrorEstimate {
 
  private:
   double rho_;
+  void note_speed(const TrajectoryPoint& p);
   TrajectoryPoint last_, previous_;
   bool has_previous_ = false;
+  double speed_ref_ = 0.0;  ///< v_ref (m/s)
 };
 
 /// The next step after one of length h with error norm `err` of order p:
