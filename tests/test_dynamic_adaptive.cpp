@@ -56,6 +56,7 @@ TEST(DynamicAdaptive, BadTimeKeysAreInputErrorsNamingTheKey) {
       {[](json& t) { t["atol"] = -1.0; }, "time.atol"},
       {[](json& t) { t["dt_min"] = 0.0; }, "time.dt_min"},
       {[](json& t) { t["dt_min"] = 2e-6; }, "time.dt_min"},  // above the first step
+      {[](json& t) { t["dt_min"] = 1e-20; }, "time.dt_min"},  // below the time's resolution
       {[](json& t) { t["dt_max"] = 5e-7; }, "time.dt_max"},  // below the first step
       {[](json& t) { t["adaptive"] = "yes"; }, "time.adaptive"},
       {[](json& t) { t["adaptive"] = false; }, "time.rtol"},  // a tolerance without adaptive steps
