@@ -1,8 +1,9 @@
 // The run of a dynamic case with time.adaptive (docs/dynamics.md "Adaptive time steps"): each
 // step's local error estimated against an explicit predictor (step_size_control.hpp), the step
 // rejected and retried shorter when the error exceeds the tolerance, and cut at contact events
-// (first touch, release) so that the step ending in the new contact state ends just after the
-// event; after an event bdf2 restarts with a bdf1 step of at most time.dt.
+// (first touch, release; the start and end of gross sliding) so that the step ending in the new
+// contact state ends just after the event; after an event bdf2 restarts with a bdf1 step of at
+// most time.dt.
 #include <algorithm>
 
 #include "dynamic_simulation.hpp"
@@ -20,6 +21,10 @@ namespace {
 constexpr double kEventShare = 0.01;
 
 Wrench wrench_sum(const Wrench& a, const Wrench& b) { return {a.force + b.force, a.moment + b.moment}; }
+
+/// Gross sliding: in contact with friction and no element sticking (the friction force at its
+/// bound, mu P for Coulomb); its start and end (stick -> slip -> stick) are events.
+bool gross_sliding(const ContactState& cs, bool friction) { return friction && cs.in_contact && cs.n_stick == 0; }
 
 }  // namespace
 
@@ -39,6 +44,8 @@ void DynamicSimulation::run_adaptive(Run& run) {
 
   double h = spec_.dt;
   bool in_contact = false;  // at the last accepted state
+  bool sliding = false;     // gross sliding there
+  const bool friction = case_.friction.has_value();
   double g_start = 0.0;     // its event function (ContactWrench::contact_function)
   bool after_rejection = false;
   bool failed = false;
@@ -52,6 +59,7 @@ void DynamicSimulation::run_adaptive(Run& run) {
       const StepKinematics k0{state.position, state.orientation, state.velocity, state.omega, state.time};
       const Wrench con = contact_.evaluate(k0, ext.force.z());
       in_contact = contact_.state().in_contact;
+      sliding = gross_sliding(contact_.state(), friction);
       g_start = contact_.contact_function();
       contact_.reject();
       result.contact_solves += contact_.solves() - solves;
@@ -78,8 +86,11 @@ void DynamicSimulation::run_adaptive(Run& run) {
         converged = cs.converged;
         if (!converged) why = "the contact solve did not converge (" + cs.message + ")";
         err = estimate.error(state, scheme, o);
-        crossed = cs.in_contact != in_contact;
-        if (crossed) theta = event_share(g_start, contact_.contact_function());
+        // Touch or release: the secant on the event function; the start or end of gross
+        // sliding: bisection.
+        crossed = cs.in_contact != in_contact || gross_sliding(cs, friction) != sliding;
+        if (cs.in_contact != in_contact) theta = event_share(g_start, contact_.contact_function());
+        else if (crossed) theta = 0.5;
       }
       const bool at_dt_min = h <= o.dt_min * (1.0 + 1e-9);
       const bool locate = converged && crossed && (1.0 - theta) * h > event_tolerance && !at_dt_min;
@@ -129,6 +140,7 @@ void DynamicSimulation::run_adaptive(Run& run) {
       if (crossed) {  // an event: bdf2 restarts (a bdf1 step of at most time.dt)
         ++counts.events;
         in_contact = contact_.state().in_contact;
+        sliding = gross_sliding(contact_.state(), friction);
         stepper_.reset();
         estimate.restart(p);
         next = std::min(next, spec_.dt);
