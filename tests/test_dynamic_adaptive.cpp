@@ -114,6 +114,18 @@ TEST(DynamicAdaptive, ErrorEstimateMatchesTheSchemesTruncationError) {
   const double e2 = end2.position.x() - t2 * t2 * t2;
   EXPECT_NEAR(e2, 2.0 / 9.0 * h * h * h * 6.0, 1e-15);  // (2/9) h^3 x'''
   EXPECT_NEAR(estimate.error(end2, Scheme::bdf2, o) / (std::abs(e2) / 3.0), 1.0, 1e-6);
+  // Variable step, w = h / h_prev = 2: a0 = (1+w)^2/(1+2w), a1 = w^2/(1+2w), b = (1+w)/(1+2w);
+  // the error K x''' with K = h^3 (1+w)^2 / (6 w (1+2w)), estimated exactly for a cubic.
+  const double w = 2.0, h3 = w * h, t3 = t2 + h3;
+  estimate.accept(point(t2));
+  RigidBodyState end3;
+  end3.time = t3;
+  end3.position.x() = (1 + w) * (1 + w) / (1 + 2 * w) * t2 * t2 * t2 - w * w / (1 + 2 * w) * t1 * t1 * t1 +
+                      (1 + w) / (1 + 2 * w) * h3 * 3 * t3 * t3;
+  end3.velocity.x() = 3 * t3 * t3;
+  const double e3 = end3.position.x() - t3 * t3 * t3;
+  EXPECT_NEAR(e3 / (h3 * h3 * h3 * (1 + w) * (1 + w) / (6 * w * (1 + 2 * w)) * 6.0), 1.0, 1e-9);
+  EXPECT_NEAR(estimate.error(end3, Scheme::bdf2, o) / (std::abs(e3) / 3.0), 1.0, 1e-6);
 }
 
 TEST(DynamicAdaptive, ProposesStepsWithinTheLimits) {
