@@ -64,10 +64,10 @@ double LocalErrorEstimate::error(const RigidBodyState& end, Scheme scheme, const
   const Eigen::Vector3d e_V = C * (end.velocity - predicted(last_.velocity, last_.acceleration, previous_.velocity));
   const Eigen::Vector3d e_W = C * (rho_omega - predicted(last_.rho_omega, last_.rho_alpha, previous_.rho_omega));
   // Weights (one scale per vector: a component crossing zero keeps it): velocities
-  // atol + rtol v_ref, positions atol + rtol v_ref h.
+  // atol + rtol v_ref, positions (atol + rtol v_ref) h.
   const double speed = std::max({speed_ref_, end.velocity.norm(), rho_omega.norm()});
-  const double w_R = o.atol + o.rtol * speed * h;
   const double w_V = o.atol + o.rtol * speed;
+  const double w_R = w_V * h;
   const double sum = (e_R / w_R).squaredNorm() + (e_V / w_V).squaredNorm() + (e_W / w_V).squaredNorm();
   return std::sqrt(sum / 9.0);
 }

@@ -36,10 +36,10 @@ struct StepSizeOptions {
 
 /// The local error of the next step from the last two accepted points: restart() at the start
 /// and after an event (where the stepper restarts with bdf1), accept() after every accepted step.
-/// The weights: velocities atol + rtol v_ref, positions atol + rtol v_ref h (the distance the
-/// reference speed covers in the step: an error per unit step, so that a contact's phase, e.g.
-/// an impact's duration, errs by about rtol, whatever the origin of the coordinates), v_ref the
-/// largest speed max(|V|, rho |Omega|) of the run so far.
+/// The weights: velocities atol + rtol v_ref, positions (atol + rtol v_ref) h (a position's error
+/// per unit step, as a speed: so that a contact's phase, e.g. an impact's duration, errs by a few
+/// rtol whatever the origin of the coordinates), v_ref the largest speed max(|V|, rho |Omega|) of
+/// the run so far; atol is a speed (m/s).
 class LocalErrorEstimate {
  public:
   explicit LocalErrorEstimate(double gyration_radius) : rho_(gyration_radius) {}

@@ -114,7 +114,7 @@ void check_shift_torsion(const JsonBlock& top, DynamicSpec& s) {
 }
 
 /// time.adaptive and its tolerances and bounds (docs/dynamics.md "Adaptive time steps"): rtol
-/// 1e-4, atol 1e-9 (m, m/s), dt_min the larger of 1e-6 dt and 1e-13 t_end, dt_max the larger of
+/// 1e-4, atol 1e-9 (m/s), dt_min the larger of 1e-6 dt and 1e-13 t_end, dt_max the larger of
 /// dt and t_end / 10 unless given.
 void read_adaptive(const JsonBlock& time, DynamicSpec& s) {
   s.adaptive = time.boolean_or("adaptive", false);
@@ -125,7 +125,7 @@ void read_adaptive(const JsonBlock& time, DynamicSpec& s) {
   }
   // Below 1e-8 the step's Newton and contact tolerances (~1e-9 of the speeds) decide the error.
   s.rtol = time.has("rtol") ? time.bounded("rtol", 1e-8, 0.1, "(a share of the state)") : 1e-4;
-  s.atol = time.has("atol") ? time.positive_at_most("atol", 1.0, "(m, m/s)") : 1e-9;
+  s.atol = time.has("atol") ? time.positive_at_most("atol", 1.0, "m/s") : 1e-9;
   s.dt_min = time.has("dt_min") ? time.positive("dt_min") : std::max(1e-6 * s.dt, 1e-13 * s.t_end);
   s.dt_max = time.has("dt_max") ? time.positive("dt_max") : std::max(s.dt, 0.1 * s.t_end);
   // A shorter step would not move the time (its round-off is ~1e-16 t_end).
