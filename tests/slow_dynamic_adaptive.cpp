@@ -5,7 +5,7 @@
 // the rebound's loss is the time stepping's), the second against a fixed-step run with 1500
 // steps per contact on the same grid (the grid's own error, 0.03 % against Hertz, is the same for
 // every step). For rtol 1e-3 and 1e-4 the adaptive run's rebound must be within 5 rtol, its
-// contact time within rtol^(2/3), and its error fall with rtol; with a flight before or after the contact, the fixed step reaching the same error
+// contact time within 6 rtol, and its error fall with rtol; with a flight before or after the contact, the fixed step reaching the same error
 // must take more steps than the adaptive run solved (accepted and rejected). The figures are
 // printed (docs/dynamics.md "Adaptive time steps").
 #include <gtest/gtest.h>
@@ -64,10 +64,10 @@ void compare(double height, double t_end, bool fewer) {
   for (double rtol : {1e-3, 1e-4}) {
     const json time = {{"dt", T / 100}, {"t_end", t_end}, {"scheme", "bdf2"}, {"adaptive", true}, {"rtol", rtol}};
     const Accuracy a = accuracy(height, time, T_ref);
-    // rtol bounds each step's local error: the rebound (an amplitude) follows it, the contact
-    // time (a phase, the sum of the steps' errors) goes as h^2 with h ~ rtol^(1/3), i.e. rtol^(2/3).
+    // The rebound (an amplitude) and the contact time (a phase: the positions' errors per unit
+    // step add up over the contact) follow rtol: 1.3-3.1 rtol and 3.5-4.7 rtol seen.
     EXPECT_LE(a.rebound_error, 5.0 * rtol) << "rtol " << rtol;
-    EXPECT_LE(a.time_error, std::pow(rtol, 2.0 / 3.0)) << "rtol " << rtol;
+    EXPECT_LE(a.time_error, 6.0 * rtol) << "rtol " << rtol;
     EXPECT_LT(a.error, last_error) << "the error falls with rtol";
     last_error = a.error;
     // The fewest fixed steps reaching the adaptive run's error.
@@ -93,8 +93,8 @@ void compare(double height, double t_end, bool fewer) {
 }
 
 // The contact alone (from touching to 1.1 contact times): the impact is smooth, a fixed step of
-// the right size is near the best, and the adaptive run's error per unit step takes more steps
-// for the same error (printed, not asserted).
+// the right size is as good, and the adaptive run takes about as many steps for the same error
+// (printed, not asserted).
 TEST(SlowDynamicAdaptive, TheContactAloneReachesRtol) { compare(0.0, 1.1 * hertz_time(), false); }
 
 // CASES.md's time block (t_end 1 ms): the rebound's flight after the contact.
