@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "errors.hpp"
 #include "friction_law.hpp"
@@ -322,10 +323,21 @@ WrenchJacobian ContactWrench::jacobian(bool fresh) {
   return J;
 }
 
-void ContactWrench::accept(const StepKinematics& k, double vertical_load) {
+void ContactWrench::evaluate_at(const StepKinematics& k, double vertical_load) {
   const bool same = k.time == last_.time && k.position == last_.position && k.velocity == last_.velocity &&
                     k.omega == last_.omega;
   if (!same) evaluate(k, vertical_load);
+}
+
+double ContactWrench::contact_function() const {
+  if (spec_.normal_model == NormalModel::quasi_static) return std::numeric_limits<double>::quiet_NaN();
+  const std::vector<double>& heights = finite_ ? finite_->heights() : gap_->heights();
+  const double lowest = heights.empty() ? 0.0 : *std::min_element(heights.begin(), heights.end());
+  return centre_height() - last_.position.z() - lowest;
+}
+
+void ContactWrench::accept(const StepKinematics& k, double vertical_load) {
+  evaluate_at(k, vertical_load);
   if (tangential_) tangential_->save_memory(committed_);
   if (finite_) {  // the body's deformation at the accepted step (output, max displacement)
     static const std::vector<double> none;

@@ -62,6 +62,13 @@ class ContactWrench {
   void accept(const StepKinematics& k, double vertical_load);
   /// The step was rejected: back to the memory of the last accepted state.
   void reject();
+  /// The contact at `k` without committing it (the last evaluation's when it was at `k`): what
+  /// accept(k, ...) would take, for deciding on the step first (adaptive steps).
+  void evaluate_at(const StepKinematics& k, double vertical_load);
+  /// The event function of contact at the last evaluation (dynamic normal model): the approach
+  /// centre_height - z less the smallest undeformed gap of the grid's elements, positive when
+  /// an element is in contact (m); NaN for the quasi-static normal model.
+  double contact_function() const;
 
   const ContactState& state() const { return state_; }
   /// The tangential model actually used ("transient" or "steady"; auto resolved on the first

@@ -114,7 +114,9 @@ std::vector<ResultLimit> dynamic_limits_before(const DynamicContactSpec& c) {
                                 "overlap's elastic force would throw it out; start it touching (z = body.radius) "
                                 "or above",
                                 e->approach));
-  if (e->contact_time > 0.0 && e->steps_per_contact < kMinStepsPerContact) {
+  // Adaptive steps: the local error control, not a step count, resolves the contact (time.dt
+  // is only the first step).
+  if (!s.adaptive && e->contact_time > 0.0 && e->steps_per_contact < kMinStepsPerContact) {
     ResultLimit l{"time.dt",
                   format("%.3g steps of %.3g s in the Hertz contact time of the impact (%.3g s): the peak force "
                          "and the rebound are off by several per cent or more; ",
@@ -209,7 +211,8 @@ std::vector<ResultLimit> DynamicLimitTracker::limits(const DynamicResult& r) con
                           unseen_time_, unseen_approach_, seen_approach_),
                    true});
   // A contact of a few steps: its force history is not resolved (an impact: the rebound).
-  if (shortest_episode_ > 0 && shortest_episode_ < kMinStepsPerContact) {
+  // (Adaptive steps: the error control judges the steps a contact needs.)
+  if (!s.adaptive && shortest_episode_ > 0 && shortest_episode_ < kMinStepsPerContact) {
     ResultLimit l{"time.dt",
                   format("a contact ending at t = %.6g s lasted %.0f step(s): its force history is not resolved "
                          "(fewer than %.0f steps per contact); a smaller time.dt",
@@ -221,11 +224,14 @@ std::vector<ResultLimit> DynamicLimitTracker::limits(const DynamicResult& r) con
     out.push_back(l);
   }
   if (r.steps > 0 && r.energy_imbalance > s.energy_tolerance) {
-    ResultLimit l{"time.dt",
+    const char* key = s.adaptive ? "time.rtol" : "time.dt";
+    ResultLimit l{key,
                   format("the energy balance of the run is off by %.3g of the energy (balances.energy; "
                          "time.energy_tolerance %.3g): the time step is too coarse for the contact (or the grid "
-                         "too coarse for it); a smaller time.dt, or raise time.energy_tolerance to accept it",
-                         r.energy_imbalance, s.energy_tolerance)};
+                         "too coarse for it); ",
+                         r.energy_imbalance, s.energy_tolerance) +
+                      std::string(s.adaptive ? "a smaller time.rtol" : "a smaller time.dt") +
+                      ", or raise time.energy_tolerance to accept it"};
     l.error = true;
     out.push_back(l);
   }

@@ -41,8 +41,8 @@ std::optional<DynamicContactEstimate> estimate_dynamic_contact(const DynamicCont
 
 /// Before anything is solved: throws InputError naming body.initial.position (starting inside
 /// the half-space beyond kStartInsideShare of the Hertz approach), time.dt (an impact with fewer
-/// than kMinStepsPerContact steps, unless time.allow_coarse_dt) or the key of an error limit of
-/// the estimated contact (grid, materials); returns the warnings.
+/// than kMinStepsPerContact steps, unless time.allow_coarse_dt or time.adaptive) or the key of
+/// an error limit of the estimated contact (grid, materials); returns the warnings.
 std::vector<ResultLimit> dynamic_limits_before(const DynamicContactSpec& c);
 
 /// Follows a run step by step; limits() after it.

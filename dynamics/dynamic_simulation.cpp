@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "dynamic_limits.hpp"
+#include "simulation_run.hpp"
 #include "errors.hpp"
 #include "interrupt.hpp"
 
@@ -80,18 +81,136 @@ Wrench DynamicSimulation::external(double t) const {
   return w;
 }
 
+void TimeStepCounts::add(double dt) {
+  dt_min = dt_max == 0.0 ? dt : std::min(dt_min, dt);
+  dt_max = std::max(dt_max, dt);
+}
+
+DynamicSimulation::ContactCounts DynamicSimulation::contact_counts() const {
+  return {contact_.solves(), contact_.alternations(), contact_.sensitivities()};
+}
+
+bool DynamicSimulation::solve_step(RigidBodyState& state, double h, DynamicSample& sample, std::string& why,
+                                   Scheme& scheme) {
+  contact_.begin_step(h);
+  auto wrench = [&](const StepKinematics& k) {
+    const Wrench ext = external(k.time);
+    const Wrench con = contact_.evaluate(k, ext.force.z());
+    return Wrench{ext.force + con.force, ext.moment + con.moment};
+  };
+  auto jacobian = [&](const StepKinematics&, bool fresh) { return contact_.jacobian(fresh); };
+  const StepReport report = stepper_.step(state, h, wrench, jacobian);
+  sample.newton_iterations += report.iterations;
+  sample.chord_steps += report.chord_steps;
+  scheme = report.scheme_used;
+  if (report.converged()) return true;
+  contact_.reject();
+  why = std::string("the step's Newton iteration did not converge (") + to_string(report.status) + ", residual " +
+        std::to_string(report.residual) + " m/s)";
+  return false;
+}
+
+bool DynamicSimulation::commit_step(const RigidBodyState& before, const RigidBodyState& state, double h,
+                                    const ContactCounts& counts, DynamicSample& sample, StepSums& sums,
+                                    std::string& why) {
+  const StepKinematics end{state.position, state.orientation, state.velocity, state.omega, state.time};
+  const Wrench ext = external(state.time);
+  contact_.accept(end, ext.force.z());
+  sample.contact_solves += contact_.solves() - counts.solves;
+  sample.alternations += contact_.alternations() - counts.alternations;
+  sample.sensitivities += contact_.sensitivities() - counts.sensitivities;
+  const ContactState& cs = contact_.state();
+  if (!cs.converged) {
+    why = "the contact solve did not converge (" + cs.message + ")";
+    return false;
+  }
+  const Wrench& con = cs.wrench;
+  const Eigen::Vector3d F = ext.force + con.force;
+  sums.impulse += h * F;
+  sums.impulse_size += h * F.norm();
+  // Work over the step's displacement and rotation by the trapezoidal rule (exact for a
+  // wrench linear in the motion over the step): the end-of-step wrench alone misses a
+  // share of every step's force change, which over an elastic impact's loading and
+  // unloading adds up to ~10 % of the kinetic energy where the rebound loses 0.1 %.
+  const Eigen::Vector3d dR = state.position - before.position;
+  const Eigen::Vector3d dTheta = h * state.omega;
+  const Wrench ext_before = external(before.time);
+  const Wrench& con_before = sums.contact_before;
+  sums.external_work +=
+      0.5 * ((ext_before.force + ext.force).dot(dR) + (ext_before.moment + ext.moment).dot(dTheta));
+  sums.contact_work +=
+      0.5 * ((con_before.force + con.force).dot(dR) + (con_before.moment + con.moment).dot(dTheta));
+  sums.contact_before = con;
+  return true;
+}
+
+void DynamicSimulation::record_step(Run& run, const RigidBodyState& state, const StepSums& sums,
+                                    DynamicSample& sample) {
+  DynamicResult& result = run.result;
+  run.impulse += sums.impulse;
+  run.impulse_size += sums.impulse_size;
+  run.contact_at_step_start = sums.contact_before;
+  run.external_work += sums.external_work;
+  run.contact_work += sums.contact_work;
+  const ContactState& cs = contact_.state();
+  ++result.steps;
+  result.worst_certificate = std::max(result.worst_certificate, cs.certificate);
+  result.last_certificate = cs.certificate;
+  if (cs.in_contact) ++result.backends[cs.backend];
+  if (cs.in_contact && cs.fallback_used) ++result.fallback_steps;
+  sample.state = state;
+  sample.contact = cs.wrench;
+  sample.external = external(state.time);
+  sample.contact_state = cs;
+  sample.kinetic_energy = kinetic_energy(stepper_.body(), state);
+  sample.external_work = run.external_work;
+  sample.contact_work = run.contact_work;
+  sample.step = result.steps;
+  sample.finite_body = contact_.finite_body();
+  run.limits.add(sample);
+  if (run.on_step) run.on_step(sample);
+}
+
+void DynamicSimulation::add_counts(DynamicResult& result, const DynamicSample& sample) {
+  result.newton_iterations += sample.newton_iterations;
+  result.contact_solves += sample.contact_solves;
+  result.alternations += sample.alternations;
+  result.sensitivities += sample.sensitivities;
+  result.chord_steps += sample.chord_steps;
+}
+
 DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSample&)>& on_step) {
-  DynamicResult result;
-  DynamicLimitTracker limits(case_);
-  RigidBodyState state = initial_state(spec_);
-  result.initial = state;
+  Run run(case_, on_step);
+  DynamicResult& result = run.result;
+  run.state = initial_state(spec_);
+  result.initial = run.state;
+  result.adaptive = spec_.adaptive;
   const RigidBody& body = stepper_.body();
-  const double ke0 = kinetic_energy(body, state);
-  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
-  double impulse_size = 0.0, external_work = 0.0, contact_work = 0.0;
+  const double ke0 = kinetic_energy(body, run.state);
+  if (spec_.adaptive) run_adaptive(run);
+  else run_fixed(run);
+  const RigidBodyState& state = run.state;
+  result.time_steps.accepted = result.steps;
+  result.time_steps.rejected = result.rejected_steps;
+  result.contact_model = contact_.model_used();
+  result.final = state;
+  const Eigen::Vector3d dp = body.mass() * (state.velocity - result.initial.velocity);
+  result.momentum_imbalance =
+      (dp - run.impulse).norm() / std::max({run.impulse_size, body.mass() * state.velocity.norm(), 1e-300});
+  const double ke = kinetic_energy(body, state);
+  result.energy_imbalance =
+      std::abs(ke - ke0 - run.external_work - run.contact_work) /
+      std::max({ke0, ke, std::abs(run.external_work), std::abs(run.contact_work), 1e-300});
+  result.limits = before_limits_;
+  for (ResultLimit& l : run.limits.limits(result)) result.limits.push_back(std::move(l));
+  return std::move(run.result);
+}
+
+void DynamicSimulation::run_fixed(Run& run) {
+  DynamicResult& result = run.result;
+  RigidBodyState& state = run.state;
   const int n_steps = std::max(1, static_cast<int>(std::ceil(spec_.t_end / spec_.dt - 1e-9)));
   constexpr int kMaxHalvings = 6;
-  Wrench contact_at_step_start;  // the last accepted step's contact wrench (none before the first)
 
   for (int step = 1; step <= n_steps; ++step) {
     const double t_target = std::min(spec_.t_end, step * spec_.dt);
@@ -100,6 +219,7 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
     bool ok = false;
     std::string why;
     const RigidBodyState step_start = state;
+    StepSums sums;
     try {
       throw_if_interrupted();
       for (int halvings = 0; halvings <= kMaxHalvings && !ok; ++halvings) {
@@ -108,67 +228,20 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
         const RigidBodyState start = state;
         const double h = (t_target - state.time) / parts;
         ok = true;
-        Eigen::Vector3d imp = Eigen::Vector3d::Zero();
-        double imp_size = 0.0, w_ext = 0.0, w_contact = 0.0;
-        Wrench contact_before = contact_at_step_start;
+        sums = StepSums{};
+        sums.contact_before = run.contact_at_step_start;
         for (int part = 0; part < parts && ok; ++part) {
-          contact_.begin_step(h);
-          const int solves_before = contact_.solves(), alternations_before = contact_.alternations(),
-                    sensitivities_before = contact_.sensitivities();
-          auto wrench = [&](const StepKinematics& k) {
-            const Wrench ext = external(k.time);
-            const Wrench con = contact_.evaluate(k, ext.force.z());
-            return Wrench{ext.force + con.force, ext.moment + con.moment};
-          };
-          auto jacobian = [&](const StepKinematics&, bool fresh) { return contact_.jacobian(fresh); };
+          const ContactCounts counts = contact_counts();
           const RigidBodyState before = state;
-          const StepReport report = stepper_.step(state, h, wrench, jacobian);
-          sample.newton_iterations += report.iterations;
-          sample.chord_steps += report.chord_steps;
-          if (!report.converged()) {
-            contact_.reject();
-            why = std::string("the step's Newton iteration did not converge (") + to_string(report.status) +
-                  ", residual " + std::to_string(report.residual) + " m/s)";
-            ok = false;
-            break;
-          }
-          const StepKinematics end{state.position, state.orientation, state.velocity, state.omega, state.time};
-          const Wrench ext = external(state.time);
-          contact_.accept(end, ext.force.z());
-          sample.contact_solves += contact_.solves() - solves_before;
-          sample.alternations += contact_.alternations() - alternations_before;
-          sample.sensitivities += contact_.sensitivities() - sensitivities_before;
-          const ContactState& cs = contact_.state();
-          if (!cs.converged) {
-            why = "the contact solve did not converge (" + cs.message + ")";
-            ok = false;
-            break;
-          }
-          const Wrench& con = cs.wrench;
-          const Eigen::Vector3d F = ext.force + con.force;
-          imp += h * F;
-          imp_size += h * F.norm();
-          // Work over the step's displacement and rotation by the trapezoidal rule (exact for a
-          // wrench linear in the motion over the step): the end-of-step wrench alone misses a
-          // share of every step's force change, which over an elastic impact's loading and
-          // unloading adds up to ~10 % of the kinetic energy where the rebound loses 0.1 %.
-          const Eigen::Vector3d dR = state.position - before.position;
-          const Eigen::Vector3d dTheta = h * state.omega;
-          const Wrench ext_before = external(before.time);
-          w_ext += 0.5 * ((ext_before.force + ext.force).dot(dR) + (ext_before.moment + ext.moment).dot(dTheta));
-          w_contact += 0.5 * ((contact_before.force + con.force).dot(dR) + (contact_before.moment + con.moment).dot(dTheta));
-          contact_before = con;
+          Scheme scheme = Scheme::bdf1;
+          ok = solve_step(state, h, sample, why, scheme) && commit_step(before, state, h, counts, sample, sums, why);
         }
         if (!ok) {
           state = start;
           stepper_.reset();
           continue;
         }
-        impulse += imp;
-        impulse_size += imp_size;
-        contact_at_step_start = contact_before;
-        external_work += w_ext;
-        contact_work += w_contact;
+        result.time_steps.add(h);
       }
     } catch (const Interrupted&) {  // the steps so far stand
       result.interrupted = true;
@@ -184,45 +257,14 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
       state = step_start;
       stepper_.reset();
     }
-    result.newton_iterations += sample.newton_iterations;
-    result.contact_solves += sample.contact_solves;
-    result.alternations += sample.alternations;
-    result.sensitivities += sample.sensitivities;
-    result.chord_steps += sample.chord_steps;
+    add_counts(result, sample);
     if (!ok) {
       result.status = "stopped at t = " + std::to_string(state.time) + " s: " + why;
       break;
     }
-    const ContactState& cs = contact_.state();
-    result.steps = step;
-    result.worst_certificate = std::max(result.worst_certificate, cs.certificate);
-    result.last_certificate = cs.certificate;
-    if (cs.in_contact) ++result.backends[cs.backend];
-    if (cs.in_contact && cs.fallback_used) ++result.fallback_steps;
-    sample.state = state;
-    sample.contact = cs.wrench;
-    sample.external = external(state.time);
-    sample.contact_state = cs;
-    sample.kinetic_energy = kinetic_energy(body, state);
-    sample.external_work = external_work;
-    sample.contact_work = contact_work;
-    sample.step = step;
-    sample.finite_body = contact_.finite_body();
-    limits.add(sample);
-    if (on_step) on_step(sample);
+    record_step(run, state, sums, sample);
   }
-  result.contact_model = contact_.model_used();
-  result.final = state;
   result.completed = result.steps == n_steps;
-  const Eigen::Vector3d dp = body.mass() * (state.velocity - result.initial.velocity);
-  result.momentum_imbalance =
-      (dp - impulse).norm() / std::max({impulse_size, body.mass() * state.velocity.norm(), 1e-300});
-  const double ke = kinetic_energy(body, state);
-  result.energy_imbalance = std::abs(ke - ke0 - external_work - contact_work) /
-                            std::max({ke0, ke, std::abs(external_work), std::abs(contact_work), 1e-300});
-  result.limits = before_limits_;
-  for (ResultLimit& l : limits.limits(result)) result.limits.push_back(std::move(l));
-  return result;
 }
 
 }  // namespace dc::dynamics

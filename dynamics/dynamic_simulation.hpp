@@ -34,13 +34,27 @@ struct DynamicSample {
   const FiniteBody* finite_body = nullptr;  ///< an fe_body (its displacement() at this step); null without
 };
 
+/// The steps of a run (summary.json "time_steps"): accepted and rejected ones, and the shortest and
+/// longest accepted step (s). Fixed steps: a nominal step halved after a failure counts once as
+/// accepted, its halvings as rejected, its sub-steps in dt_min.
+struct TimeStepCounts {
+  int accepted = 0, rejected = 0;
+  int error_rejections = 0;  ///< adaptive: rejected for the local error (the rest: events, failed solves)
+  int event_rejections = 0;  ///< adaptive: rejected to land on a contact event
+  int events = 0;            ///< adaptive: contact events located (first touch, release)
+  double dt_min = 0.0, dt_max = 0.0;
+  void add(double dt);       ///< an accepted step of dt
+};
+
 struct DynamicResult {
   bool completed = false;        ///< reached t_end with every step converged
   std::string status = "converged";  ///< or why and when it stopped
   bool interrupted = false;      ///< stopped by an interrupt (core/interrupt.hpp) before a step
   std::string input_error;       ///< "key: reason" when a step met input it cannot take (e.g. an
                                  ///< upright-only profile tilting): the run stopped there
-  int steps = 0, rejected_steps = 0;  ///< accepted steps; step halvings after a failed step
+  int steps = 0, rejected_steps = 0;  ///< accepted steps; step halvings after a failed step (adaptive: rejected steps)
+  bool adaptive = false;         ///< time.adaptive
+  TimeStepCounts time_steps;
   int newton_iterations = 0, contact_solves = 0;
   int alternations = 0;          ///< (p, tau) alternations of the contact solves (one per solve at kappa = 0)
   int sensitivities = 0;         ///< tangential sensitivities computed (chord steps reuse the last)
@@ -75,6 +89,37 @@ class DynamicSimulation {
   const FiniteBody* finite_body() const { return contact_.finite_body(); }
 
  private:
+  /// What a run carries from step to step: its result, limits, balances' sums and output.
+  struct Run;
+  /// Counts of the contact's solves before a step (the step's share is the difference).
+  struct ContactCounts {
+    int solves = 0, alternations = 0, sensitivities = 0;
+  };
+  /// The sums of one step (its sub-steps), added to the run's when the step is accepted.
+  struct StepSums {
+    Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
+    double impulse_size = 0.0, external_work = 0.0, contact_work = 0.0;
+    Wrench contact_before;  ///< the contact wrench at the step's start, then at its end
+  };
+
+  /// Newton for one step of h from `state` (the contact's step begun, solved at the end-of-step
+  /// kinematics, not committed): false with `why` (the contact rejected, `state` as it was) when
+  /// it did not converge. `scheme` the scheme it took.
+  bool solve_step(RigidBodyState& state, double h, DynamicSample& sample, std::string& why, Scheme& scheme);
+  /// Commits a solved step from `before` to `state` (the contact's memory) and adds its
+  /// impulse and work to `sums`: false with `why` when the contact solve at its end did not converge.
+  bool commit_step(const RigidBodyState& before, const RigidBodyState& state, double h, const ContactCounts& counts,
+                   DynamicSample& sample, StepSums& sums, std::string& why);
+  /// An accepted step: its sums into the run's, the result's counts, the sample to the limits
+  /// and to the output.
+  void record_step(Run& run, const RigidBodyState& state, const StepSums& sums, DynamicSample& sample);
+  ContactCounts contact_counts() const;
+  /// A step's Newton iterations and solves (taken or not) into the run's.
+  static void add_counts(DynamicResult& result, const DynamicSample& sample);
+  void run_fixed(Run& run);
+  /// time.adaptive (adaptive_steps.cpp).
+  void run_adaptive(Run& run);
+
   std::vector<ResultLimit> before_limits_;  ///< the warnings of dynamic_limits_before
   const DynamicContactSpec& case_;
   DynamicSpec spec_;  ///< the case's, with an fe_body's mass, inertia and radius from its mesh

@@ -33,6 +33,12 @@ struct DynamicSpec {
   std::array<ValueRate, 3> force{}, moment{};  ///< loads.force.{x,y,z}, loads.moment.{x,y,z}
   double dt = 0.0, t_end = 0.0;             ///< time (s)
   bool bdf2 = false;                        ///< time.scheme
+  /// time.adaptive: error-controlled steps (docs/dynamics.md "Adaptive time steps"); `dt` is then
+  /// the first step. rtol, atol: the local error's tolerances (atol a speed, m/s: a position's
+  /// error is weighed per unit step, the angular parts times the gyration radius); dt_min,
+  /// dt_max: the step's bounds (s).
+  bool adaptive = false;
+  double rtol = 1e-4, atol = 1e-9, dt_min = 0.0, dt_max = 0.0;
   /// time.energy_tolerance: the largest energy imbalance of an accepted run (balances.energy;
   /// above it the run is known wrong: a limit error naming time.dt).
   double energy_tolerance = 0.05;

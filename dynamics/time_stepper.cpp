@@ -119,24 +119,24 @@ RigidBodyStepper::RigidBodyStepper(RigidBody body, StepperOptions options)
     : body_(std::move(body)), options_(options) {}
 
 bool RigidBodyStepper::continues_history(const RigidBodyState& state) const {
-  return has_history_ && same_state(state, last_);
+  return history_.has_history && same_state(state, history_.last);
 }
 
 bool RigidBodyStepper::predict(double dt, Vector6d& x) const {
   // x = (V, Omega) at t_K + dt extrapolated by the polynomial through the accepted states:
   // quadratic through t_{K-2}, t_{K-1}, t_K when there are three, else linear.
-  const double t = last_.time + dt;
-  if (has_older_) {
-    const double t0 = older_.time, t1 = previous_.time, t2 = last_.time;
+  const double t = history_.last.time + dt;
+  if (history_.has_older) {
+    const double t0 = history_.older.time, t1 = history_.previous.time, t2 = history_.last.time;
     const double l0 = (t - t1) * (t - t2) / ((t0 - t1) * (t0 - t2));
     const double l1 = (t - t0) * (t - t2) / ((t1 - t0) * (t1 - t2));
     const double l2 = (t - t0) * (t - t1) / ((t2 - t0) * (t2 - t1));
-    x.head<3>() = l0 * older_.velocity + l1 * previous_.velocity + l2 * last_.velocity;
-    x.tail<3>() = l0 * older_.omega + l1 * previous_.omega + l2 * last_.omega;
+    x.head<3>() = l0 * history_.older.velocity + l1 * history_.previous.velocity + l2 * history_.last.velocity;
+    x.tail<3>() = l0 * history_.older.omega + l1 * history_.previous.omega + l2 * history_.last.omega;
   } else {
-    const double w = dt / (last_.time - previous_.time);
-    x.head<3>() = last_.velocity + w * (last_.velocity - previous_.velocity);
-    x.tail<3>() = last_.omega + w * (last_.omega - previous_.omega);
+    const double w = dt / (history_.last.time - history_.previous.time);
+    x.head<3>() = history_.last.velocity + w * (history_.last.velocity - history_.previous.velocity);
+    x.tail<3>() = history_.last.omega + w * (history_.last.omega - history_.previous.omega);
   }
   return x.allFinite();
 }
@@ -154,8 +154,8 @@ StepReport RigidBodyStepper::step(RigidBodyState& state, double dt, const Wrench
   StepReport report;
   const bool multistep = options_.scheme == Scheme::bdf2 && continues_history(state);
   report.scheme_used = multistep ? Scheme::bdf2 : Scheme::bdf1;
-  const Bdf c = multistep ? bdf2(dt / (last_.time - previous_.time)) : Bdf{1.0, 0.0, 1.0};
-  const StepResidual system(body_, wrench, &jacobian, state, multistep ? &previous_ : nullptr, c, dt);
+  const Bdf c = multistep ? bdf2(dt / (history_.last.time - history_.previous.time)) : Bdf{1.0, 0.0, 1.0};
+  const StepResidual system(body_, wrench, &jacobian, state, multistep ? &history_.previous : nullptr, c, dt);
 
   Vector6d x;
   x << state.velocity, system.rho() * state.omega;
@@ -170,7 +170,8 @@ StepReport RigidBodyStepper::step(RigidBodyState& state, double dt, const Wrench
   if (have_guess) guess.tail<3>() *= system.rho();
   // The start-of-step velocities as long as they would have been accepted as they were.
   const double hold_accepted = options_.newton.inexact_share * (options_.newton.rel_tol * scale + options_.newton.abs_tol);
-  const bool extrapolated = have_guess && hold_miss_ > hold_accepted && extrapolation_miss_ < hold_miss_;
+  const bool extrapolated =
+      have_guess && history_.hold_miss > hold_accepted && history_.extrapolation_miss < history_.hold_miss;
   NewtonOptions newton_options = options_.newton;
   if (extrapolated) {
     x = guess;
@@ -194,19 +195,20 @@ StepReport RigidBodyStepper::step(RigidBodyState& state, double dt, const Wrench
   if (!report.converged()) return report;
 
   const StepKinematics k = system.kinematics(x);
+  before_ = history_;
   const double never = std::numeric_limits<double>::infinity();
-  extrapolation_miss_ = have_guess ? (x - guess).norm() : never;
-  hold_miss_ = have_guess ? (x - start).norm() : never;
-  has_older_ = continues_history(state);
-  older_ = previous_;
-  previous_ = state;
+  history_.extrapolation_miss = have_guess ? (x - guess).norm() : never;
+  history_.hold_miss = have_guess ? (x - start).norm() : never;
+  history_.has_older = continues_history(state);
+  history_.older = history_.previous;
+  history_.previous = state;
   state.position = k.position;
   state.orientation = k.orientation;
   state.velocity = k.velocity;
   state.omega = k.omega;
   state.time = k.time;
-  last_ = state;
-  has_history_ = true;
+  history_.last = state;
+  history_.has_history = true;
   return report;
 }
 

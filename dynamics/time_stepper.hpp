@@ -60,7 +60,10 @@ class RigidBodyStepper {
                                 const WrenchJacobianFunction& jacobian);
 
   /// Forgets the history (the next bdf2 step is a bdf1 start step).
-  void reset() { has_history_ = has_older_ = false; }
+  void reset() { history_.has_history = history_.has_older = false; }
+  /// Takes back the last converged step: the history as before it (the caller rejected the step
+  /// and retries from its start with another dt, adaptive steps). Once per step.
+  void retract() { history_ = before_; }
 
   const RigidBody& body() const { return body_; }
   const StepperOptions& options() const { return options_; }
@@ -70,17 +73,23 @@ class RigidBodyStepper {
   /// Newton's start (V, Omega) at t_K + dt, extrapolated from the accepted states (false: not finite).
   bool predict(double dt, Vector6d& x) const;
 
+  /// The accepted states the next step continues from.
+  struct History {
+    bool has_history = false;
+    RigidBodyState previous;  ///< state at t_{K-1}
+    RigidBodyState last;      ///< state at t_K as this stepper returned it
+    RigidBodyState older;     ///< state at t_{K-2} (has_older)
+    bool has_older = false;
+    /// How far the last step's answer lay from the extrapolated start and from the start-of-step
+    /// velocities (|dx|, m/s; infinite when there was no extrapolation).
+    double extrapolation_miss = std::numeric_limits<double>::infinity();
+    double hold_miss = std::numeric_limits<double>::infinity();
+  };
+
   RigidBody body_;
   StepperOptions options_;
-  bool has_history_ = false;
-  RigidBodyState previous_;  ///< state at t_{K-1}
-  RigidBodyState last_;      ///< state at t_K as this stepper returned it
-  RigidBodyState older_;     ///< state at t_{K-2} (has_older_)
-  bool has_older_ = false;
-  /// How far the last step's answer lay from the extrapolated start and from the start-of-step
-  /// velocities (|dx|, m/s; infinite when there was no extrapolation).
-  double extrapolation_miss_ = std::numeric_limits<double>::infinity();
-  double hold_miss_ = std::numeric_limits<double>::infinity();
+  History history_;
+  History before_;  ///< before the last converged step (retract)
 };
 
 }  // namespace dc::dynamics

@@ -1,5 +1,6 @@
 // The dynamic blocks (CASES.md: body, loads, time, normal_model, contact_model) read into
 // DynamicSpec.
+#include <algorithm>
 #include <cmath>
 
 #include "case_model.hpp"
@@ -112,8 +113,34 @@ void check_shift_torsion(const JsonBlock& top, DynamicSpec& s) {
   s.contact_model = ContactModel::transient;
 }
 
+/// time.adaptive and its tolerances and bounds (docs/dynamics.md "Adaptive time steps"): rtol
+/// 1e-4, atol 1e-9 (m/s), dt_min the larger of 1e-6 dt and 1e-13 t_end, dt_max the larger of
+/// dt and t_end / 10 unless given.
+void read_adaptive(const JsonBlock& time, DynamicSpec& s) {
+  s.adaptive = time.boolean_or("adaptive", false);
+  if (!s.adaptive) {
+    for (const char* k : {"rtol", "atol", "dt_min", "dt_max"})
+      if (time.has(k)) throw InputError(time.key(k), "is used only with time.adaptive: true");
+    return;
+  }
+  // Below 1e-8 the step's Newton and contact tolerances (~1e-9 of the speeds) decide the error.
+  s.rtol = time.has("rtol") ? time.bounded("rtol", 1e-8, 0.1, "(a share of the state)") : 1e-4;
+  s.atol = time.has("atol") ? time.positive_at_most("atol", 1.0, "m/s") : 1e-9;
+  s.dt_min = time.has("dt_min") ? time.positive("dt_min") : std::max(1e-6 * s.dt, 1e-13 * s.t_end);
+  s.dt_max = time.has("dt_max") ? time.positive("dt_max") : std::max(s.dt, 0.1 * s.t_end);
+  // A shorter step would not move the time (its round-off is ~1e-16 t_end).
+  if (!(s.dt_min >= 1e-13 * s.t_end))
+    throw InputError(time.key("dt_min"), "must be at least 1e-13 time.t_end (the time's resolution), got " +
+                                             fmt(s.dt_min));
+  if (!(s.dt_min <= s.dt))
+    throw InputError(time.key("dt_min"), "must be at most time.dt (the first step), got " + fmt(s.dt_min));
+  if (!(s.dt_max >= s.dt))
+    throw InputError(time.key("dt_max"), "must be at least time.dt (the first step), got " + fmt(s.dt_max));
+}
+
 void read_time(const JsonBlock& time, DynamicSpec& s) {
-  time.allow({"dt", "t_end", "scheme", "energy_tolerance", "allow_coarse_dt"});
+  time.allow({"dt", "t_end", "scheme", "energy_tolerance", "allow_coarse_dt", "adaptive", "rtol", "atol", "dt_min",
+              "dt_max"});
   s.dt = time.positive("dt");
   s.t_end = time.positive("t_end");
   if (time.has("energy_tolerance")) {
@@ -123,6 +150,7 @@ void read_time(const JsonBlock& time, DynamicSpec& s) {
   s.allow_coarse_dt = time.boolean_or("allow_coarse_dt", false);
   if (s.t_end / s.dt > 1e8) throw InputError("time.dt", "over 1e8 steps to time.t_end");
   s.bdf2 = time.choice("scheme", "bdf2", {"bdf1", "bdf2"}) == "bdf2";
+  read_adaptive(time, s);
 }
 
 }  // namespace

@@ -75,6 +75,14 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
   summary["message"] = r.status;
   summary["steps"] = r.steps;
   summary["rejected_steps"] = r.rejected_steps;
+  const dynamics::TimeStepCounts& ts = r.time_steps;
+  summary["time_steps"] = {{"accepted", ts.accepted}, {"rejected", ts.rejected}, {"dt_min", ts.dt_min},
+                           {"dt_max", ts.dt_max}, {"adaptive", r.adaptive}};
+  if (r.adaptive) {
+    summary["time_steps"]["error_rejections"] = ts.error_rejections;
+    summary["time_steps"]["event_rejections"] = ts.event_rejections;
+    summary["time_steps"]["events"] = ts.events;
+  }
   summary["final"] = {{"time", r.final.time}, {"position", vec(r.final.position)},
                       {"velocity", vec(r.final.velocity)}, {"omega", vec(r.final.omega)}};
   summary["timeseries"] = "timeseries.csv";
@@ -152,6 +160,11 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
     std::printf("%s: %s, %d steps (%d rejected), contact model %s, %.3g s; worst certificate %.2e\n", c.name.c_str(),
                 r.completed ? "completed" : r.interrupted ? "interrupted" : "stopped", r.steps, r.rejected_steps, r.contact_model.c_str(), elapsed,
                 r.worst_certificate);
+    if (r.adaptive)
+      std::printf("  adaptive time steps: %d accepted, %d rejected (%d for the error, %d at %d contact events), dt "
+                  "from %.3g to %.3g s\n",
+                  r.time_steps.accepted, r.time_steps.rejected, r.time_steps.error_rejections,
+                  r.time_steps.event_rejections, r.time_steps.events, r.time_steps.dt_min, r.time_steps.dt_max);
     if (r.fallback_steps > 0)
       std::printf("  %d steps fell back from the first backend (backends used: %s)\n", r.fallback_steps,
                   json(r.backends).dump().c_str());

@@ -30,6 +30,7 @@ const std::vector<BundledExample>& bundled_examples() {
         {"wheel-drive", "a 3-D wheel under a growing driving moment: rolls, then slides at F = mu P (Section 5 in 3-D)"},
         {"cylinder-dynamic-2d", "the paper's Section 5 cylinder through the general dynamic solver, until it slides (2-D)"},
         {"ball-impact", "a steel ball dropped at 1 m/s on steel: Hertz impact, 69 us, 1.74 kN, rebound (3-D, dynamic)"},
+        {"ball-impact-adaptive", "the same ball released 50 um above, adaptive time steps: flight, touch, contact, release (3-D, dynamic)"},
         {"ball-impact-speeds", "the same ball dropped at 0.5, 1 and 2 m/s: a sweep of three impacts (3-D, dynamic)"},
         {"finite-hemisphere", "FE steel hemisphere (R = 10 mm) on steel, 3.3 kN: Hertz for the pair (finite)"},
         {"finite-torsion", "FE steel hemisphere on steel, 100 N, twisting moment, mu = 0.3 (finite, torsion)"},
