@@ -40,28 +40,6 @@ void print_line(const char* label, double value, const char* unit, const nlohman
   std::printf("\n");
 }
 
-/// The accuracy lines: the grids, each result's estimated relative error, the target.
-void print_accuracy(const nlohmann::json& a) {
-  std::string grids;
-  for (const auto& g : a["grids"])
-    grids += (grids.empty() ? "" : ", ") + std::to_string(g["nx"].get<int>()) +
-             (g.contains("ny") ? " x " + std::to_string(g["ny"].get<int>()) : std::string());
-  if (a.contains("unavailable")) {
-    std::printf("  %-16s no estimate: %s\n", "accuracy", a["unavailable"].get<std::string>().c_str());
-  } else {
-    std::printf("  %-16s estimated relative error (grids %s; %.0f %% extra time)\n", "accuracy", grids.c_str(),
-                100.0 * a["cost_fraction"].get<double>());
-    for (const auto& [name, q] : a["quantities"].items()) {
-      std::printf("    %-18s %-12.6g +- %.2g", name.c_str(), q["value"].get<double>(), q["error_estimate"].get<double>());
-      if (q["order"].is_number()) std::printf("  (order %.2f)", q["order"].get<double>());
-      std::printf("  %s\n", q["method"].get<std::string>().c_str());
-    }
-  }
-  if (a["target"].is_number())
-    std::printf("  %-16s %.3g on %s: %s (%s)\n", "target", a["target"].get<double>(), a["grid"].dump().c_str(),
-                a["met"].get<bool>() ? "met" : "NOT met", a.value("stopped_by", std::string()).c_str());
-}
-
 /// The tangential lines of the report (from the summary, like the normal ones).
 void print_tangential(const Case& c, const nlohmann::json& s) {
   const bool two_d = c.dimension == 2;
@@ -202,7 +180,7 @@ int run_solve(const SolveArgs& args) {
     print_line("max pressure", s["max_pressure"].get<double>(), "Pa", ref, "max_pressure");
     std::printf("  %-16s %d of %zu elements\n", "in contact", s["n_contact"].get<int>(), solved.grid.size());
     if (c.problem == ProblemKind::tangential) print_tangential(c, s);
-    if (s.contains("accuracy")) print_accuracy(s["accuracy"]);
+    if (s.contains("accuracy")) runs::print_accuracy(s["accuracy"]);
     if (r.backend == "none") std::printf("note: %s\n", r.message.c_str());
     std::printf("wrote %s\n", summary_path.c_str());
     std::fflush(stdout);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "case_model.hpp"
+#include "dynamic_accuracy.hpp"
 #include "dynamic_run.hpp"
 #include "dynamic_sweep.hpp"
 #include "module_common.hpp"
@@ -81,11 +82,12 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
   runs::DynamicOutcome out;
   {
     py::gil_scoped_release release;
-    out = runs::simulate_dynamic(c, progress);
+    out = runs::simulate_dynamic_with_accuracy(c, progress);
   }
   py::dict result = to_python(out.summary);
   result["timeseries"] = csv_columns(out.timeseries);
   enforce_summary_limits(out.summary, result, kRunAdvice);
+  enforce_accuracy_target(out.summary, result, kRunAdvice);
   return result;
 }
 

@@ -13,6 +13,10 @@
 
 namespace dc::runs {
 
+/// The fewest elements across the contact a coarse grid may have for its answer to count: below
+/// it the peak pressure is off by tens of per cent and the sequence is not asymptotic.
+inline constexpr int kMinAcross3d = 6, kMinAcross2d = 8;
+
 struct EstimatedQuantity {
   QuantityValue quantity;
   DiscretisationError error;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <map>
 #include <tuple>
@@ -25,9 +26,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-/// The fewest elements across the contact a coarse grid may have for its answer to count: below
-/// it the peak pressure is off by tens of per cent and the sequence is not asymptotic.
-constexpr int kMinAcross3d = 6, kMinAcross2d = 8;
 
 int fewest_across(const nlohmann::json& summary) {
   const nlohmann::json& a = summary.value("elements_across_contact", nlohmann::json());
@@ -221,11 +219,6 @@ Grid grown(const Grid& g, double factor) {
   return Grid::make(3, nx, ny, cx - hx, cx + hx, cy - hy, cy + hy);
 }
 
-Grid refined(const Grid& g, int factor) {
-  if (g.dimension == 2) return Grid::make(2, g.nx * factor, 1, g.x0, g.x_max(), 0.0, 0.0);
-  return Grid::make(3, g.nx * factor, g.ny * factor, g.x0, g.x_max(), g.y0, g.y_max());
-}
-
 StaticRun finish(const Estimate& e, nlohmann::json accuracy) {
   StaticRun run = e.levels.front()->run;
   run.interrupted = run.interrupted || e.interrupted;
@@ -284,6 +277,11 @@ StaticRun refine_to_target(const Case& c, bool progress) {
 
 }  // namespace
 
+Grid refined(const Grid& g, int factor) {
+  if (g.dimension == 2) return Grid::make(2, g.nx * factor, 1, g.x0, g.x_max(), 0.0, 0.0);
+  return Grid::make(3, g.nx * factor, g.ny * factor, g.x0, g.x_max(), g.y0, g.y_max());
+}
+
 Grid coarsened(const Grid& g, int factor) {
   auto count = [&](int n) { return std::max(1, static_cast<int>(std::lround(static_cast<double>(n) / factor))); };
   if (g.dimension == 2) return Grid::make(2, count(g.nx), 1, g.x0, g.x_max(), 0.0, 0.0);
@@ -299,6 +297,27 @@ StaticRun run_static_with_accuracy(const Case& c, bool progress) {
   // An interrupted history has no estimate: its coarse grids would solve the whole history.
   if (e.levels.front()->run.interrupted) return e.levels.front()->run;
   return finish(e, accuracy_json(e, c.accuracy));
+}
+
+void print_accuracy(const nlohmann::json& a) {
+  std::string grids;
+  for (const auto& g : a["grids"])
+    grids += (grids.empty() ? "" : ", ") + std::to_string(g["nx"].get<int>()) +
+             (g.contains("ny") ? " x " + std::to_string(g["ny"].get<int>()) : std::string());
+  if (a.contains("unavailable")) {
+    std::printf("  %-16s no estimate: %s\n", "accuracy", a["unavailable"].get<std::string>().c_str());
+  } else {
+    std::printf("  %-16s estimated relative error (grids %s; %.0f %% extra time)\n", "accuracy", grids.c_str(),
+                100.0 * a["cost_fraction"].get<double>());
+    for (const auto& [name, q] : a["quantities"].items()) {
+      std::printf("    %-18s %-12.6g +- %.2g", name.c_str(), q["value"].get<double>(), q["error_estimate"].get<double>());
+      if (q["order"].is_number()) std::printf("  (order %.2f)", q["order"].get<double>());
+      std::printf("  %s\n", q["method"].get<std::string>().c_str());
+    }
+  }
+  if (a["target"].is_number())
+    std::printf("  %-16s %.3g on %s: %s (%s)\n", "target", a["target"].get<double>(), a["grid"].dump().c_str(),
+                a["met"].get<bool>() ? "met" : "NOT met", a.value("stopped_by", std::string()).c_str());
 }
 
 bool accuracy_target_missed(const nlohmann::json& summary) {

@@ -16,6 +16,13 @@ struct StaticRun;
 /// The grid of `g`'s bounds with round(n / factor) elements along each axis (at least 1).
 Grid coarsened(const Grid& g, int factor);
 
+/// The grid of `g`'s bounds with `factor` times the elements along each axis.
+Grid refined(const Grid& g, int factor);
+
+/// The accuracy block's lines on stdout: the grids, each result's estimated relative error, the
+/// target and whether it was met.
+void print_accuracy(const nlohmann::json& accuracy);
+
 /// run_static_once (tangential_run.hpp) on the case's grid, or on the grids the target asks
 /// for, with summary["accuracy"] (CASES.md) when c.accuracy.estimate. The run returned is that
 /// of the finest grid solved; its `grid` says which.

@@ -15,14 +15,31 @@ nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::js
 
 }  // namespace
 
+void PeakBetweenSteps::add(double t, double f) {
+  largest_sample_ = std::max(largest_sample_, f);
+  if (count_ >= 2 && f1_ >= f0_ && f1_ >= f && f1_ > peak_sample_) {
+    // The vertex of the quadratic through (t0, f0), (t1, f1), (t, f): divided differences.
+    const double a = ((f - f1_) / (t - t1_) - (f1_ - f0_) / (t1_ - t0_)) / (t - t0_);
+    const double b = (f1_ - f0_) / (t1_ - t0_) - a * (t0_ + t1_);
+    if (a < 0.0) {
+      const double tv = std::clamp(-b / (2.0 * a), t0_, t);
+      peak_ = std::max(peak_, f0_ + (tv - t0_) * ((f1_ - f0_) / (t1_ - t0_) + a * (tv - t1_)));
+    }
+    peak_sample_ = f1_;
+  }
+  t0_ = t1_;
+  f0_ = f1_;
+  t1_ = t;
+  f1_ = f;
+  ++count_;
+}
+
 void ContactPeaks::add(const dynamics::DynamicSample& s) {
   const dynamics::ContactState& cs = s.contact_state;
   const double t = s.state.time, gap = s.state.position.z() - radius_, vz = s.state.velocity.z();
-  if (cs.in_contact) {
-    max_force_ = std::max(max_force_, std::abs(s.contact.force.z()));
-    max_approach_ = std::max(max_approach_, cs.approach);
-    max_area_ = std::max(max_area_, cs.contact_area);
-  }
+  max_force_.add(t, cs.in_contact ? std::abs(s.contact.force.z()) : 0.0);
+  max_approach_.add(t, cs.in_contact ? cs.approach : 0.0);
+  if (cs.in_contact) max_area_ = std::max(max_area_, cs.contact_area);
   if (!started_) {  // the first step: a body that starts touching touched at t = 0
     if (cs.in_contact && gap <= 0.0) first_touch_ = 0.0;
   } else if (cs.in_contact && !previous_contact_ && std::isnan(first_touch_)) {
@@ -42,8 +59,8 @@ void ContactPeaks::add(const dynamics::DynamicSample& s) {
 
 nlohmann::json ContactPeaks::to_json() const {
   const double duration = std::isfinite(release_) && std::isfinite(first_touch_) ? release_ - first_touch_ : kNone;
-  return {{"max_normal_force", max_force_},
-          {"max_approach", max_approach_},
+  return {{"max_normal_force", max_force_.value()},
+          {"max_approach", max_approach_.value()},
           {"max_contact_area", max_area_},
           {"first_touch", number_or_null(first_touch_)},
           {"release", number_or_null(release_)},
@@ -53,8 +70,8 @@ nlohmann::json ContactPeaks::to_json() const {
 
 std::vector<QuantityValue> ContactPeaks::quantities() const {
   using C = Convergence;
-  std::vector<QuantityValue> q = {{"max_normal_force", max_force_, C::smooth, 0.0},
-                                  {"max_approach", max_approach_, C::smooth, 0.0},
+  std::vector<QuantityValue> q = {{"max_normal_force", max_force_.value(), C::smooth, 0.0},
+                                  {"max_approach", max_approach_.value(), C::smooth, 0.0},
                                   {"max_contact_area", max_area_, C::band, 0.0}};
   if (std::isfinite(release_)) {
     q.push_back({"contact_time", release_ - first_touch_, C::smooth, 0.0});

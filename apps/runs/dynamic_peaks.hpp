@@ -1,9 +1,13 @@
 #pragma once
 // The peaks of a dynamic run (summary.json "peaks"): the largest contact force, approach and
-// contact area, and for an impact the first touch, the release, the contact time between them and
+// contact area (force and approach between the steps: the vertex of the parabola through the
+// largest step and its neighbours, so that the time step's sampling does not cut the peak by
+// O(dt^2)), and for an impact the first touch, the release, the contact time between them and
 // the rebound speed at the release. The touch and the release are placed between the steps where
-// the contact began and ended, where the body's lowest point crosses the surface (linear in the
-// gap z - radius of an upright body). Issue 28's dynamic error estimates are made for these.
+// the contact began and ended, where the grid's lowest element centre crosses the surface (linear
+// in the gap z - radius + h_min of an upright body, h_min the profile's least height over the
+// element centres: the discrete contact opens there, not at the profile's lowest point). Issue 28's dynamic error estimates are made for these.
+#include <algorithm>
 #include <limits>
 #include <vector>
 
@@ -14,10 +18,24 @@
 
 namespace dc::runs {
 
+/// The largest value of a sampled function of time, refined between the samples by a parabola
+/// through the largest sample and its two neighbours.
+class PeakBetweenSteps {
+ public:
+  void add(double t, double value);
+  double value() const { return std::max(peak_, largest_sample_); }
+
+ private:
+  int count_ = 0;
+  double t0_ = 0.0, f0_ = 0.0, t1_ = 0.0, f1_ = 0.0;  // the two samples before the newest
+  double largest_sample_ = 0.0, peak_ = 0.0, peak_sample_ = 0.0;
+};
+
 class ContactPeaks {
  public:
-  /// `radius`: the height of the body's centre of mass over its lowest point (DynamicSpec::radius).
-  explicit ContactPeaks(double radius) : radius_(radius) {}
+  /// `radius`: the height of the body's centre of mass over its lowest point (DynamicSpec::radius);
+  /// `lowest_height`: the profile's least height over the grid's element centres (h_min).
+  ContactPeaks(double radius, double lowest_height) : radius_(radius - lowest_height) {}
   void add(const dynamics::DynamicSample& s);
 
   /// {max_normal_force, max_approach, max_contact_area, first_touch, release, contact_time,
@@ -32,7 +50,8 @@ class ContactPeaks {
   double radius_;
   bool started_ = false, previous_contact_ = false;
   double previous_time_ = 0.0, previous_gap_ = 0.0, previous_vz_ = 0.0;
-  double max_force_ = 0.0, max_approach_ = 0.0, max_area_ = 0.0;
+  PeakBetweenSteps max_force_, max_approach_;
+  double max_area_ = 0.0;
   double first_touch_ = kNone, release_ = kNone, rebound_velocity_ = kNone;
 };
 

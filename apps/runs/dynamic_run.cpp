@@ -1,5 +1,6 @@
 #include "dynamic_run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -7,6 +8,9 @@
 #include <sstream>
 #include <vector>
 
+#include "accuracy_run.hpp"
+#include "dynamic_accuracy.hpp"
+#include "dynamic_peaks.hpp"
 #include "dynamic_series.hpp"
 #include "dynamic_sweep.hpp"
 #include "exit_codes.hpp"
@@ -15,6 +19,7 @@
 #include "gnuplot_figures.hpp"
 #include "interrupt_handler.hpp"
 #include "output_files.hpp"
+#include "profile.hpp"
 #include "progress.hpp"
 #include "result_limits.hpp"
 #include "summary_entries.hpp"
@@ -34,13 +39,13 @@ namespace fs = std::filesystem;
 json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 /// The contact fields of a step (fields.csv's columns); zero without contact.
-output::StaticFields step_fields(const Case& c, const dynamics::ContactState& cs) {
+output::StaticFields step_fields(const Grid& grid, const dynamics::ContactState& cs) {
   if (cs.fields) {
     const TangentialSolution& t = *cs.fields;
     return {t.normal.pressure, t.tx, t.ty, t.sx, t.sy, t.bound, t.state, 0.0};
   }
   if (cs.pressure) return output::normal_fields(*cs.pressure, 1e-9);
-  return output::normal_fields(std::vector<double>(c.grid.size(), 0.0), 1e-9);
+  return output::normal_fields(std::vector<double>(grid.size(), 0.0), 1e-9);
 }
 
 }  // namespace
@@ -59,8 +64,17 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
   const auto start = std::chrono::steady_clock::now();
   Progress line("dynamic", progress);
   const double t_end = c.dynamic->t_end;
+  // The height of the centre over the lowest point (an fe_body's from its mesh) and the least
+  // height of the profile over the element centres.
+  double lowest = 0.0;
+  if (!sim.finite_body()) {
+    const std::vector<double> h = profile_heights(c.profile, c.grid);
+    lowest = *std::min_element(h.begin(), h.end());
+  }
+  ContactPeaks peaks(sim.finite_body() ? sim.finite_body()->centre_height() : c.dynamic->radius, lowest);
   out.result = sim.run([&](const dynamics::DynamicSample& s) {
     output::append_timeseries_row(series, s);
+    peaks.add(s);
     if (on_step) on_step(s);
     if (progress) line.time(s.state.time, t_end);
   });
@@ -86,6 +100,8 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
   summary["final"] = {{"time", r.final.time}, {"position", vec(r.final.position)},
                       {"velocity", vec(r.final.velocity)}, {"omega", vec(r.final.omega)}};
   summary["timeseries"] = "timeseries.csv";
+  summary["peaks"] = peaks.to_json();
+  out.peaks = peaks.quantities();
   summary["models"] = {{"normal_model", to_string(sp.normal_model)},
                        {"contact_model", to_string(sp.contact_model)},
                        {"contact_model_used", r.contact_model},
@@ -128,17 +144,20 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
 #ifdef DYNCONTACT_WITH_FE
   output::BodySnapshots body_series(dir);  // an fe_body: body_NNNN.vtu per snapshot and body.pvd
 #endif
-  const DynamicOutcome out = simulate_dynamic(c, !quiet, [&](const dynamics::DynamicSample& s) {
-    if (every > 0 && s.step % every == 0) {
+  Grid grid = c.grid;  // of the run the snapshots are taken from (an accuracy target chooses it)
+  const auto write_snapshot = [&](const dynamics::DynamicSample& s) {
+    if (s.step % every == 0) {
       const std::string name = "fields_" + std::to_string(s.step) + ".csv";
-      output::write_fields(dir, c.grid, step_fields(c, s.contact_state), name);
+      output::write_fields(dir, grid, step_fields(grid, s.contact_state), name);
       json snapshot = {{"step", s.step}, {"time", s.state.time}, {"file", name}};
 #ifdef DYNCONTACT_WITH_FE
       if (s.finite_body) snapshot["body"] = body_series.write(*s.finite_body, s.state);
 #endif
       snapshots.push_back(snapshot);
     }
-  });
+  };
+  const DynamicOutcome out =
+      simulate_dynamic_with_accuracy(c, !quiet, every > 0 ? std::function(write_snapshot) : nullptr, &grid);
   const dynamics::DynamicResult& r = out.result;
   const double elapsed = out.elapsed;
   output::write_file_whole((fs::path(dir) / "timeseries.csv").string(), out.timeseries);
@@ -172,6 +191,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
                 "%.6g] rad/s\n",
                 r.final.time, r.final.position.x(), r.final.position.y(), r.final.position.z(), r.final.velocity.x(),
                 r.final.velocity.y(), r.final.velocity.z(), r.final.omega.x(), r.final.omega.y(), r.final.omega.z());
+    if (summary.contains("accuracy")) print_accuracy(summary["accuracy"]);
     std::printf("wrote %s\n", path.c_str());
     std::fflush(stdout);
   }
@@ -185,6 +205,13 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
     return kExitBadInput;
   }
   if (report_limits(out.limits, dir)) return kExitBadInput;
+  if (accuracy_target_missed(summary)) {
+    const json& a = summary["accuracy"];
+    std::cerr << "error: accuracy: the target " << a["target"].get<double>() << " was not met (stopped by "
+              << a.value("stopped_by", std::string("?")) << " on " << a["grid"].dump() << "); results written to "
+              << dir << "\n";
+    return kExitUnconverged;
+  }
   if (!r.completed) {
     std::cerr << "error: dynamic run " << r.status << "; the time series so far is in " << dir << "\n";
     return kExitUnconverged;

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "accuracy_quantities.hpp"
 #include "case_model.hpp"
 #include "dynamic_simulation.hpp"
 #include "result_limits.hpp"
@@ -24,6 +25,7 @@ struct DynamicOutcome {
   std::string timeseries;  ///< timeseries.csv: a header line, one row per accepted step
   double elapsed = 0.0;    ///< wall time of the run (s)
   std::vector<ResultLimit> limits;  ///< before and after the run (dynamic_limits.hpp); also summary["limits"]
+  std::vector<QuantityValue> peaks;  ///< summary["peaks"] as results for an error estimate (dynamic_peaks.hpp)
 };
 
 /// Runs the case; `on_step` (optional) after every accepted step, e.g. to write snapshots; a
