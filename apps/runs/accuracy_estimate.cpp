@@ -66,6 +66,32 @@ nlohmann::json quantities_json(const std::vector<EstimatedQuantity>& quantities)
   return q;
 }
 
+nlohmann::json accuracy_block(const std::vector<GridTime>& grids, const std::string& unavailable,
+                              const std::vector<EstimatedQuantity>& quantities, double coarse_seconds,
+                              const AccuracySpec& spec) {
+  nlohmann::json a;
+  a["grid"] = grid_json(grids.front().grid);
+  nlohmann::json list = nlohmann::json::array();
+  for (const GridTime& l : grids) {
+    nlohmann::json g = grid_json(l.grid);
+    g["time_s"] = l.seconds;
+    list.push_back(g);
+  }
+  a["grids"] = list;
+  if (!unavailable.empty()) {
+    a["estimate"] = nullptr;
+    a["unavailable"] = unavailable;
+  } else {
+    a["quantities"] = quantities_json(quantities);
+    // The estimate's cost: the other runs over the finest one (3-D about 1/4 + 1/16).
+    const double fine = grids.front().seconds;
+    a["cost_fraction"] = fine > 0.0 ? coarse_seconds / fine : 0.0;
+  }
+  a["target"] = spec.target ? nlohmann::json(*spec.target) : nlohmann::json();
+  a["met"] = nlohmann::json();
+  return a;
+}
+
 double named_error(const std::vector<EstimatedQuantity>& quantities, const std::string& name) {
   const DiscretisationError* e = named_estimate(quantities, name);
   return e ? e->relative_error : 0.0;

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "accuracy_quantities.hpp"
+#include "accuracy_spec.hpp"
 #include "discretisation_error.hpp"
 #include "grid.hpp"
 
@@ -40,6 +41,19 @@ std::vector<EstimatedQuantity> estimate_quantities(
 /// The "quantities" object: name -> {value, values, extrapolated, error_estimate,
 /// error_estimate_absolute, method, order}.
 nlohmann::json quantities_json(const std::vector<EstimatedQuantity>& quantities);
+
+/// One grid of an estimate and the time its run took.
+struct GridTime {
+  Grid grid;
+  double seconds = 0.0;
+};
+
+/// summary.json's accuracy block (CASES.md) of `grids` (finest first): grid, grids, then the
+/// quantities and the cost fraction (the other grids' time over the finest's; `coarse_seconds`),
+/// or `unavailable` (why there is no estimate) when it is not empty; target, met (null).
+nlohmann::json accuracy_block(const std::vector<GridTime>& grids, const std::string& unavailable,
+                              const std::vector<EstimatedQuantity>& quantities, double coarse_seconds,
+                              const AccuracySpec& spec);
 
 /// The named result's relative error; 0 when it is not among them (the case prescribes it).
 double named_error(const std::vector<EstimatedQuantity>& quantities, const std::string& name);

@@ -179,27 +179,11 @@ Estimate estimate_on(GridSolves& solves, const Grid& fine_grid, const GridSolve*
 }
 
 nlohmann::json accuracy_json(const Estimate& e, const AccuracySpec& spec) {
-  nlohmann::json a;
-  const GridSolve& fine = *e.levels.front();
-  a["grid"] = grid_json(fine.grid);
-  nlohmann::json grids = nlohmann::json::array();
-  for (const GridSolve* l : e.levels) {
-    nlohmann::json g = grid_json(l->grid);
-    g["time_s"] = l->seconds;
-    grids.push_back(g);
-  }
-  a["grids"] = grids;
-  if (!e.unavailable.empty()) {
-    a["estimate"] = nullptr;
-    a["unavailable"] = e.unavailable;
-  } else {
-    a["quantities"] = quantities_json(e.quantities);
-    // The estimate's cost: the coarse solves over the fine one (3-D about 1/4 + 1/16).
-    a["cost_fraction"] = fine.seconds > 0.0 ? e.coarse_seconds / fine.seconds : 0.0;
-  }
-  if (const int k = peak_load_step_index(fine.run.summary); k >= 0) a["step"] = k;  // a history's peak load
-  a["target"] = spec.target ? nlohmann::json(*spec.target) : nlohmann::json();
-  a["met"] = nlohmann::json();
+  std::vector<GridTime> grids;
+  for (const GridSolve* l : e.levels) grids.push_back({l->grid, l->seconds});
+  nlohmann::json a = accuracy_block(grids, e.unavailable, e.quantities, e.coarse_seconds, spec);
+  const int k = peak_load_step_index(e.levels.front()->run.summary);
+  if (k >= 0) a["step"] = k;  // a history's peak load
   return a;
 }
 

@@ -132,31 +132,16 @@ Estimate estimate_on(const Case& c, const Grid& fine_grid, bool progress, const 
 }
 
 nlohmann::json accuracy_json(const Estimate& e, const AccuracySpec& spec) {
-  nlohmann::json a;
-  a["grid"] = grid_json(e.levels.front().grid);
-  nlohmann::json grids = nlohmann::json::array();
-  for (const Level& l : e.levels) {
-    nlohmann::json g = grid_json(l.grid);
-    g["time_s"] = l.out.elapsed;
-    grids.push_back(g);
+  std::vector<GridTime> grids;
+  for (const Level& l : e.levels) grids.push_back({l.grid, l.out.elapsed});
+  nlohmann::json a = accuracy_block(grids, e.unavailable, e.quantities, e.coarse_seconds, spec);
+  if (!e.unavailable.empty()) return a;
+  for (const auto& [name, relative] : e.time_errors) {
+    nlohmann::json& q = a["quantities"][name];
+    q["time_error_estimate"] = relative;
+    q["grid_error_estimate"] = q["error_estimate"].get<double>() - relative;
   }
-  a["grids"] = grids;
-  if (!e.unavailable.empty()) {
-    a["estimate"] = nullptr;
-    a["unavailable"] = e.unavailable;
-  } else {
-    a["quantities"] = quantities_json(e.quantities);
-    for (const auto& [name, relative] : e.time_errors) {
-      nlohmann::json& q = a["quantities"][name];
-      q["time_error_estimate"] = relative;
-      q["grid_error_estimate"] = q["error_estimate"].get<double>() - relative;
-    }
-    if (!e.time_unavailable.empty()) a["time_error_unavailable"] = e.time_unavailable;
-    const double fine = e.levels.front().out.elapsed;
-    a["cost_fraction"] = fine > 0.0 ? e.coarse_seconds / fine : 0.0;
-  }
-  a["target"] = spec.target ? nlohmann::json(*spec.target) : nlohmann::json();
-  a["met"] = nlohmann::json();
+  if (!e.time_unavailable.empty()) a["time_error_unavailable"] = e.time_unavailable;
   return a;
 }
 
