@@ -17,9 +17,42 @@ DiscretisationError band(const std::vector<GridValue>& v, const ErrorEstimateOpt
   DiscretisationError e;
   e.value = e.extrapolated = v[0].value;
   e.method = "band";
-  for (std::size_t k = 1; k < v.size() && k < 3; ++k) e.error = std::max(e.error, std::abs(v[k].value - v[k - 1].value));
+  // First order on average, by whole elements: the finer change, or the coarser change reduced by
+  // one order, with Roache's factors (docs/accuracy.md "Whole-element quantities").
+  const double r = v[1].h / v[0].h;
+  const double fine = std::abs(v[0].value - v[1].value) / (r - 1.0);
+  if (v.size() < 3) {
+    e.error = o.safety_two_grids * fine;
+  } else {
+    const double r2 = v[2].h / v[1].h;
+    const double coarse = std::abs(v[1].value - v[2].value) / ((r2 - 1.0) * r);
+    e.error = o.safety_three_grids * std::max(fine, coarse);
+  }
+  if (o.band_at_least_largest_change)
+    for (std::size_t k = 1; k < v.size() && k < 3; ++k) e.error = std::max(e.error, std::abs(v[k].value - v[k - 1].value));
   e.relative_error = relative_to(e.error, e.value, o.scale);
   return e;
+}
+
+/// A smooth quantity whose values are not monotone: the last change, or the coarser change
+/// reduced by the expected order, whichever is larger (measured on the 2-D peak pressure, whose
+/// error depends on where the contact edge falls in an element: docs/accuracy.md).
+DiscretisationError not_monotone(const std::vector<GridValue>& v, const ErrorEstimateOptions& o) {
+  DiscretisationError e;
+  e.value = e.extrapolated = v[0].value;
+  e.method = "band";
+  e.error = std::max(std::abs(v[0].value - v[1].value),
+                     std::abs(v[1].value - v[2].value) / std::pow(v[2].h / v[1].h, o.expected_order));
+  e.relative_error = relative_to(e.error, e.value, o.scale);
+  return e;
+}
+
+/// Three values changing in one direction by steps that grow faster than r^0.25 (observed order
+/// below -0.25): a peak at a singular edge (h^-1/2 gives -0.5).
+bool diverges(const std::vector<GridValue>& v) {
+  if (v.size() < 3) return false;
+  const double d1 = v[0].value - v[1].value, d2 = v[1].value - v[2].value;
+  return d1 * d2 > 0.0 && std::abs(d1) > std::abs(d2) * std::pow(v[1].h / v[0].h, 0.25);
 }
 
 }  // namespace
@@ -30,7 +63,15 @@ DiscretisationError estimate_discretisation_error(const std::vector<GridValue>& 
   for (std::size_t k = 1; k < values.size(); ++k)
     if (!(values[k].h > values[k - 1].h))
       throw std::invalid_argument("grid sizes must increase from the finest grid");
-  if (kind == Convergence::band) return band(values, options);
+  const bool peak = kind == Convergence::peak || kind == Convergence::rim_peak;
+  if (peak && diverges(values)) {
+    DiscretisationError e;
+    e.value = e.extrapolated = values[0].value;
+    e.method = "diverging";
+    e.error = e.relative_error = HUGE_VAL;
+    return e;
+  }
+  if (kind == Convergence::band || kind == Convergence::rim_peak) return band(values, options);
 
   const double r = values[1].h / values[0].h;
   const double q0 = values[0].value, q1 = values[1].value;
@@ -53,14 +94,7 @@ DiscretisationError estimate_discretisation_error(const std::vector<GridValue>& 
       p = std::min(observed, options.expected_order);
       safety = options.safety_three_grids;
     } else {
-      // Not monotone, or not contracting: not in the asymptotic range. No extrapolation; a
-      // band of the last change, or of the coarser change reduced by the expected order,
-      // whichever is larger (measured on the 2-D peak pressure, whose error depends on where the
-      // contact edge falls in an element: docs/accuracy.md).
-      DiscretisationError b = band(values, options);
-      b.error = std::max(std::abs(d1), std::abs(d2) / std::pow(r2, options.expected_order));
-      b.relative_error = relative_to(b.error, b.value, options.scale);
-      return b;
+      return not_monotone(values, options);  // not in the asymptotic range: no extrapolation
     }
     coarse_pair = std::abs(d2) / ((std::pow(r2, p) - 1.0) * std::pow(r, p));
   }

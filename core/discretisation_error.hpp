@@ -14,7 +14,8 @@
 //     not make the estimate vanish;
 //   - Roache's safety factor (1.25 with three grids, 3 with two).
 // A quantity that does not converge monotonically (an element is in the contact or not: contact
-// and stick areas, counts) gets a band instead: the largest change between the grids. A smooth
+// and stick areas, counts) gets a band instead: first order on average, by whole elements,
+// safety x max(|Q_0 - Q_1| / (r - 1), |Q_1 - Q_2| / ((r - 1) r)) (three grids: 1.25; two: 3). A smooth
 // quantity whose three values are not monotone gets the band max(|Q_0 - Q_1|, |Q_1 - Q_2| / r^p).
 #include <optional>
 #include <string>
@@ -25,7 +26,15 @@ namespace dc {
 /// How a quantity converges with the element size.
 enum class Convergence {
   smooth,  ///< Q_h = Q* + C h^p: Richardson extrapolation
-  band     ///< not monotone (whole elements in or out): the largest change between the grids
+  band,    ///< not monotone (whole elements in or out): a first-order band of the changes
+  /// A local peak (the largest pressure): smooth where the solution is, but without a continuum
+  /// value at a singular edge (a flat punch's rim: p ~ 1/sqrt(distance), the peak grows as
+  /// h^-1/2). Three values that change in one direction by growing steps (observed order below
+  /// -0.25) are "diverging": error infinite.
+  peak,
+  /// A peak on the contact's rim (a punch, a sharp profile edge): "diverging" as `peak`, else the
+  /// band (one rim element's value: no O(h^2) to extrapolate).
+  rim_peak
 };
 
 /// One quantity's value on one grid.
@@ -40,7 +49,7 @@ struct DiscretisationError {
   double error = 0.0;         ///< estimated |Q_0 - Q_continuum| (absolute)
   double relative_error = 0.0;  ///< error / max(|value|, scale): what targets are compared with
   std::optional<double> order;  ///< observed order used (three monotone grids); none otherwise
-  std::string method;           ///< "richardson", "assumed_order" (two grids or not monotone), "band"
+  std::string method;  ///< "richardson", "assumed_order" (two grids), "band", "diverging" (a peak)
 };
 
 struct ErrorEstimateOptions {
@@ -55,6 +64,10 @@ struct ErrorEstimateOptions {
   /// quantity that is zero in the continuum (a tangential force at zero creepage) gets its
   /// error relative to this, not to its own round-off.
   double scale = 0.0;
+  /// A band no smaller than the largest change between the grids: in 2-D, where the place of the
+  /// contact edge within an element moves a result by up to 10 x its smooth error from grid to
+  /// grid (Carter's creepage on 50 and 100 strips falls below the first-order band).
+  bool band_at_least_largest_change = false;
 };
 
 /// One quantity on one element size: on the grid asked for, and its mean over that grid and the

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Grid convergence against the closed forms (issue 28, docs/accuracy.md): solves the Hertz
-# sphere, ellipse and line contact, Carter's rolling cylinder and Cattaneo's shifted sphere on a
+# sphere, ellipse and line contact, Carter's rolling cylinder, Cattaneo's shifted sphere, Kalker's
+# rolling sphere (C11) and Spence's frictional indentation (stick ratio) on a
 # sequence of grids (the same extent, the element size halved and in between), takes each run's
 # relative difference to its closed form (summary.json "hertz"; Carter's creepage and Mindlin's
 # shift computed here), fits the observed order of each quantity (least squares of log|error|
@@ -26,6 +27,31 @@ mkdir -p "$out"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
+# Two cases made here from the examples: Kalker's linear theory (rolling-sphere at nu = 0.25, a
+# creepage far below saturation, mu = 10: full stick; C11 against Kalker's table) and Spence's
+# stick ratio (spence-sphere on a nearly incompressible substrate, nu = 0.49, |beta|/mu = 1.5,
+# loaded in 48 steps: the load steps' own error stays below the coarse grids').
+/usr/bin/env python3 - "$work" <<'PY'
+import json, sys
+work = sys.argv[1]
+k = json.load(open("examples/rolling-sphere.json"))
+k["name"] = "kalker-sphere"
+for body in ("body", "base"):
+    k["materials"][body]["nu"] = 0.25
+k["friction"]["mu"] = 10.0
+k["tangential"]["creepage"] = [1.0e-5, 0.0]
+json.dump(k, open(f"{work}/kalker-sphere.json", "w"), indent=1)
+s = json.load(open("examples/spence-sphere.json"))
+s["name"] = "spence-incompressible"
+s["materials"]["base"]["nu"] = 0.49
+beta = (1 - 2 * 0.49) / (2 * (1 - 0.49))  # Dundurs' beta of a rigid sphere on the substrate
+s["friction"]["mu"] = beta / 1.5
+s["grid"]["extent"] = 1.2
+P = s["normal"]["force"]
+s["tangential"]["history"] = [{"normal": {"force": P * (0.5 + 0.5 * i / 48) ** 3}} for i in range(49)]
+json.dump(s, open(f"{work}/spence-incompressible.json", "w"), indent=1)
+PY
+
 # case, dimension, grids (elements along x; 3-D: ny = nx)
 cases=(
   "hertz-sphere 3 16 24 32 48 64 96 128 192 256"
@@ -33,13 +59,17 @@ cases=(
   "hertz-cylinder-2d 2 32 48 64 96 128 192 256 384 512 768 1024 1536 2048"
   "carter-2d 2 50 64 100 128 200 256 400 512 800 1024"
   "cattaneo-sphere 3 24 32 48 64 96 128"
+  "kalker-sphere 3 24 32 40 48 56 64 80 96 112 128"
+  "spence-incompressible 3 32 40 48 56 64 80 96 112 128"
 )
 for spec in "${cases[@]}"; do
   read -r name dim grids <<<"$spec"
+  file="examples/$name.json"
+  [[ -f "$work/$name.json" ]] && file="$work/$name.json"
   for n in $grids; do
     sets=(--set "grid.nx=$n" --set output.plots=false --set output.fields=false)
     [[ $dim == 3 ]] && sets+=(--set "grid.ny=$n")
-    DYNCONTACT_THREADS=1 "$BUILD_DIR/bin/dyncontact" solve "examples/$name.json" --out "$work/$name-$n" -q "${sets[@]}" \
+    DYNCONTACT_THREADS=1 "$BUILD_DIR/bin/dyncontact" solve "$file" --out "$work/$name-$n" -q "${sets[@]}" \
       >/dev/null || { echo "convergence: $name on $n elements did not solve" >&2; exit 1; }
   done
   echo "$name $grids" >>"$work/cases"
@@ -49,9 +79,38 @@ done
 import json, math, os, sys
 work, out = sys.argv[1], sys.argv[2]
 
+def agm(a, b):
+    while abs(a - b) > 1e-15 * a:
+        a, b = (a + b) / 2, math.sqrt(a * b)
+    return a
+
+def spence_stick_ratio(beta_over_mu):
+    """c/a from |beta|/mu = t K'(t) / artanh(t) (core/contact_closed_forms.hpp), by bisection."""
+    lo, hi = 1e-12, 1 - 1e-12
+    for _ in range(200):
+        t = (lo + hi) / 2
+        if t * math.pi / (2 * agm(1, t)) / math.atanh(t) > beta_over_mu:
+            lo = t
+        else:
+            hi = t
+    return (lo + hi) / 2
+
 def closed_form_errors(name, s):
     """Relative differences to the closed form: Hertz's from summary.json, Carter's creepage and
-    Mindlin's shift (Johnson 7.42, 8.2) from the case's data."""
+    Mindlin's shift (Johnson 7.42, 8.2), Kalker's C11 (Johnson Table 8.1: 4.12 at nu = 0.25) and
+    Spence's stick ratio (Johnson 5.4) from the case's data."""
+    if name == "kalker-sphere":
+        case = json.load(open(os.path.join(work, name + ".json")))
+        E, nu = case["materials"]["body"]["E"], case["materials"]["body"]["nu"]
+        G, xi = E / (2 * (1 + nu)), case["tangential"]["creepage"][0]
+        a = math.sqrt(s["hertz"]["semi_axis_x"] * s["hertz"]["semi_axis_y"])
+        return {"Fx": -s["tangential_force"][0] / (G * a * a * xi) / 4.12 - 1}
+    if name == "spence-incompressible":
+        case = json.load(open(os.path.join(work, name + ".json")))
+        nu = case["materials"]["base"]["nu"]
+        beta = (1 - 2 * nu) / (2 * (1 - nu))
+        ratio = spence_stick_ratio(beta / case["friction"]["mu"])
+        return {"stick_fraction": s["stick_area"] / s["contact_area"] / ratio ** 2 - 1}
     if name in ("carter-2d", "cattaneo-sphere"):
         m = s["materials"]
         E, nu = m["body"]["E"], m["body"]["nu"]  # the two bodies are alike in these examples
@@ -68,7 +127,7 @@ def closed_form_errors(name, s):
         return {"rigid_shift": (math.hypot(*s["rigid_shift"]) - ref) / ref}
     return s["hertz"]["relative_difference"]
 
-quantities = ["max_pressure", "approach", "contact_area", "creepage", "rigid_shift"]
+quantities = ["max_pressure", "approach", "contact_area", "creepage", "rigid_shift", "Fx", "stick_fraction"]
 rows, estimates, fits = [], [], {}
 for line in open(os.path.join(work, "cases")):
     name, *grids = line.split()
@@ -123,7 +182,7 @@ PY
 if command -v gnuplot >/dev/null 2>&1; then
   while read -r name _; do
     plot=""
-    for q in max_pressure approach contact_area creepage rigid_shift; do
+    for q in max_pressure approach contact_area creepage rigid_shift Fx stick_fraction; do
       awk -F'\t' -v c="$name" -v q="$q" '$1 == c && $2 == q { print $4, $5 }' "$out/convergence.tsv" >"$work/$name-$q.dat"
       order=$(awk -F'\t' -v c="$name" -v q="$q" '$1 == c && $2 == q { print $3 }' "$out/orders.tsv")
       [[ -s "$work/$name-$q.dat" ]] &&

@@ -74,12 +74,27 @@ TEST(DiscretisationError, NonMonotoneValuesGetABandOfTheChanges) {
   EXPECT_NEAR(e.error, std::max(0.004, 0.014 / std::pow(2.0, 1.75)), 1e-15);
 }
 
-TEST(DiscretisationError, BandQuantitiesTakeTheLargestChange) {
+TEST(DiscretisationError, BandQuantitiesAreFirstOrderByWholeElements) {
+  // Three grids: 1.25 x max(the finer change, the coarser change / 2).
   std::vector<GridValue> v = {{0.01, 10.0}, {0.02, 10.3}, {0.04, 10.1}};
-  const auto e = dc::estimate_discretisation_error(v, Convergence::band);
+  auto e = dc::estimate_discretisation_error(v, Convergence::band);
   EXPECT_EQ(e.method, "band");
-  EXPECT_NEAR(e.error, 0.3, 1e-12);
-  EXPECT_NEAR(e.relative_error, 0.03, 1e-12);
+  EXPECT_NEAR(e.error, 1.25 * 0.3, 1e-12);
+  EXPECT_NEAR(e.relative_error, 0.0375, 1e-12);
+  v[2].value = 11.3;  // the coarser change governs
+  e = dc::estimate_discretisation_error(v, Convergence::band);
+  EXPECT_NEAR(e.error, 1.25 * 1.0 / 2.0, 1e-12);
+  // Two grids: 3 x the change.
+  v.pop_back();
+  e = dc::estimate_discretisation_error(v, Convergence::band);
+  EXPECT_NEAR(e.error, 3.0 * 0.3, 1e-12);
+  // A first-order sequence is covered by 1.25 x its error.
+  const std::vector<GridValue> first_order = {{0.01, 1.01}, {0.02, 1.02}, {0.04, 1.04}};
+  EXPECT_NEAR(dc::estimate_discretisation_error(first_order, Convergence::band).error, 1.25 * 0.01, 1e-12);
+  // In 2-D the band is no smaller than the largest change.
+  dc::ErrorEstimateOptions two_d;
+  two_d.band_at_least_largest_change = true;
+  EXPECT_NEAR(dc::estimate_discretisation_error(first_order, Convergence::band, two_d).error, 0.02, 1e-12);
 }
 
 TEST(DiscretisationError, TwoGridsAssumeTheExpectedOrderWithTheLargerSafetyFactor) {

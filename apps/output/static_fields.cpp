@@ -47,6 +47,20 @@ ContactMeasures contact_measures(const Grid& grid, const StaticFields& fields) {
         m.touches_boundary = true;
     }
   m.contact_area = m.n_contact * grid.area();
+  auto in_contact = [&](int i, int j) {
+    if (i < 0 || i >= grid.nx || j < 0 || j >= grid.ny) return false;
+    const std::size_t e = grid.index(i, j);
+    return e < fields.state.size() && fields.state[e] != kFree;
+  };
+  double rim_pressure = 0.0;
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      if (!in_contact(i, j)) continue;
+      const bool rim = !in_contact(i - 1, j) || !in_contact(i + 1, j) ||
+                       (grid.dimension == 3 && (!in_contact(i, j - 1) || !in_contact(i, j + 1)));
+      if (rim && std::isfinite(fields.p[grid.index(i, j)])) rim_pressure = std::max(rim_pressure, fields.p[grid.index(i, j)]);
+    }
+  m.rim_pressure_ratio = m.max_pressure > 0.0 ? rim_pressure / m.max_pressure : 0.0;
   if (m.n_contact > 0) {
     m.n_across_x = static_cast<int>(std::lround((m.x_max - m.x_min) / grid.dx));
     m.n_across_y = grid.dimension == 3 ? static_cast<int>(std::lround((m.y_max - m.y_min) / grid.dy)) : 0;
@@ -73,6 +87,7 @@ void add_contact_measures(nlohmann::json& s, const Grid& grid, const StaticField
   s["contact_touches_boundary"] = m.touches_boundary;
   // The fraction of the grid's edge elements in contact (0: the contact lies inside the grid).
   s["contact_edge_fraction"] = m.n_edge > 0 ? static_cast<double>(m.n_edge_contact) / m.n_edge : 0.0;
+  s["contact_rim_pressure_ratio"] = m.rim_pressure_ratio;
   s["elements_across_contact"] =
       grid.dimension == 3 ? nlohmann::json::array({m.n_across_x, m.n_across_y}) : nlohmann::json(m.n_across_x);
 }

@@ -34,6 +34,10 @@ struct ContactMeasures {
   bool touches_boundary = false;  ///< a contact element lies on the grid's edge
   int n_edge = 0, n_edge_contact = 0;  ///< elements on the grid's edge; of those, in contact
   int n_across_x = 0, n_across_y = 0;  ///< elements across the contact region along x, y
+  /// The largest pressure on the contact's rim (contact elements beside a free one, or on the
+  /// grid's edge) over the largest pressure: about sqrt(2 h / a) at a Hertzian edge, where the
+  /// pressure falls to zero; 1 where the pressure peaks at the rim (a punch's singular edge).
+  double rim_pressure_ratio = 0.0;
 };
 
 ContactMeasures contact_measures(const Grid& grid, const StaticFields& fields);

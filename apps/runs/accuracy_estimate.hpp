@@ -33,10 +33,11 @@ nlohmann::json grid_json(const Grid& g);
 /// Each result of the finest grid (per_level[0]) estimated from its values on the grids of
 /// `element_sizes`; with `shifted` (per level, the results of its shifted grids: 2-D) by the
 /// shifted-grid estimate. A result the case prescribes (the same on every grid) or one that is
-/// zero in the continuum (within its scale on every grid) is left out.
+/// zero in the continuum (within its scale on every grid) is left out. In 2-D (`dimension`) a
+/// band is no smaller than the largest change between the grids.
 std::vector<EstimatedQuantity> estimate_quantities(
     const std::vector<double>& element_sizes, const std::vector<std::vector<QuantityValue>>& per_level,
-    const std::vector<std::vector<std::vector<QuantityValue>>>* shifted = nullptr);
+    int dimension, const std::vector<std::vector<std::vector<QuantityValue>>>* shifted = nullptr);
 
 /// The "quantities" object: name -> {value, values, extrapolated, error_estimate,
 /// error_estimate_absolute, method, order}.

@@ -174,7 +174,7 @@ Estimate estimate_on(GridSolves& solves, const Grid& fine_grid, const GridSolve*
     }
   std::vector<double> sizes;
   for (const GridSolve* l : e.levels) sizes.push_back(element_size(l->grid));
-  e.quantities = estimate_quantities(sizes, per_level, use_shifted ? &shifted : nullptr);
+  e.quantities = estimate_quantities(sizes, per_level, fine_grid.dimension, use_shifted ? &shifted : nullptr);
   return e;
 }
 
@@ -238,6 +238,10 @@ StaticRun refine_to_target(const Case& c, bool progress) {
     if (!fine.run.converged) return stop("unconverged");
     // The contact reaches the grid's edge: grow the bounds, keep the element size.
     const bool at_edge = fine.run.summary.value("contact_touches_boundary", false) && !c.allow_edge_contact;
+    // A named peak without a continuum value (a singular edge): no grid meets a target on it.
+    for (const std::string& n : names)
+      if (const DiscretisationError* d = named_estimate(e.quantities, n); d && d->method == "diverging")
+        return stop("diverging");
     const TargetGap gap = target_gap(e.quantities, e.unavailable.empty(), names, target);
     if (!at_edge && gap.worst <= 1.0) return stop("target");
     Grid next = at_edge ? grown(grid, 1.5) : grid;
