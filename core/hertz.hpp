@@ -17,7 +17,7 @@ CylinderSolution cylinder2d(double R, double P, double E_star);
 
 /// Elastic impact of a sphere (radius R, mass m) at normal speed v (Johnson, Contact Mechanics,
 /// 11.4): deepest approach (15 m v^2 / (16 E* sqrt R))^(2/5), peak force 4/3 E* sqrt(R)
-/// approach^(3/2), contact time 2.94 approach / v.
+/// approach^(3/2), contact time (4/5) B(2/5, 1/2) approach / v = 2.9432752 approach / v.
 struct ImpactSolution { double approach, force, duration; };
 ImpactSolution sphere_impact(double R, double m, double v, double E_star);
 

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "hertz.hpp"
 
 namespace {
 
@@ -27,9 +28,8 @@ HertzImpact hertz_impact(const json& c) {
   const double m = c["body"]["mass"], R = c["profile"]["radius"];
   const double v0 = -c["body"]["initial"]["velocity"][2].get<double>();
   const double E = c["materials"]["body"]["E"], nu = c["materials"]["body"]["nu"];
-  const double e_star = E / (2.0 * (1.0 - nu * nu));
-  const double d = std::pow(15.0 * m * v0 * v0 / (16.0 * e_star * std::sqrt(R)), 0.4);
-  return {d, 2.9432 * d / v0, 4.0 / 3.0 * e_star * std::sqrt(R) * std::pow(d, 1.5)};
+  const dc::hertz::ImpactSolution h = dc::hertz::sphere_impact(R, m, v0, E / (2.0 * (1.0 - nu * nu)));
+  return {h.approach, h.duration, h.force};
 }
 
 class CliDynamicAccuracy : public dc::test::CliTest {
@@ -61,7 +61,8 @@ TEST_F(CliDynamicAccuracy, PeaksAreHertzsAndTheEstimateIsNotBelowTheirError) {
     for (const auto& [name, reference] :
          {std::pair{"max_normal_force", h.force}, {"max_approach", h.approach}, {"contact_time", h.contact_time}}) {
       const double value = peaks.at(name).get<double>(), truth = std::abs(value - reference) / reference;
-      EXPECT_LT(truth, 2e-3) << name << " on " << n;  // the grid resolves the impact
+      // The grid resolves the impact; the contact time (the lowest point's crossings) to 3e-4.
+      EXPECT_LT(truth, std::string(name) == "contact_time" ? 3e-4 : 2e-3) << name << " on " << n;
       const double estimate = q.at(name).at("error_estimate").get<double>();
       EXPECT_GE(estimate, truth) << name << " on " << n;
       std::printf("%2d: %-16s true %.2e estimate %.2e (%s)\n", n, name, truth, estimate,

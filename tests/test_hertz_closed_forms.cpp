@@ -77,6 +77,7 @@ TEST(HertzClosedForms, SphereImpact) {
   EXPECT_NEAR(8.0 / 15.0 * E * std::sqrt(R) * std::pow(s.approach, 2.5) / (0.5 * m * v * v), 1.0, 1e-12);
   EXPECT_NEAR(s.force, 1744.0, 2.0);
   EXPECT_NEAR(s.duration, 6.89e-5, 0.01e-5);
+  EXPECT_NEAR(s.duration * v / s.approach, 2.9432751843, 1e-9);  // (4/5) B(2/5, 1/2)
   EXPECT_EQ(sphere_impact(R, m, -v, E).duration, s.duration);  // a downward speed as an upward one
 }
 

@@ -41,17 +41,20 @@ void ContactPeaks::add(const dynamics::DynamicSample& s) {
   max_approach_.add(t, cs.in_contact ? cs.approach : 0.0);
   if (cs.in_contact) max_area_ = std::max(max_area_, cs.contact_area);
   if (!started_) {  // the first step: a body that starts touching touched at t = 0
-    if (cs.in_contact && gap <= 0.0) first_touch_ = 0.0;
-  } else if (cs.in_contact && !previous_contact_ && std::isnan(first_touch_)) {
-    first_touch_ = gap < 0.0 && previous_gap_ > 0.0 ? crossing(previous_time_, previous_gap_, t, gap) : t;
-  } else if (!cs.in_contact && previous_contact_ && std::isfinite(first_touch_) && std::isnan(release_)) {
-    const bool crossed = previous_gap_ < 0.0 && gap > 0.0;
-    release_ = crossed ? crossing(previous_time_, previous_gap_, t, gap) : previous_time_;
-    const double w = crossed ? (release_ - previous_time_) / (t - previous_time_) : 0.0;
+    if (gap <= 0.0) last_descent_ = 0.0;
+  } else if (previous_gap_ > 0.0 && gap <= 0.0) {
+    last_descent_ = crossing(previous_time_, previous_gap_, t, gap);
+  }
+  if (cs.in_contact && std::isnan(first_touch_)) first_touch_ = std::isfinite(last_descent_) ? last_descent_ : t;
+  // The release: the first rise of the lowest point through the surface once the contact force
+  // has gone (the discrete contact opens a little earlier, at the lowest element centre).
+  if (started_ && std::isfinite(first_touch_) && std::isnan(release_) && !cs.in_contact && previous_gap_ <= 0.0 &&
+      gap > 0.0) {
+    release_ = crossing(previous_time_, previous_gap_, t, gap);
+    const double w = (release_ - previous_time_) / (t - previous_time_);
     rebound_velocity_ = (1.0 - w) * previous_vz_ + w * vz;
   }
   started_ = true;
-  previous_contact_ = cs.in_contact;
   previous_time_ = t;
   previous_gap_ = gap;
   previous_vz_ = vz;

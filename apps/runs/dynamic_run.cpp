@@ -64,14 +64,8 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
   const auto start = std::chrono::steady_clock::now();
   Progress line("dynamic", progress);
   const double t_end = c.dynamic->t_end;
-  // The height of the centre over the lowest point (an fe_body's from its mesh) and the least
-  // height of the profile over the element centres.
-  double lowest = 0.0;
-  if (!sim.finite_body()) {
-    const std::vector<double> h = profile_heights(c.profile, c.grid);
-    lowest = *std::min_element(h.begin(), h.end());
-  }
-  ContactPeaks peaks(sim.finite_body() ? sim.finite_body()->centre_height() : c.dynamic->radius, lowest);
+  // The height of the centre over the lowest point (an fe_body's from its mesh).
+  ContactPeaks peaks(sim.finite_body() ? sim.finite_body()->centre_height() : c.dynamic->radius);
   out.result = sim.run([&](const dynamics::DynamicSample& s) {
     output::append_timeseries_row(series, s);
     peaks.add(s);
