@@ -192,6 +192,10 @@ TEST_F(CliAccuracy, SpenceStickFractionEstimateIsNotBelowTheTrueError) {
     c["grid"] = {{"nx", n}, {"ny", n}, {"extent", 1.2}};
     const json s = solve(c);
     const json& e = s.at("accuracy").at("quantities").at("stick_fraction");
+    for (const json& g : s.at("accuracy").at("grids")) {  // each grid's answer certified
+      EXPECT_EQ(g.at("status"), "converged") << n;
+      EXPECT_LT(g.at("certificate").at("complementarity").get<double>(), 1e-6) << n;
+    }
     const double truth = std::abs(e.at("value").get<double>() / (ratio * ratio) - 1.0);
     EXPECT_GE(e.at("error_estimate").get<double>(), truth) << n;
     std::printf("spence %3d: c/a %.4f (Spence %.4f), estimate %.2e, true error %.2e\n", n,

@@ -58,6 +58,7 @@ TEST_F(CliDynamicAccuracy, PeaksAreHertzsAndTheEstimateIsNotBelowTheirError) {
     const HertzImpact h = hertz_impact(c);
     const json& peaks = s.at("peaks");
     const json& q = s.at("accuracy").at("quantities");
+    for (const json& g : s.at("accuracy").at("grids")) EXPECT_EQ(g.at("status"), "completed") << n;
     for (const auto& [name, reference] :
          {std::pair{"max_normal_force", h.force}, {"max_approach", h.approach}, {"contact_time", h.contact_time}}) {
       const double value = peaks.at(name).get<double>(), truth = std::abs(value - reference) / reference;

@@ -94,6 +94,14 @@ nlohmann::json accuracy_block(const std::vector<GridTime>& grids, const std::str
   for (const GridTime& l : grids) {
     nlohmann::json g = grid_json(l.grid);
     g["time_s"] = l.seconds;
+    // Every grid's own answer is certified as the finest one's: its status (a dynamic run's, or
+    // the solver's) and the certificate's residuals.
+    if (l.summary) {
+      const nlohmann::json& s = *l.summary;
+      const nlohmann::json solver = s.contains("solver") && s["solver"].is_object() ? s["solver"] : nlohmann::json::object();
+      g["status"] = s.contains("status") && s["status"].is_string() ? s["status"] : solver.value("status", nlohmann::json());
+      if (solver.contains("certificate")) g["certificate"] = solver["certificate"];
+    }
     list.push_back(g);
   }
   a["grids"] = list;

@@ -47,6 +47,7 @@ nlohmann::json quantities_json(const std::vector<EstimatedQuantity>& quantities)
 struct GridTime {
   Grid grid;
   double seconds = 0.0;
+  const nlohmann::json* summary = nullptr;  ///< the grid's summary: its status and certificate
 };
 
 /// summary.json's accuracy block (CASES.md) of `grids` (finest first): grid, grids, then the

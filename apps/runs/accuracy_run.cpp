@@ -180,7 +180,7 @@ Estimate estimate_on(GridSolves& solves, const Grid& fine_grid, const GridSolve*
 
 nlohmann::json accuracy_json(const Estimate& e, const AccuracySpec& spec) {
   std::vector<GridTime> grids;
-  for (const GridSolve* l : e.levels) grids.push_back({l->grid, l->seconds});
+  for (const GridSolve* l : e.levels) grids.push_back({l->grid, l->seconds, &l->run.summary});
   nlohmann::json a = accuracy_block(grids, e.unavailable, e.quantities, e.coarse_seconds, spec);
   const int k = peak_load_step_index(e.levels.front()->run.summary);
   if (k >= 0) a["step"] = k;  // a history's peak load

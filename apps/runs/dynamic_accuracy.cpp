@@ -133,7 +133,7 @@ Estimate estimate_on(const Case& c, const Grid& fine_grid, bool progress, const 
 
 nlohmann::json accuracy_json(const Estimate& e, const AccuracySpec& spec) {
   std::vector<GridTime> grids;
-  for (const Level& l : e.levels) grids.push_back({l.grid, l.out.elapsed});
+  for (const Level& l : e.levels) grids.push_back({l.grid, l.out.elapsed, &l.out.summary});
   nlohmann::json a = accuracy_block(grids, e.unavailable, e.quantities, e.coarse_seconds, spec);
   if (!e.unavailable.empty()) return a;
   for (const auto& [name, relative] : e.time_errors) {
