@@ -16,6 +16,7 @@ const std::vector<BundledExample>& bundled_examples() {
         {"hertz-cylinder-2d", "steel cylinder on steel, plane strain, 100 kN/m: 2-D Hertz"},
         {"flat-punch", "rigid flat punch on aluminium, approach 1 um: Boussinesq (approach control)"},
         {"hertz-ellipse", "steel ellipsoid Rx = 10 mm, Ry = 40 mm on steel: elliptic Hertz"},
+        {"bearing-accuracy", "a ball-bearing contact asked for 1e-3 instead of a grid: the grid is chosen (3-D, accuracy target)"},
         {"cattaneo-sphere", "Cattaneo-Mindlin: steel sphere, 100 N, tangential force 0.5 mu P (3-D, shift)"},
         {"torsion-sphere", "Lubkin: steel sphere, 100 N, twisting moment half the full-slip value (3-D, torsion)"},
         {"carter-2d", "Carter: steel cylinder rolling on steel, 100 kN/m, force 0.5 mu P (2-D, rolling)"},
