@@ -105,4 +105,22 @@ TEST_F(CliDynamicAccuracy, TheEstimateIsOptInAndAMissedTargetSaysWhyAndExitsThre
   expect_input_error("solve " + write_case(c) + " --out out2 -q", "accuracy.quantities");
 }
 
+/// A sweep's runs each get their estimate, and a target one of them misses exits 3 naming it.
+TEST_F(CliDynamicAccuracy, ASweepEstimatesEveryRunAndAMissedTargetExitsThree) {
+  json c = example_json("ball-impact-speeds");
+  c["grid"]["nx"] = c["grid"]["ny"] = 24;
+  c["output"] = {{"plots", false}};
+  c["accuracy"] = {{"estimate", true}};
+  const json s = solve(c);
+  ASSERT_EQ(s.at("runs").size(), c["sweep"]["body.initial.velocity"].size());
+  for (const json& run : s.at("runs")) {
+    const json& q = run.at("accuracy").at("quantities");
+    EXPECT_GT(q.at("contact_time").at("error_estimate").get<double>(), 0.0) << run.at("label");
+    EXPECT_GT(q.at("max_normal_force").at("error_estimate").get<double>(), 0.0) << run.at("label");
+  }
+  c["accuracy"] = {{"target", 1e-7}, {"max_elements", 2304}};  // 48^2 at most: out of reach
+  const json missed = solve(c, 3);
+  for (const json& run : missed.at("runs")) EXPECT_FALSE(run.at("accuracy").at("met").get<bool>()) << run.at("label");
+}
+
 }  // namespace

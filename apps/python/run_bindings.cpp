@@ -77,6 +77,7 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
     }
     py::dict result = with_series(out.summary, out.files, out.texts);
     enforce_summary_limits(out.summary, result, kRunAdvice);
+    for (const nlohmann::json& run : out.summary["runs"]) enforce_accuracy_target(run, result, kRunAdvice);
     return result;
   }
   runs::DynamicOutcome out;

@@ -255,6 +255,11 @@ int run_dynamic_sweep(const Case& c, const std::string& dir, bool quiet) {
                   << l["message"].get<std::string>() << " (results written to " << dir << " for inspection)\n";
     return kExitBadInput;
   }
+  if (!out.targets_missed.empty()) {
+    for (const std::string& label : out.targets_missed)
+      std::cerr << "error: accuracy: the target was not met in run " << label << " (see " << path << ")\n";
+    return kExitUnconverged;
+  }
   if (!out.all_completed) {
     std::cerr << "error: a run stopped early (see " << path << ")\n";
     return kExitUnconverged;

@@ -1,5 +1,7 @@
 #include "dynamic_sweep.hpp"
 
+#include "accuracy_run.hpp"
+#include "dynamic_accuracy.hpp"
 #include "dynamic_limits.hpp"
 #include "dynamic_run.hpp"
 #include "errors.hpp"
@@ -25,7 +27,8 @@ DynamicSweepOutcome simulate_dynamic_sweep(const Case& c, bool quiet) {
   const std::vector<json> units = table::run_distributed(
       points.size(),
       [&](std::size_t k) -> json {
-        const DynamicOutcome run = simulate_dynamic(points[k].run, false);
+        // Each run with its error estimate and target where the case asks (dynamic_accuracy.hpp).
+        const DynamicOutcome run = simulate_dynamic_with_accuracy(points[k].run, false);
         return {{"summary", run.summary},
                 {"timeseries", run.timeseries},
                 {"completed", run.result.completed},
@@ -67,6 +70,7 @@ DynamicSweepOutcome simulate_dynamic_sweep(const Case& c, bool quiet) {
     out.texts.push_back(u["timeseries"].get<std::string>());
     out.labels.push_back(points[k].label);
     out.all_completed = out.all_completed && u["completed"].get<bool>();
+    if (accuracy_target_missed(u["summary"])) out.targets_missed.push_back(points[k].label);
     out.interrupted = u["interrupted"].get<bool>();
     if (out.input_error.empty()) out.input_error = u["input_error"].get<std::string>();
   }

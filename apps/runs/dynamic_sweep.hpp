@@ -23,6 +23,7 @@ struct DynamicSweepOutcome {
   bool interrupted = false;         ///< a signal stopped the sweep (the runs before it are kept)
   std::string input_error;          ///< the first run's "key: reason" that stopped on its input
   bool limit_error = false;         ///< a run's result limits hold an error (summary "limits", with "run")
+  std::vector<std::string> targets_missed;  ///< labels of the runs whose accuracy target was not met
   std::size_t planned = 0;          ///< runs of the sweep
 };
 

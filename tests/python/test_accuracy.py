@@ -63,3 +63,13 @@ def test_a_dynamic_run_carries_its_peaks_and_their_estimate():
     assert q["max_normal_force"]["value"] == r["peaks"]["max_normal_force"]
     assert [g["nx"] for g in r["accuracy"]["grids"]] == [24, 12] or len(r["accuracy"]["grids"]) == 3
     assert "contact_time" in q and q["contact_time"]["error_estimate"] > 0
+
+
+def test_a_sweep_run_that_misses_its_target_raises_accuracy_error():
+    case = example("ball-impact-speeds")
+    case["grid"]["nx"] = case["grid"]["ny"] = 16
+    case["accuracy"] = {"target": 1e-7, "max_elements": 1024}
+    with pytest.raises(dyncontact.AccuracyError) as e:
+        dyncontact.solve(case)
+    runs = e.value.result["runs"]
+    assert len(runs) == 3 and all(r["accuracy"]["met"] is False for r in runs)
