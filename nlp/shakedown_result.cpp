@@ -15,8 +15,8 @@ const char* to_string(ShakedownStatus status) {
 const char* to_string(ShakedownVerdict verdict) {
   switch (verdict) {
     case ShakedownVerdict::elastic: return "elastic";
-    case ShakedownVerdict::elastic_shakedown: return "elastic_shakedown";
-    case ShakedownVerdict::beyond_shakedown: return "beyond_shakedown";
+    case ShakedownVerdict::elastic_shakedown: return "shakedown";  // CASES.md names
+    case ShakedownVerdict::beyond_shakedown: return "beyond";
     case ShakedownVerdict::undetermined: return "undetermined";
   }
   return "?";

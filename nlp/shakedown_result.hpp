@@ -21,8 +21,8 @@ enum class ShakedownStatus {
 /// The load as given (load factor 1) against the two limits.
 enum class ShakedownVerdict {
   elastic,            ///< "elastic": lambda_e >= 1, no yield at all
-  elastic_shakedown,  ///< "elastic_shakedown": lambda_e < 1 <= lambda (certified lower bound >= 1)
-  beyond_shakedown,   ///< "beyond_shakedown": lambda < 1 (certified upper bound < 1): cyclic plasticity or ratchetting
+  elastic_shakedown,  ///< "shakedown": lambda_e < 1 <= lambda (certified lower bound >= 1)
+  beyond_shakedown,   ///< "beyond": lambda < 1 (certified upper bound < 1): cyclic plasticity or ratchetting
   undetermined,       ///< "undetermined": the certified bracket contains 1, or the solve failed
 };
 
