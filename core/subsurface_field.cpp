@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 #include <Eigen/Dense>
+#include <fftw3.h>
 
 #include "fft_planning.hpp"
 #include "interrupt.hpp"
@@ -14,8 +14,14 @@
 namespace dc {
 namespace {
 /// The zero-padded box along an axis of n elements: the kernel's 2n - 1 offsets fit, so the
-/// circular convolution is the linear one on the grid.
-int subsurface_box_length(int n) { return n == 1 ? 1 : fft_fast_size(2 * n - 1); }
+/// circular convolution is the linear one on the grid; even, so that its cosine and sine
+/// transforms have whole half-lengths.
+int subsurface_box_length(int n) {
+  if (n == 1) return 1;
+  int m = fft_fast_size(2 * n - 1);
+  while (m % 2 != 0) m = fft_fast_size(m + 1);
+  return m;
+}
 
 /// Components a 2-D (plane strain) field has; the others are zero.
 bool plane_strain_component(int c) { return c != kUy && c != kSxy && c != kSyz; }
@@ -37,113 +43,172 @@ SubsurfaceField::SubsurfaceField(const Grid& grid, const Elastic& material, Body
       reference_length_(options.reference_length > 0.0 ? options.reference_length : grid.nx * grid.dx),
       coefficients_(grid, material, side, options) {
   const int mx = subsurface_box_length(grid.nx), my = grid.dimension == 2 ? 1 : subsurface_box_length(grid.ny);
-  kernel_fft_ = std::make_unique<PaddedFft>(2 * grid.nx - 1, 2 * grid.ny - 1, mx, my);
-  field_fft_ = std::make_unique<PaddedFft>(grid.nx, grid.ny, mx, my, 1);
-  const std::size_t spectrum = 2 * field_fft_->spectrum_size();
-  traction_spectra_.assign(3 * spectrum, 0.0);
-  sums_.assign(kFieldComponents * spectrum, 0.0);
-  table_.nx = grid.nx;
-  table_.ny = grid.ny;
-  table_.values.assign(static_cast<std::size_t>(2 * grid.nx - 1) * static_cast<std::size_t>(2 * grid.ny - 1), 0.0);
+  field_fft_ = std::make_unique<PaddedFft>(grid.nx, grid.ny, mx, my, 3);
+  quadrant_.assign(grid.size(), 0.0);
+  // Transform lengths along an axis of box m: cosine (REDFT00) m/2 + 1 values (offsets 0..m/2),
+  // sine (RODFT00) m/2 - 1 (offsets 1..m/2-1); a box of 1 is no transform (odd tables vanish).
+  const auto lengths = [](int m, int* half) {
+    half[0] = m == 1 ? 1 : m / 2 + 1;
+    half[1] = m == 1 ? 0 : m / 2 - 1;
+  };
+  lengths(mx, half_x_);
+  lengths(my, half_y_);
+  const std::size_t buffer = static_cast<std::size_t>(half_x_[0]) * half_y_[0];
+  kernel_in_ = fftw_alloc_real(buffer);
+  kernel_out_ = fftw_alloc_real(buffer);
+  if (!kernel_in_ || !kernel_out_) {
+    fftw_free(kernel_in_);
+    fftw_free(kernel_out_);
+    throw std::bad_alloc();
+  }
+  std::fill(kernel_in_, kernel_in_ + buffer, 0.0);
+  std::lock_guard<std::mutex> lock(fft_planner_mutex());
+  fftw_plan_with_nthreads(fft_threads_for(static_cast<std::size_t>(mx) * my / 4));
+  for (int odd_y = 0; odd_y < 2; ++odd_y)
+    for (int odd_x = 0; odd_x < 2; ++odd_x) {
+      const int hx = half_x_[odd_x], hy = half_y_[odd_y];
+      if (hx == 0 || hy == 0 || (hx == 1 && hy == 1)) continue;  // zero, or no transform (a copy)
+      int n[2], rank = 0;
+      fftw_r2r_kind kind[2];
+      if (hy > 1) n[rank] = hy, kind[rank++] = odd_y ? FFTW_RODFT00 : FFTW_REDFT00;  // y slowest
+      if (hx > 1) n[rank] = hx, kind[rank++] = odd_x ? FFTW_RODFT00 : FFTW_REDFT00;
+      plans_[odd_x + 2 * odd_y] = fftw_plan_r2r(rank, n, kernel_in_, kernel_out_, kind, FFTW_ESTIMATE);
+      if (!plans_[odd_x + 2 * odd_y]) throw std::runtime_error("FFTW could not plan a subsurface kernel transform");
+    }
 }
 
-SubsurfaceField::~SubsurfaceField() = default;
+SubsurfaceField::~SubsurfaceField() {
+  {
+    std::lock_guard<std::mutex> lock(fft_planner_mutex());
+    for (void* plan : plans_)
+      if (plan) fftw_destroy_plan(static_cast<fftw_plan>(plan));
+  }
+  fftw_free(kernel_in_);
+  fftw_free(kernel_out_);
+}
 
-SubsurfaceResult SubsurfaceField::compute(const SurfaceTractions& t, const std::vector<double>& depths,
-                                          SubsurfaceMethod method) {
+void SubsurfaceField::set_tractions(const SurfaceTractions& t) {
   const std::size_t N = grid_.size();
   for (const std::vector<double>* v : {&t.p, &t.tau_x, &t.tau_y})
     if (!v->empty() && v->size() != N)
       throw std::invalid_argument("subsurface field: a traction field must have one value per element");
   if (grid_.dimension == 2 && has_nonzero(t.tau_y))
     throw std::invalid_argument("subsurface field: 2-D problems have no tau_y");
+  // By Axis: kX, kY, kZ. Copies only of the fields that are not zero.
+  const std::vector<double>* fields[3] = {&t.tau_x, &t.tau_y, &t.p};
+  for (int load = 0; load < 3; ++load) {
+    active_[load] = has_nonzero(*fields[load]);
+    if (!active_[load]) continue;
+    tractions_[load] = *fields[load];
+    field_fft_->forward_into(fields[load]->data(), load);  // the spectra, once
+  }
+  has_tractions_ = true;
+}
+
+void SubsurfaceField::compute_depth(double depth, double* out, SubsurfaceMethod method) {
+  if (!has_tractions_) throw std::logic_error("subsurface field: set_tractions first");
+  if (!(depth >= 0.0) || !std::isfinite(depth)) throw std::invalid_argument("subsurface field: depths must be >= 0");
+  if (method == SubsurfaceMethod::direct) {
+    direct_depth(depth, out);
+  } else {
+    coefficients_.set_depth(depth);
+    fft_depth(out);
+  }
+}
+
+SubsurfaceResult SubsurfaceField::compute(const SurfaceTractions& t, const std::vector<double>& depths,
+                                          SubsurfaceMethod method) {
   for (double d : depths)
     if (!(d >= 0.0) || !std::isfinite(d)) throw std::invalid_argument("subsurface field: depths must be >= 0");
-  const bool active[3] = {has_nonzero(t.tau_x), has_nonzero(t.tau_y), has_nonzero(t.p)};  // by Axis: kX, kY, kZ
-
+  set_tractions(t);
+  const std::size_t per_depth = kFieldComponents * grid_.size();
   SubsurfaceResult r;
   r.grid = grid_;
   r.depths = depths;
-  r.values.assign(depths.size() * kFieldComponents * N, 0.0);
-  if (method == SubsurfaceMethod::fft) {
-    // The tractions' spectra, once: times exp(+2 pi i (kx (nx-1)/mx + ky (ny-1)/my)), which
-    // undoes the kernels' shift by (nx - 1, ny - 1) (they start at offset -(n - 1)).
-    const int mx = field_fft_->mx(), my = field_fft_->my(), mxc = mx / 2 + 1;
-    const std::size_t ncplx = field_fft_->spectrum_size();
-    const std::vector<double>* fields[3] = {&t.tau_x, &t.tau_y, &t.p};
-    for (int load = 0; load < 3; ++load) {
-      if (!active[load]) continue;
-      field_fft_->forward_into(fields[load]->data(), 0);
-      const double* in = field_fft_->stored(0);
-      double* out = traction_spectra_.data() + 2 * ncplx * load;
-      for (int kx = 0; kx < mxc; ++kx)
-        for (int ky = 0; ky < my; ++ky) {
-          // Reduced exactly in integers first: cos and sin stay at round-off.
-          const long long turns_x = static_cast<long long>(kx) * (grid_.nx - 1) % mx,
-                          turns_y = static_cast<long long>(ky) * (grid_.ny - 1) % my;
-          const double phase = 2.0 * std::numbers::pi *
-                               (static_cast<double>(turns_x) / mx + static_cast<double>(turns_y) / my);
-          const double c = std::cos(phase), s = std::sin(phase);
-          const std::size_t e = static_cast<std::size_t>(kx) * my + ky;
-          out[2 * e] = c * in[2 * e] - s * in[2 * e + 1];
-          out[2 * e + 1] = s * in[2 * e] + c * in[2 * e + 1];
-        }
-    }
-  }
+  r.values.resize(depths.size() * per_depth);
   for (std::size_t k = 0; k < depths.size(); ++k) {
     throw_if_interrupted();
-    double* out = r.values.data() + k * kFieldComponents * N;
-    if (method == SubsurfaceMethod::direct) {
-      direct_depth(t, active, depths[k], out);
-    } else {
-      coefficients_.set_depth(depths[k]);
-      fft_depth(active, out);
-    }
+    compute_depth(depths[k], r.values.data() + k * per_depth, method);
   }
   return r;
 }
 
-void SubsurfaceField::fft_depth(const bool active[3], double* out) {
+bool SubsurfaceField::transform_kernel(int c, Axis load, bool odd_x, bool odd_y) {
+  const int hx = half_x_[odd_x], hy = half_y_[odd_y];
+  if (hx == 0 || hy == 0) return false;
+  coefficients_.fill_quadrant(c, load, quadrant_.data(), grid_.nx);
+  // Cosine transforms take offsets from 0, sine transforms from 1 (the odd table is 0 at 0).
+  const int sx = odd_x ? 1 : 0, sy = odd_y ? 1 : 0;
+  std::fill(kernel_in_, kernel_in_ + static_cast<std::size_t>(hx) * hy, 0.0);
+  for (int dj = sy; dj < grid_.ny; ++dj)
+    for (int di = sx; di < grid_.nx; ++di)
+      kernel_in_[(di - sx) + static_cast<std::size_t>(hx) * (dj - sy)] = quadrant_[grid_.index(di, dj)];
+  if (void* plan = plans_[odd_x + 2 * odd_y])
+    fftw_execute(static_cast<fftw_plan>(plan));
+  else
+    kernel_out_[0] = kernel_in_[0];  // a single even value
+  return true;
+}
+
+void SubsurfaceField::fft_depth(double* out) {
   const std::size_t N = grid_.size(), ncplx = field_fft_->spectrum_size();
-  const double norm = 1.0 / (static_cast<double>(field_fft_->mx()) * field_fft_->my());
-  std::fill(sums_.begin(), sums_.end(), 0.0);
-  for (Axis load : {kX, kY, kZ}) {
-    if (!active[load]) continue;
-    const double* traction = traction_spectra_.data() + 2 * ncplx * load;
-    for (int c = 0; c < kFieldComponents; ++c) {
-      if (grid_.dimension == 2 && !plane_strain_component(c)) continue;
-      coefficients_.fill(c, load, table_);
-      kernel_fft_->forward(table_.values.data());
-      const double* kernel = kernel_fft_->spectrum();
-      double* sum = sums_.data() + 2 * ncplx * c;
-      for (std::size_t e = 0; e < ncplx; ++e) {
-        const double kr = kernel[2 * e], ki = kernel[2 * e + 1], tr = traction[2 * e], ti = traction[2 * e + 1];
-        sum[2 * e] += kr * tr - ki * ti;
-        sum[2 * e + 1] += kr * ti + ki * tr;
-      }
-    }
-  }
+  const int mx = field_fft_->mx(), my = field_fft_->my(), mxc = mx / 2 + 1;
+  const double norm = 1.0 / (static_cast<double>(mx) * my);
+  double* sum = field_fft_->spectrum();
   for (int c = 0; c < kFieldComponents; ++c) {
     double* field = out + static_cast<std::size_t>(c) * N;
     if (grid_.dimension == 2 && !plane_strain_component(c)) {
       std::fill(field, field + N, 0.0);
       continue;
     }
-    std::copy(sums_.begin() + 2 * ncplx * c, sums_.begin() + 2 * ncplx * (c + 1), field_fft_->spectrum());
+    // The sum over the loads of kernel spectrum x traction spectrum, straight in the inverse's buffer.
+    std::fill(sum, sum + 2 * ncplx, 0.0);
+    for (Axis load : {kX, kY, kZ}) {
+      if (!active_[load]) continue;
+      const bool odd_x = SubsurfaceCoefficients::parity_x(c, load) < 0;
+      const bool odd_y = SubsurfaceCoefficients::parity_y(c, load) < 0;
+      if (!transform_kernel(c, load, odd_x, odd_y)) continue;
+      // The wrapped table's DFT from its real transform Y: Y (even-even), -i Y (one axis odd),
+      // -Y (both odd); along y the half beyond my/2 mirrored (with a sign when odd).
+      const double* traction = field_fft_->stored(load);
+      const int hx = half_x_[odd_x], hy = half_y_[odd_y];
+      const int odd_axes = static_cast<int>(odd_x) + static_cast<int>(odd_y);
+      for (int kx = 0; kx < mxc; ++kx) {
+        const int ix = odd_x ? kx - 1 : kx;
+        if (ix < 0 || ix >= hx) continue;  // the sine transform's zeros at kx = 0 and mx/2
+        double* row = sum + 2 * static_cast<std::size_t>(kx) * my;
+        const double* trow = traction + 2 * static_cast<std::size_t>(kx) * my;
+        for (int ky = 0; ky < my; ++ky) {
+          const bool upper = 2 * ky > my;
+          const int k2 = upper ? my - ky : ky, iy = odd_y ? k2 - 1 : k2;
+          if (iy < 0 || iy >= hy) continue;
+          const double y = (odd_y && upper ? -norm : norm) * kernel_out_[ix + static_cast<std::size_t>(hx) * iy];
+          const double tr = trow[2 * ky], ti = trow[2 * ky + 1];
+          if (odd_axes == 0) {
+            row[2 * ky] += y * tr;
+            row[2 * ky + 1] += y * ti;
+          } else if (odd_axes == 1) {
+            row[2 * ky] += y * ti;
+            row[2 * ky + 1] -= y * tr;
+          } else {
+            row[2 * ky] -= y * tr;
+            row[2 * ky + 1] -= y * ti;
+          }
+        }
+      }
+    }
     field_fft_->inverse(field);
-    for (std::size_t e = 0; e < N; ++e) field[e] *= norm;
   }
 }
 
-void SubsurfaceField::direct_depth(const SurfaceTractions& t, const bool active[3], double depth, double* out) const {
+void SubsurfaceField::direct_depth(double depth, double* out) const {
   const std::size_t N = grid_.size();
   std::fill(out, out + kFieldComponents * N, 0.0);
-  const auto value = [](const std::vector<double>& v, std::size_t e, bool on) { return on ? v[e] : 0.0; };
+  const auto value = [&](int load, std::size_t e) { return active_[load] ? tractions_[load][e] : 0.0; };
   for (int js = 0; js < grid_.ny; ++js)
     for (int is = 0; is < grid_.nx; ++is) {
       const std::size_t es = grid_.index(is, js);
-      const double tx = value(t.tau_x, es, active[kX]), ty = value(t.tau_y, es, active[kY]),
-                   p = value(t.p, es, active[kZ]);
+      const double tx = value(kX, es), ty = value(kY, es), p = value(kZ, es);
       if (tx == 0.0 && ty == 0.0 && p == 0.0) continue;
       for (int j = 0; j < grid_.ny; ++j)
         for (int i = 0; i < grid_.nx; ++i) {

@@ -6,9 +6,12 @@
 //   f_c(i, j, d) = sum over elements (i', j') and traction components t of
 //                  K_ct(i - i', j - j'; d) t(i', j'):
 // direct summation of the closed forms (small grids, tests), and per depth the zero-padded FFT
-// convolution of the exact coefficients (padded_fft.hpp: the kernel tables, shifted to start at
-// offset 0, and the tractions transformed on the same box; the shift undone on the tractions'
-// spectra once). Plans and buffers are made by the constructor.
+// convolution of the exact coefficients: the tractions transformed once (padded_fft.hpp), each
+// kernel table, even or odd in each offset, by a real cosine or sine transform of its quadrant
+// (FFTW's REDFT00 / RODFT00 on half the box: the DFT of the wrapped table, real or imaginary,
+// at a quarter of a complex transform's work); per component the sum over the loads of the
+// products, in the inverse transform's own buffer, back by PaddedFft::inverse.
+// Plans and buffers are made by the constructor.
 // Derived measures per point: von Mises sqrt(3 J2), Tresca's maximum shear (sigma_1 - sigma_3)/2
 // from the principal stresses, and the hydrostatic stress sigma_kk / 3; and their extremes.
 #include <cstddef>
@@ -53,23 +56,37 @@ class SubsurfaceField {
   SubsurfaceField(const SubsurfaceField&) = delete;
   SubsurfaceField& operator=(const SubsurfaceField&) = delete;
 
-  /// The field at every element centre at each depth (>= 0, into this body). Not thread-safe.
+  /// The field at every element centre at each depth (>= 0, into this body): set_tractions,
+  /// then compute_depth for each depth into the result. Not thread-safe.
   SubsurfaceResult compute(const SurfaceTractions& tractions, const std::vector<double>& depths,
                            SubsurfaceMethod method = SubsurfaceMethod::fft);
 
+  /// One depth at a time (a caller that keeps one depth's field, not all): the tractions (their
+  /// spectra made here, once), then the nine components at `depth` into out[c * N + e].
+  void set_tractions(const SurfaceTractions& tractions);
+  void compute_depth(double depth, double* out, SubsurfaceMethod method = SubsurfaceMethod::fft);
+
  private:
-  void fft_depth(const bool active[3], double* out);
-  void direct_depth(const SurfaceTractions& t, const bool active[3], double depth, double* out) const;
+  void fft_depth(double* out);
+  void direct_depth(double depth, double* out) const;
+
+  /// The kernel's transform for parities (odd_x, odd_y) into kernel_out_; false if it is zero.
+  bool transform_kernel(int component, Axis load, bool odd_x, bool odd_y);
 
   Grid grid_;
   Elastic material_;
   BodySide side_;
   double reference_length_;
   SubsurfaceCoefficients coefficients_;
-  KernelTable table_;
-  std::unique_ptr<PaddedFft> kernel_fft_, field_fft_;
-  std::vector<double> traction_spectra_;  ///< 3 spectra (tau_x, tau_y, p), shift undone
-  std::vector<double> sums_;              ///< 9 spectra being summed
+  bool has_tractions_ = false;
+  bool active_[3] = {false, false, false};  ///< by Axis: tau_x, tau_y, p not zero
+  std::vector<double> tractions_[3];        ///< the active ones (the direct path)
+  std::unique_ptr<PaddedFft> field_fft_;    ///< the tractions' spectra (3 stored) and the inverse
+  std::vector<double> quadrant_;          ///< one table's quadrant, nx x ny
+  double* kernel_in_ = nullptr;           ///< real transform buffers, (mx/2 + 1) x (my/2 + 1)
+  double* kernel_out_ = nullptr;
+  void* plans_[4] = {nullptr, nullptr, nullptr, nullptr};  ///< by odd_x + 2 odd_y
+  int half_x_[2] = {0, 0}, half_y_[2] = {0, 0};            ///< transform lengths: even, odd
 };
 
 /// Von Mises, Tresca (maximum shear) and hydrostatic stress of one point's stresses.

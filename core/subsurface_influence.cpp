@@ -181,16 +181,6 @@ CornerRecipe recipe_2d(double G, double n, double d, int c, Axis load) {
 /// The factor of the body's traction component `load` in the half-space frame's load.
 double load_sign(BodySide side, Axis load) { return side == BodySide::base && load != kZ ? -1.0 : 1.0; }
 
-/// Parity of the (component, load) table in x and in y: -1 when odd.
-int parity_x(int c, Axis load) {
-  const bool odd_c = c == kUx || c == kSxy || c == kSxz;
-  return (odd_c != (load == kX)) ? -1 : 1;
-}
-int parity_y(int c, Axis load) {
-  const bool odd_c = c == kUy || c == kSxy || c == kSyz;
-  return (odd_c != (load == kY)) ? -1 : 1;
-}
-
 void check_material(const Elastic& m) {
   if (m.rigid || !(m.G > 0.0) || !(m.nu > -1.0 && m.nu < 0.5))
     throw std::invalid_argument("subsurface field: needs an elastic body (G > 0, -1 < nu < 0.5)");
@@ -294,30 +284,51 @@ void SubsurfaceCoefficients::set_depth(double depth) {
     }
 }
 
-void SubsurfaceCoefficients::fill(int c, Axis load, KernelTable& table) const {
+int SubsurfaceCoefficients::parity_x(int c, Axis load) {
+  const bool odd_c = c == kUx || c == kSxy || c == kSxz;
+  return (odd_c != (load == kX)) ? -1 : 1;
+}
+int SubsurfaceCoefficients::parity_y(int c, Axis load) {
+  const bool odd_c = c == kUy || c == kSxy || c == kSyz;
+  return (odd_c != (load == kY)) ? -1 : 1;
+}
+
+void SubsurfaceCoefficients::fill_quadrant(int c, Axis load, double* out, int stride) const {
   if (depth_ < 0.0) throw std::logic_error("subsurface coefficients: set_depth first");
+  const int nx = grid_.nx, ny = grid_.ny;
+  const bool two_d = grid_.dimension == 2;
+  const CornerRecipe r = two_d ? recipe_2d(material_.G, material_.nu, depth_, c, load)
+                               : recipe_3d(material_.G, material_.nu, depth_, c, load);
+  const double sign = global_sign(side_, c) * load_sign(side_, load);
+  const std::size_t plane = static_cast<std::size_t>(cx_) * cy_;
+  for (int dj = 0; dj < ny; ++dj) {
+    double* row = out + static_cast<std::size_t>(stride) * dj;
+    for (int di = 0; di < nx; ++di) row[di] = 0.0;
+    for (int t = 0; t < r.count; ++t) {
+      const double* F = corners_.data() + r.terms[t].fn * plane;
+      const double w = sign * r.terms[t].coeff;
+      if (two_d) {
+        for (int di = 0; di < nx; ++di) row[di] += w * (F[di + 1] - F[di]);
+      } else {
+        const double* top = F + static_cast<std::size_t>(cx_) * (dj + 1);
+        const double* bottom = F + static_cast<std::size_t>(cx_) * dj;
+        for (int di = 0; di < nx; ++di) row[di] += w * (top[di + 1] - top[di] - bottom[di + 1] + bottom[di]);
+      }
+    }
+  }
+}
+
+void SubsurfaceCoefficients::fill(int c, Axis load, KernelTable& table) const {
   const int nx = grid_.nx, ny = grid_.ny;
   table.nx = nx;
   table.ny = ny;
   table.values.resize(static_cast<std::size_t>(2 * nx - 1) * static_cast<std::size_t>(2 * ny - 1));
-  const bool two_d = grid_.dimension == 2;
-  const CornerRecipe r = two_d ? recipe_2d(material_.G, material_.nu, depth_, c, load)
-                         : recipe_3d(material_.G, material_.nu, depth_, c, load);
-  const double sign = global_sign(side_, c) * load_sign(side_, load);
+  // The quadrant straight into its place (offsets di, dj >= 0), then mirrored by parity.
+  fill_quadrant(c, load, &table.at(0, 0), 2 * nx - 1);
   const double px = parity_x(c, load), py = parity_y(c, load);
-  const std::size_t plane = static_cast<std::size_t>(cx_) * cy_;
   for (int dj = 0; dj < ny; ++dj)
     for (int di = 0; di < nx; ++di) {
-      double value = 0.0;
-      for (int t = 0; t < r.count; ++t) {
-        const double* F = corners_.data() + r.terms[t].fn * plane;
-        const double sum = two_d ? F[di + 1] - F[di]
-                                 : F[di + 1 + cx_ * (dj + 1)] - F[di + cx_ * (dj + 1)] -
-                                       F[di + 1 + cx_ * dj] + F[di + cx_ * dj];
-        value += r.terms[t].coeff * sum;
-      }
-      value *= sign;
-      table.at(di, dj) = value;
+      const double value = table.at(di, dj);
       if (di > 0) table.at(-di, dj) = px * value;
       if (dj > 0) table.at(di, -dj) = py * value;
       if (di > 0 && dj > 0) table.at(-di, -dj) = px * py * value;

@@ -104,6 +104,12 @@ class SubsurfaceCoefficients {
   /// `load` (kX: tau_x, kY: tau_y, kZ: p) at the current depth. 2-D: loads kX and kZ;
   /// components kUy, kSxy, kSyz are zero.
   void fill(int component, Axis load, KernelTable& table) const;
+  /// The quadrant di, dj >= 0 of the same table: out[di + stride * dj], di < nx, dj < ny.
+  void fill_quadrant(int component, Axis load, double* out, int stride) const;
+  /// The table's parity in di (x) and dj (y): +1 even, -1 odd (an odd number of x indices among
+  /// the component's and the load's: u_x, sigma_xy, sigma_xz and tau_x are odd in x).
+  static int parity_x(int component, Axis load);
+  static int parity_y(int component, Axis load);
   const Grid& grid() const { return grid_; }
 
  private:

@@ -325,3 +325,40 @@ TEST(SubsurfaceInfluence, SurfaceTractionsAndEdgesAreFinite) {
 }
 
 }  // namespace subsurface_influence_tests
+
+namespace subsurface_influence_tests {
+// The tables of a grid (one quadrant evaluated, the rest by parity) against the closed form of
+// one element at every offset, in both bodies, 3-D and 2-D.
+TEST(SubsurfaceInfluence, TablesAreTheSingleElementField) {
+  const Elastic m = Elastic::from_G_nu(1.7, 0.33);
+  for (int dim : {3, 2}) {
+    const dc::Grid grid = dim == 3 ? dc::Grid::make(3, 6, 5, -1.0, 2.0, -0.5, 1.5)
+                                   : dc::Grid::make(2, 9, 1, -1.0, 2.0, 0.0, 1.0);
+    const double L = grid.nx * grid.dx;
+    for (dc::BodySide side : {dc::BodySide::body, dc::BodySide::base}) {
+      dc::SubsurfaceCoefficients coefficients(grid, m, side);
+      for (double depth : {0.0, 0.07, 0.9}) {
+        coefficients.set_depth(depth);
+        for (dc::Axis load : {dc::kX, dc::kY, dc::kZ}) {
+          if (dim == 2 && load == dc::kY) continue;
+          const double t[3] = {load == dc::kX ? 1.0 : 0.0, load == dc::kY ? 1.0 : 0.0, load == dc::kZ ? 1.0 : 0.0};
+          for (int c = 0; c < dc::kFieldComponents; ++c) {
+            dc::KernelTable table;
+            coefficients.fill(c, load, table);
+            for (int dj = -(grid.ny - 1); dj <= grid.ny - 1; ++dj)
+              for (int di = -(grid.nx - 1); di <= grid.nx - 1; ++di) {
+                const FieldValues f =
+                    dim == 3 ? dc::rectangle_field(m, side, grid.dx, grid.dy, t[0], t[1], t[2], di * grid.dx,
+                                                   dj * grid.dy, depth)
+                             : dc::strip_field(m, side, grid.dx, t[0], t[2], di * grid.dx, depth, L);
+                EXPECT_NEAR(table.at(di, dj), f[c], 1e-13 * (1.0 + std::abs(f[c])))
+                    << dim << "-D component " << c << " load " << load << " offset " << di << ", " << dj
+                    << " depth " << depth;
+              }
+          }
+        }
+      }
+    }
+  }
+}
+}  // namespace subsurface_influence_tests
