@@ -119,8 +119,25 @@ TEST(SubsurfaceField, FftEqualsDirectOnNonSquareGrid) {
   }
 }
 
+// Grids one element wide (a box of 1 along that axis: no transform there) and a single element.
+TEST(SubsurfaceField, FftEqualsDirectOnThinGrids) {
+  const Elastic m = Elastic::from_G_nu(1.0, 0.25);
+  for (const Grid& grid : {Grid::make(3, 1, 6, 0.0, 0.5, 0.0, 3.0), Grid::make(3, 7, 1, 0.0, 2.1, 0.0, 0.4),
+                           Grid::make(3, 1, 1, 0.0, 1.0, 0.0, 1.0), Grid::make(2, 1, 1, 0.0, 1.0, 0.0, 1.0)}) {
+    dc::SurfaceTractions t;
+    t.p.assign(grid.size(), 1.0);
+    t.tau_x.assign(grid.size(), 0.3);
+    if (grid.dimension == 3) t.tau_y.assign(grid.size(), -0.2);
+    for (std::size_t e = 0; e < grid.size(); ++e) t.p[e] += 0.1 * static_cast<double>(e);
+    dc::SubsurfaceField field(grid, m, BodySide::base);
+    const std::vector<double> depths = {0.0, 0.3};
+    const dc::SubsurfaceResult a = field.compute(t, depths), b = field.compute(t, depths, SubsurfaceMethod::direct);
+    for (std::size_t k = 0; k < a.values.size(); ++k) EXPECT_NEAR(a.values[k], b.values[k], 1e-13) << k;
+  }
+}
+
 // Hertz's sphere, nu = 0.3, on 65 x 65 elements over 3a x 3a (dx = 0.046 a): the axis stresses
-// against Johnson 3.45 within 1 % of p0 below z = 0.2 a, the largest shear (Tresca) 0.31 p0 at
+// against Johnson 3.45 within 0.1 % of p0 below z = 0.2 a (2e-4 measured), the largest shear (Tresca) 0.31 p0 at
 // z = 0.48 a, and the surface radial stress just outside r = a ((1 - 2nu) p0 a^2 / (3 r^2)).
 TEST(SubsurfaceField, HertzSphere) {
   const double nu = 0.3;
@@ -140,9 +157,9 @@ TEST(SubsurfaceField, HertzSphere) {
     const double sz = r.at(k, dc::kSzz, ic, ic), sx = r.at(k, dc::kSxx, ic, ic), sy = r.at(k, dc::kSyy, ic, ic);
     worst_z = std::max(worst_z, std::abs(sz - e.sigma_z) / s.p0);
     worst_r = std::max(worst_r, std::max(std::abs(sx - e.sigma_r), std::abs(sy - e.sigma_r)) / s.p0);
-    EXPECT_NEAR(sz / s.p0, e.sigma_z / s.p0, 0.01) << "z/a = " << depths[k] / s.a;
-    EXPECT_NEAR(sx / s.p0, e.sigma_r / s.p0, 0.01) << "z/a = " << depths[k] / s.a;
-    EXPECT_NEAR(sy / s.p0, e.sigma_r / s.p0, 0.01) << "z/a = " << depths[k] / s.a;
+    EXPECT_NEAR(sz / s.p0, e.sigma_z / s.p0, 1e-3) << "z/a = " << depths[k] / s.a;
+    EXPECT_NEAR(sx / s.p0, e.sigma_r / s.p0, 1e-3) << "z/a = " << depths[k] / s.a;
+    EXPECT_NEAR(sy / s.p0, e.sigma_r / s.p0, 1e-3) << "z/a = " << depths[k] / s.a;
     EXPECT_NEAR(r.at(k, dc::kSxz, ic, ic) / s.p0, 0.0, 1e-12);
   }
   std::printf("[ info ] Hertz sphere axis, z >= 0.2 a: |sigma_z error| <= %.2e p0, |sigma_r error| <= %.2e p0\n",
@@ -170,7 +187,7 @@ TEST(SubsurfaceField, HertzSphere) {
 }
 
 // The line contact (plane strain, nu = 0.3) on 801 strips over [-4a, 4a] (dx = 0.01 a): the axis
-// stresses within 0.5 % of p0 below z = 0.05 a ([J] 4.46); the extremes of tau_1, tau_xz and
+// stresses within 0.02 % of p0 below z = 0.05 a ([J] 4.46; 3e-5 measured); the extremes of tau_1, tau_xz and
 // von Mises ([J] 4.2 and 6.2: 0.30 p0 at 0.78 a; +-0.25 p0 at z = 0.5 a, x = +-0.87 a; first
 // yield at p0 = 1.79 Y (von Mises, z = 0.70 a) and 1.67 Y (Tresca)).
 TEST(SubsurfaceField, LineContact) {
@@ -191,7 +208,7 @@ TEST(SubsurfaceField, LineContact) {
     const double ex = std::abs(r.at(k, dc::kSxx, ic, 0) - e.sigma_xx) / s.p0;
     const double ey = std::abs(r.at(k, dc::kSyy, ic, 0) - nu * (e.sigma_xx + e.sigma_zz)) / s.p0;
     worst = std::max({worst, ez, ex, ey});
-    EXPECT_LT(std::max({ez, ex, ey}), 0.005) << "z/a = " << depths[k] / s.a;
+    EXPECT_LT(std::max({ez, ex, ey}), 2e-4) << "z/a = " << depths[k] / s.a;
   }
   std::printf("[ info ] line contact axis, z >= 0.05 a: largest error %.2e p0\n", worst);
   const dc::SubsurfaceMeasures mm = dc::subsurface_measures(r);
@@ -229,7 +246,7 @@ TEST(SubsurfaceField, LineContact) {
 }
 
 // Full sliding q = mu p on the line contact (801 strips over [-4a, 4a]): McEwen's field
-// ([J] 7.19) at points inside, within 0.5 % of p0 (1 % at z = 0.05 a); the largest von Mises
+// ([J] 7.19) at points inside, within 0.3 % of p0 (1.2e-3 measured, at the contact's edges); the largest von Mises
 // stress below the surface for mu = 0.2 and on it for mu = 0.4 ([J] 7.2: at mu ~ 0.3 it reaches
 // the surface).
 TEST(SubsurfaceField, LineContactSlidingMcEwen) {
@@ -253,7 +270,7 @@ TEST(SubsurfaceField, LineContactSlidingMcEwen) {
       const double x = s.grid.xc(i);
       const dc::closed_form::PlaneStresses n = dc::closed_form::mcewen_normal(x, depths[k], s.a, s.p0);
       const dc::closed_form::PlaneStresses q = dc::closed_form::mcewen_tangential(x, depths[k], s.a, mu * s.p0);
-      const double tol = depth_over_a[k] < 0.1 ? 0.01 : 0.005;
+      const double tol = 0.003;
       const double ex = std::abs(r.at(k, dc::kSxx, i, 0) - n.sigma_xx - q.sigma_xx) / s.p0;
       const double ez = std::abs(r.at(k, dc::kSzz, i, 0) - n.sigma_zz - q.sigma_zz) / s.p0;
       const double exz = std::abs(r.at(k, dc::kSxz, i, 0) - n.sigma_xz - q.sigma_xz) / s.p0;
@@ -387,8 +404,8 @@ TEST(SubsurfaceField, SliceEquilibrium2D) { check_equilibrium(2); }
 
 // ---------------------------------------------------------------------------------------------
 // Dissimilar materials: a steel ball (nu = 0.29) on a soft base (nu = 0.45), Hertz pressure and
-// a shear 0.2 p along +x on the body. On the axis each body's sigma_r follows Johnson 3.45 with
-// its own nu (sigma_z the same in both); at depth 0 both carry the traction in the global
+// a shear 0.2 p along +x on the body (65 x 65 elements over 3a x 3a). On the axis each body's
+// sigma_r follows Johnson 3.45 with its own nu within 0.1 % of p0 (sigma_z the same in both); at depth 0 both carry the traction in the global
 // frame: sigma_zz = -p, sigma_xz = -tau_x (the traction across the interface is continuous);
 // the base's displacements are downward and along -x.
 TEST(SubsurfaceField, DissimilarBodies) {
@@ -403,12 +420,13 @@ TEST(SubsurfaceField, DissimilarBodies) {
   for (std::size_t k = 1; k < depths.size(); ++k) {
     const auto eu = dc::closed_form::hertz_sphere_axis(depths[k], s.a, s.p0, body.nu);
     const auto el = dc::closed_form::hertz_sphere_axis(depths[k], s.a, s.p0, base.nu);
-    EXPECT_NEAR(ru.at(k, dc::kSxx, ic, ic) / s.p0, eu.sigma_r / s.p0, 0.01);
-    EXPECT_NEAR(rl.at(k, dc::kSxx, ic, ic) / s.p0, el.sigma_r / s.p0, 0.01);
-    EXPECT_NEAR(ru.at(k, dc::kSzz, ic, ic) / s.p0, eu.sigma_z / s.p0, 0.01);
-    EXPECT_NEAR(rl.at(k, dc::kSzz, ic, ic) / s.p0, el.sigma_z / s.p0, 0.01);
-    // The bodies differ as their nu does: more than the tolerance.
+    EXPECT_NEAR(ru.at(k, dc::kSxx, ic, ic) / s.p0, eu.sigma_r / s.p0, 1e-3);
+    EXPECT_NEAR(rl.at(k, dc::kSxx, ic, ic) / s.p0, el.sigma_r / s.p0, 1e-3);
+    EXPECT_NEAR(ru.at(k, dc::kSzz, ic, ic) / s.p0, eu.sigma_z / s.p0, 1e-3);
+    EXPECT_NEAR(rl.at(k, dc::kSzz, ic, ic) / s.p0, el.sigma_z / s.p0, 1e-3);
+    // The bodies differ as their nu does: far more than the tolerance.
     EXPECT_GT(std::abs(eu.sigma_r - el.sigma_r), 0.03 * s.p0);
+    EXPECT_GT(std::abs(ru.at(k, dc::kSxx, ic, ic) - rl.at(k, dc::kSxx, ic, ic)), 0.03 * s.p0);
     EXPECT_GT(ru.at(k, dc::kUz, ic, ic), 0.0);  // the body moves up
     EXPECT_LT(rl.at(k, dc::kUz, ic, ic), 0.0);  // the base down
   }
