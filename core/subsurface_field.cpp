@@ -73,7 +73,13 @@ SubsurfaceField::SubsurfaceField(const Grid& grid, const Elastic& material, Body
       if (hy > 1) n[rank] = hy, kind[rank++] = odd_y ? FFTW_RODFT00 : FFTW_REDFT00;  // y slowest
       if (hx > 1) n[rank] = hx, kind[rank++] = odd_x ? FFTW_RODFT00 : FFTW_REDFT00;
       plans_[odd_x + 2 * odd_y] = fftw_plan_r2r(rank, n, kernel_in_, kernel_out_, kind, FFTW_ESTIMATE);
-      if (!plans_[odd_x + 2 * odd_y]) throw std::runtime_error("FFTW could not plan a subsurface kernel transform");
+      if (!plans_[odd_x + 2 * odd_y]) {  // the destructor does not run for a throwing constructor
+        for (void* plan : plans_)
+          if (plan) fftw_destroy_plan(static_cast<fftw_plan>(plan));
+        fftw_free(kernel_in_);
+        fftw_free(kernel_out_);
+        throw std::runtime_error("FFTW could not plan a subsurface kernel transform");
+      }
     }
 }
 
