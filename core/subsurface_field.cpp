@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <Eigen/Dense>
 #include <fftw3.h>
 
 #include "fft_planning.hpp"
@@ -229,18 +228,16 @@ void SubsurfaceField::direct_depth(double depth, double* out) const {
     }
 }
 
+Voigt voigt_stress(const FieldValues& f) {
+  return Voigt{f[kSxx], f[kSyy], f[kSzz], f[kSyz], f[kSxz], f[kSxy]};
+}
+
 StressMeasures stress_measures(const FieldValues& f) {
-  const double sxx = f[kSxx], syy = f[kSyy], szz = f[kSzz], sxy = f[kSxy], sxz = f[kSxz], syz = f[kSyz];
+  const Voigt s = voigt_stress(f);
   StressMeasures m;
-  m.hydrostatic = (sxx + syy + szz) / 3.0;
-  m.von_mises = std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
-                          3.0 * (sxy * sxy + sxz * sxz + syz * syz));
-  Eigen::Matrix3d s;
-  s << sxx, sxy, sxz, sxy, syy, syz, sxz, syz, szz;
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-  eig.computeDirect(s, Eigen::EigenvaluesOnly);
-  const Eigen::Vector3d l = eig.eigenvalues();  // ascending
-  m.tresca = 0.5 * (l(2) - l(0));
+  m.hydrostatic = hydrostatic(s);
+  m.von_mises = std::sqrt(3.0) * sqrt_j2(s);
+  m.tresca = tresca_shear(s);
   return m;
 }
 

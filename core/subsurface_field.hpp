@@ -13,7 +13,8 @@
 // products, in the inverse transform's own buffer, back by PaddedFft::inverse.
 // Plans and buffers are made by the constructor.
 // Derived measures per point: von Mises sqrt(3 J2), Tresca's maximum shear (sigma_1 - sigma_3)/2
-// from the principal stresses, and the hydrostatic stress sigma_kk / 3; and their extremes.
+// from the principal stresses, and the hydrostatic stress sigma_kk / 3 (voigt_stress.hpp); and
+// their extremes.
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "influence.hpp"
 #include "material.hpp"
 #include "subsurface_influence.hpp"
+#include "voigt_stress.hpp"
 
 namespace dc {
 
@@ -89,7 +91,11 @@ class SubsurfaceField {
   int half_x_[2] = {0, 0}, half_y_[2] = {0, 0};            ///< transform lengths: even, odd
 };
 
-/// Von Mises, Tresca (maximum shear) and hydrostatic stress of one point's stresses.
+/// One point's six stresses as a Voigt array (voigt_stress.hpp: xx, yy, zz, yz, xz, xy).
+Voigt voigt_stress(const FieldValues& field);
+
+/// Von Mises sqrt(3 J2), Tresca's maximum shear (sigma_1 - sigma_3)/2 and the hydrostatic stress
+/// of one point (voigt_stress.hpp's invariants).
 struct StressMeasures {
   double von_mises = 0.0, tresca = 0.0, hydrostatic = 0.0;
 };
