@@ -18,8 +18,9 @@ double hertz_sphere_surface_radial(double r, double a, double p0, double nu) {
   const double rho = std::abs(r) / a;
   if (rho >= 1.0) return (1.0 - 2.0 * nu) * p0 / (3.0 * rho * rho);
   if (rho == 0.0) return -0.5 * (1.0 + 2.0 * nu) * p0;
-  const double root = std::sqrt(1.0 - rho * rho);
-  return p0 * ((1.0 - 2.0 * nu) / 3.0 / (rho * rho) * (1.0 - root * root * root) - root);
+  // (1 - root^3) / rho^2 = (1 + root + root^2) / (1 + root), free of cancellation near r = 0.
+  const double root = std::sqrt((1.0 - rho) * (1.0 + rho));
+  return p0 * ((1.0 - 2.0 * nu) / 3.0 * (1.0 + root + root * root) / (1.0 + root) - root);
 }
 
 namespace {

@@ -78,6 +78,60 @@ std::vector<double> linspace(double from, double to, int n) {
 
 // ---------------------------------------------------------------------------------------------
 
+// The measures of simple states: uniaxial sigma (von Mises sigma, Tresca sigma / 2, hydrostatic
+// sigma / 3) and pure shear tau (sqrt(3) tau, tau, 0), rotated arbitrarily.
+TEST(SubsurfaceField, StressMeasuresOfSimpleStates) {
+  dc::FieldValues f{};
+  f[dc::kSzz] = -3.0;
+  dc::StressMeasures m = dc::stress_measures(f);
+  EXPECT_NEAR(m.von_mises, 3.0, 1e-14);
+  EXPECT_NEAR(m.tresca, 1.5, 1e-14);
+  EXPECT_NEAR(m.hydrostatic, -1.0, 1e-14);
+  f = {};
+  f[dc::kSxz] = 2.0;  // pure shear in the x-z plane
+  m = dc::stress_measures(f);
+  EXPECT_NEAR(m.von_mises, 2.0 * std::sqrt(3.0), 1e-14);
+  EXPECT_NEAR(m.tresca, 2.0, 1e-14);
+  EXPECT_NEAR(m.hydrostatic, 0.0, 1e-14);
+  f = {};
+  f[dc::kSxx] = 1.0, f[dc::kSyy] = -1.0;  // the same pure shear, 45 degrees about z
+  m = dc::stress_measures(f);
+  EXPECT_NEAR(m.von_mises, std::sqrt(3.0), 1e-14);
+  EXPECT_NEAR(m.tresca, 1.0, 1e-14);
+}
+
+// The closed forms' own consistency: McEwen's field carries the traction on the surface and
+// gives the axis formula at x = 0; Hertz's surface radial stress is continuous at r = a.
+TEST(SubsurfaceField, ClosedFormsConsistency) {
+  const double a = 2.0, p0 = 3.0, q0 = 0.7;
+  for (double x : {-1.5, -0.3, 0.0, 0.8, 1.9}) {
+    const double shape = std::sqrt(1.0 - x * x / (a * a));
+    const auto n = dc::closed_form::mcewen_normal(x, 0.0, a, p0);
+    const auto q = dc::closed_form::mcewen_tangential(x, 0.0, a, q0);
+    EXPECT_NEAR(n.sigma_zz, -p0 * shape, 1e-13);
+    EXPECT_NEAR(n.sigma_xx, -p0 * shape, 1e-13);  // [J] 4.47: sigma_x = sigma_z on the surface
+    EXPECT_NEAR(n.sigma_xz, 0.0, 1e-13);
+    EXPECT_NEAR(q.sigma_xz, -q0 * shape, 1e-13);
+    EXPECT_NEAR(q.sigma_xx, -2.0 * q0 * x / a, 1e-13);
+    EXPECT_NEAR(q.sigma_zz, 0.0, 1e-13);
+  }
+  for (double z : {0.0, 0.4, 1.7, 6.0}) {
+    const auto n = dc::closed_form::mcewen_normal(0.0, z, a, p0);
+    const auto e = dc::closed_form::line_contact_axis(z, a, p0);
+    EXPECT_NEAR(n.sigma_xx, e.sigma_xx, 1e-13);
+    EXPECT_NEAR(n.sigma_zz, e.sigma_zz, 1e-13);
+  }
+  const double nu = 0.3;
+  // Inside, the -p sqrt(1 - r^2/a^2) term approaches r = a as a square root.
+  EXPECT_NEAR(dc::closed_form::hertz_sphere_surface_radial(a * (1.0 - 1e-12), a, p0, nu),
+              dc::closed_form::hertz_sphere_surface_radial(a, a, p0, nu), 1e-5);
+  EXPECT_NEAR(dc::closed_form::hertz_sphere_surface_radial(1e-5 * a, a, p0, nu),
+              dc::closed_form::hertz_sphere_surface_radial(0.0, a, p0, nu), 1e-9);
+  const auto axis0 = dc::closed_form::hertz_sphere_axis(0.0, a, p0, nu);
+  EXPECT_NEAR(axis0.sigma_z, -p0, 1e-15);
+  EXPECT_NEAR(axis0.sigma_r, -(1.0 + 2.0 * nu) / 2.0 * p0, 1e-15);  // the surface value at r = 0
+}
+
 TEST(SubsurfaceField, FftEqualsDirectOnNonSquareGrid) {
   std::mt19937 rng(29);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
