@@ -2,7 +2,7 @@
 // certificate and its per-depth cross-check (nlp/shakedown_by_depth.hpp), against the line
 // rolling contact's classical limits (K. L. Johnson, Contact Mechanics, Cambridge 1985, sections
 // 4.2 and 7.2, chapter 9; K. L. Johnson, J. A. Jefferis, Proc. Symp. Fatigue in Rolling Contact,
-// IMechE 1963): McEwen's closed-form field (tests/support/mcewen_reference.hpp), a = p0 = 1, nu = 0.3.
+// IMechE 1963): McEwen's closed-form field (core/subsurface_closed_forms.hpp via tests/support/mcewen_reference.hpp), a = p0 = 1, nu = 0.3.
 //
 // Sampling (unless a test says otherwise): depths z_j = 0.02 a j, j = 0..63 (0 to 1.26 a, the
 // surface and z = 0.5 a among them) x positions x_i = -3 a + 6 a i / 255, i = 0..255 (dx =
