@@ -53,6 +53,14 @@ std::string ipopt_status_name(int code) {
   return "unknown Ipopt status";
 }
 
+bool set_common_ipopt_options(Ipopt::OptionsList& options, double tol, int max_iter, bool verbose) {
+  bool ok = options.SetNumericValue("tol", tol);
+  ok &= options.SetIntegerValue("max_iter", max_iter);
+  ok &= options.SetIntegerValue("print_level", verbose ? 5 : 0);
+  ok &= options.SetStringValue("sb", "yes");
+  return ok;
+}
+
 std::mutex& ipopt_mutex() {
   static std::mutex mutex;
   return mutex;
@@ -325,11 +333,7 @@ SolveOutcome solve_with_ipopt(const QuadraticProgram& qp, const SolveOptions& op
     Ipopt::SmartPtr<QpTnlp> tnlp = new QpTnlp(qp, options, dense_q);
     Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
     auto opts = app->Options();
-    bool ok = true;
-    ok &= opts->SetNumericValue("tol", options.tol);
-    ok &= opts->SetIntegerValue("max_iter", options.max_iter);
-    ok &= opts->SetIntegerValue("print_level", options.verbose ? 5 : 0);
-    ok &= opts->SetStringValue("sb", "yes");
+    bool ok = set_common_ipopt_options(*opts, options.tol, options.max_iter, options.verbose);
     // The finite body's sparse form with the exact Hessian is a convex QP: Mehrotra's
     // predictor-corrector takes 11 iterations on a 10k-dof body where the default barrier
     // update took 14, each a factorisation of the KKT matrix. Its least-squares start (primal

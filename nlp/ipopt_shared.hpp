@@ -1,9 +1,19 @@
 #pragma once
-// What every Ipopt program of the project shares (ipopt_backend.cpp, nlp/finite/saddle_form.cpp).
+// What every Ipopt program of the project shares (ipopt_backend.cpp, nlp/finite/saddle_form.cpp,
+// shakedown_problem.cpp).
 #include <mutex>
 #include <string>
 
+namespace Ipopt {
+class OptionsList;
+}
+
 namespace dc {
+
+/// The options every program here sets alike: the tolerance, the iteration limit, the output
+/// (print level 5 when verbose, else silent and without Ipopt's banner). False when Ipopt
+/// rejected one.
+bool set_common_ipopt_options(Ipopt::OptionsList& options, double tol, int max_iter, bool verbose);
 
 /// Ipopt's ApplicationReturnStatus as text ("Solve_Succeeded", ...).
 std::string ipopt_status_name(int status);

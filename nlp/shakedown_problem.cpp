@@ -268,11 +268,7 @@ IpoptRun run_ipopt(const ShakedownSamples& s, const std::vector<SampleIndex>& ro
   Ipopt::SmartPtr<ShakedownTnlp> tnlp = new ShakedownTnlp(s, rows, start);
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   auto opts = app->Options();
-  bool ok = true;
-  ok &= opts->SetNumericValue("tol", options.tol);
-  ok &= opts->SetIntegerValue("max_iter", options.max_iter);
-  ok &= opts->SetIntegerValue("print_level", options.verbose ? 5 : 0);
-  ok &= opts->SetStringValue("sb", "yes");
+  bool ok = set_common_ipopt_options(*opts, options.tol, options.max_iter, options.verbose);
   if (options.verbose) ok &= opts->SetStringValue("print_timing_statistics", "yes");
   ok &= opts->SetStringValue("mu_strategy", "adaptive");
   ok &= opts->SetStringValue("hessian_approximation", "exact");
