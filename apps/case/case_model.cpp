@@ -59,6 +59,7 @@ const std::vector<BlockUse>& block_uses() {
       {"sweep", {P::paper_cylinder, P::dynamic}},
       {"fe_body", {P::finite, P::dynamic}},
       {"accuracy", {P::normal, P::tangential, P::dynamic}},
+      {"subsurface", {P::normal, P::tangential}},
   };
   return uses;
 }
@@ -101,7 +102,8 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   JsonBlock top(document, "");
   top.allow({"schema", "name", "description", "problem", "dimension", "materials", "profile", "grid", "normal",
              "friction", "tangential", "fe_body", "body", "loads", "time", "traction_model", "dimensionless",
-             "solver", "sweep", "output", "normal_model", "contact_model", "accuracy"});
+             "solver", "sweep", "output", "normal_model", "contact_model", "accuracy",
+             "subsurface"});
   Case c;
   c.source = document;
   for (auto it = document.begin(); it != document.end(); ++it) c.blocks.push_back(it.key());
@@ -140,6 +142,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   if (top.has("solver")) c.solver = read_solver(top.at("solver"));
   if (top.has("output")) c.output = read_output(top.at("output"));
   if (top.has("accuracy")) c.accuracy = read_accuracy(top.at("accuracy"), c.problem);
+  if (top.has("subsurface")) c.subsurface = read_subsurface(top.at("subsurface"));
   if (!top.has("accuracy") && c.problem == ProblemKind::dynamic) c.accuracy.estimate = false;  // opt-in there
   if (c.problem == ProblemKind::dynamic) {
     c.dynamic = read_dynamic(document, c);

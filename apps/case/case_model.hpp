@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "accuracy_spec.hpp"
+#include "subsurface_spec.hpp"
 #include "dynamic_spec.hpp"
 #include "paper_cylinder_spec.hpp"
 #include "tangential_spec.hpp"
@@ -56,6 +57,7 @@ struct Case : DynamicContactSpec {
   std::optional<SweepSpec> sweep;                   ///< problems paper_cylinder, dynamic
   OutputSpec output;
   AccuracySpec accuracy;                            ///< problems normal, tangential
+  SubsurfaceSpec subsurface;                        ///< problems normal, tangential (the final state)
   std::vector<std::string> blocks;  ///< the top-level keys the case file gave
   nlohmann::json source;            ///< the (overridden) JSON the case was read from (sweeps re-read it)
 

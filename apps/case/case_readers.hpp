@@ -28,6 +28,9 @@ SolverOptions read_solver(const nlohmann::json& j);
 /// "accuracy": the error estimate and the target of a `problem` (its quantities checked).
 AccuracySpec read_accuracy(const nlohmann::json& j, ProblemKind problem);
 
+/// "subsurface": the depths, bodies and planes of the field inside the bodies.
+SubsurfaceSpec read_subsurface(const nlohmann::json& j);
+
 /// "output": the folder, which files, snapshots.
 OutputSpec read_output(const nlohmann::json& j);
 

@@ -20,6 +20,7 @@
 #include "plot_writer.hpp"
 #include "accuracy_run.hpp"
 #include "result_limits.hpp"
+#include "subsurface_writer.hpp"
 #include "summary_writer.hpp"
 #include "table_ranks.hpp"
 #include "tangential_run.hpp"
@@ -155,6 +156,13 @@ int run_solve(const SolveArgs& args) {
     output::write_fields(dir, solved.grid, run.fields.back());
     files["fields"] = "fields.csv";
   }
+  if (run.subsurface) {  // subsurface.vti (evenly spaced depths) and the planes through the worst points
+    std::vector<output::SubsurfaceBody> bodies;
+    for (const runs::BodySubsurface& b : run.subsurface->bodies) bodies.push_back({b.name, &b.field, &b.measures});
+    if (!bodies.empty() && output::evenly_spaced(run.subsurface->depths))
+      files["subsurface"] = output::write_subsurface_vti(dir, bodies);
+    if (!bodies.empty() && c.subsurface.planes) files["subsurface_planes"] = output::write_subsurface_planes(dir, bodies);
+  }
   if (c.output.plots && !run.interrupted) {  // an interrupted run writes its data, not figures
     Case plotted = solved;
     plotted.normal = run.normal;  // the closed-form curve of the last step's load
@@ -181,6 +189,7 @@ int run_solve(const SolveArgs& args) {
     std::printf("  %-16s %d of %zu elements\n", "in contact", s["n_contact"].get<int>(), solved.grid.size());
     if (c.problem == ProblemKind::tangential) print_tangential(c, s);
     if (s.contains("accuracy")) runs::print_accuracy(s["accuracy"]);
+    if (run.subsurface) runs::print_subsurface(*run.subsurface);
     if (r.backend == "none") std::printf("note: %s\n", r.message.c_str());
     std::printf("wrote %s\n", summary_path.c_str());
     std::fflush(stdout);

@@ -31,7 +31,9 @@ bool is_result_file(const std::string& name) {
   static const std::set<std::string> fixed = {
       "summary.json", "compare.json", "fields.csv", "timeseries.csv", "plots.gp", "plots.log",
       "line_x.dat", "line_y.dat", "map.dat", "reference_x.dat", "reference_y.dat",
-      "table.csv", "table.json", "table_Fx.dat", "table_Fy.dat", "body.vtu", "body.pvd"};
+      "table.csv", "table.json", "table_Fx.dat", "table_Fy.dat", "body.vtu", "body.pvd",
+      "subsurface.vti", "subsurface_base_xz.csv", "subsurface_base_yz.csv", "subsurface_body_xz.csv",
+      "subsurface_body_yz.csv"};
   static const char* figures[] = {"pressure_x", "pressure_y", "traction_x", "traction_y", "pressure_map",
                                   "contact_map", "F_bar", "l_bar", "v_bar",
                                   // dynamic

@@ -156,7 +156,17 @@ TangentialRun run_tangential(const Case& c, bool progress) {
   return run;
 }
 
-StaticRun run_static(const Case& c, bool progress) { return run_static_with_accuracy(c, progress); }
+StaticRun run_static(const Case& c, bool progress) {
+  StaticRun run = run_static_with_accuracy(c, progress);
+  // The field inside the bodies from the final state's tractions (subsurface_run.hpp).
+  if (c.subsurface.enabled && run.converged && !run.interrupted && !run.fields.empty()) {
+    const nlohmann::json& s = run.summary;
+    const bool steps = s.contains("steps") && s["steps"].is_array() && !s["steps"].empty();
+    run.subsurface = compute_subsurface(c, run.grid, run.fields.back(), steps ? s["steps"].back() : s);
+    run.summary["subsurface"] = subsurface_json(*run.subsurface, run.grid.dimension);
+  }
+  return run;
+}
 
 StaticRun run_static_once(const Case& c, bool progress, const std::vector<double>* warm_pressure) {
   StaticRun out;

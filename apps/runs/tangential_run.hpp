@@ -1,10 +1,13 @@
 #pragma once
+#include <optional>
 // Solving a tangential case for the command line (progress, fields, summary), and the
 // static run that `solve` and `compare` use for either static problem (normal, tangential).
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "subsurface_run.hpp"
 
 #include "case_model.hpp"
 #include "solver_report.hpp"
@@ -54,6 +57,7 @@ struct StaticRun {
   bool history = false;                      ///< a loading history: summary "steps", fields_<k>.csv
   bool interrupted = false;                  ///< an interrupt came during a history: the steps finished
   Grid grid;                                 ///< the grid solved (an accuracy target chooses it)
+  std::optional<SubsurfaceRun> subsurface;   ///< the "subsurface" block's field (final state)
 };
 
 /// Runs a static case (normal, tangential, finite) with its accuracy block

@@ -1,0 +1,20 @@
+#pragma once
+// The "subsurface" block (CASES.md): the elastic field inside both bodies from the computed
+// surface tractions (core/subsurface_field.hpp), at depths below each body's surface.
+#include <string>
+#include <vector>
+
+namespace dc {
+
+struct SubsurfaceSpec {
+  bool enabled = false;  ///< the block is present
+  /// subsurface.depths (m, >= 0, increasing): a list or "start:stop:count"; empty: 32 depths
+  /// from 0 to 1.5 x the contact's half-width (its larger one in 3-D), chosen after the solve.
+  std::vector<double> depths;
+  /// subsurface.bodies: "base" (the half-space below), "body" (above); a rigid one is skipped.
+  std::vector<std::string> bodies = {"base", "body"};
+  /// subsurface.planes: also the x-z and y-z planes through each body's worst point (CSV).
+  bool planes = true;
+};
+
+}  // namespace dc

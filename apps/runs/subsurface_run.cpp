@@ -1,0 +1,77 @@
+#include "subsurface_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace dc::runs {
+
+std::vector<double> subsurface_depths(const SubsurfaceSpec& spec, const nlohmann::json& summary) {
+  if (!spec.depths.empty()) return spec.depths;
+  const double half = summary.contains("contact_half_width")
+                          ? summary.value("contact_half_width", 0.0)
+                          : std::max(summary.value("contact_half_width_x", 0.0), summary.value("contact_half_width_y", 0.0));
+  constexpr int kDepths = 32;
+  std::vector<double> depths;
+  for (int k = 0; k < kDepths; ++k) depths.push_back(1.5 * half * k / (kDepths - 1));
+  return depths;
+}
+
+SubsurfaceRun compute_subsurface(const Case& c, const Grid& grid, const output::StaticFields& fields,
+                                 const nlohmann::json& summary) {
+  SubsurfaceRun run;
+  run.depths = subsurface_depths(c.subsurface, summary);
+  SurfaceTractions t{fields.p, fields.tx, grid.dimension == 3 ? fields.ty : std::vector<double>()};
+  for (std::vector<double>* v : {&t.p, &t.tau_x, &t.tau_y})  // what the solve left undefined is no load
+    for (double& x : *v)
+      if (!std::isfinite(x)) x = 0.0;
+  for (const std::string& name : c.subsurface.bodies) {
+    const bool base = name == "base";
+    const Elastic& m = base ? c.materials.base : c.materials.body;
+    if (m.rigid) {
+      run.rigid.push_back(name);
+      continue;
+    }
+    SubsurfaceField field(grid, m, base ? BodySide::base : BodySide::body);
+    BodySubsurface b{name, field.compute(t, run.depths), {}, {}};
+    b.measures = subsurface_measures(b.field);
+    // The orthogonal shear |sigma_xz|: the classical rolling-contact fatigue index.
+    for (std::size_t k = 0; k < run.depths.size(); ++k) {
+      const double* sxz = b.field.component(k, kSxz);
+      for (int j = 0; j < grid.ny; ++j)
+        for (int i = 0; i < grid.nx; ++i) {
+          const double v = std::abs(sxz[grid.index(i, j)]);
+          if (v > b.max_orthogonal_shear.value)
+            b.max_orthogonal_shear = {v, k, i, j, grid.xc(i), grid.yc(j), run.depths[k]};
+        }
+    }
+    run.bodies.push_back(std::move(b));
+  }
+  return run;
+}
+
+nlohmann::json subsurface_json(const SubsurfaceRun& run, int dimension) {
+  auto at = [&](const FieldExtreme& e) {
+    return dimension == 3 ? nlohmann::json::array({e.x, e.y, e.depth}) : nlohmann::json::array({e.x, e.depth});
+  };
+  nlohmann::json s = nlohmann::json::object();
+  for (const BodySubsurface& b : run.bodies)
+    s[b.name] = {{"max_von_mises", b.measures.max_von_mises.value}, {"at", at(b.measures.max_von_mises)},
+                 {"max_tresca", b.measures.max_tresca.value},       {"at_tresca", at(b.measures.max_tresca)},
+                 {"max_orthogonal_shear", b.max_orthogonal_shear.value},
+                 {"at_orthogonal", at(b.max_orthogonal_shear)}};
+  for (const std::string& r : run.rigid) s[r] = {{"rigid", true}};
+  s["depths"] = run.depths;
+  return s;
+}
+
+void print_subsurface(const SubsurfaceRun& run) {
+  std::printf("  subsurface       %zu depths to %.4g m\n", run.depths.size(), run.depths.empty() ? 0.0 : run.depths.back());
+  for (const BodySubsurface& b : run.bodies)
+    std::printf("    %-5s von Mises %.5g Pa at depth %.4g m, Tresca %.5g Pa at %.4g m, |sxz| %.5g Pa at %.4g m\n",
+                b.name.c_str(), b.measures.max_von_mises.value, b.measures.max_von_mises.depth, b.measures.max_tresca.value,
+                b.measures.max_tresca.depth, b.max_orthogonal_shear.value, b.max_orthogonal_shear.depth);
+  for (const std::string& r : run.rigid) std::printf("    %-5s rigid: no field\n", r.c_str());
+}
+
+}  // namespace dc::runs

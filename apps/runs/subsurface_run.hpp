@@ -1,0 +1,45 @@
+#pragma once
+// The "subsurface" block of a static run (CASES.md): the elastic field inside each named body
+// from the final state's tractions (core/subsurface_field.hpp, by FFT per depth), its von Mises,
+// Tresca (tau_1) and orthogonal-shear (|sigma_xz|) maxima with their places for summary.json,
+// and the field for subsurface.vti and the planes' CSV (output/subsurface_writer.hpp).
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "case_model.hpp"
+#include "static_fields.hpp"
+#include "subsurface_field.hpp"
+
+namespace dc::runs {
+
+/// One body's field and its measures.
+struct BodySubsurface {
+  std::string name;  ///< "base" or "body"
+  SubsurfaceResult field;
+  SubsurfaceMeasures measures;
+  FieldExtreme max_orthogonal_shear;  ///< |sigma_xz|
+};
+
+struct SubsurfaceRun {
+  std::vector<double> depths;
+  std::vector<BodySubsurface> bodies;  ///< the named, elastic ones
+  std::vector<std::string> rigid;      ///< named but rigid: no field
+};
+
+/// The depths of `spec`, or 32 from 0 to 1.5 x the contact's larger half-width in `summary`.
+std::vector<double> subsurface_depths(const SubsurfaceSpec& spec, const nlohmann::json& summary);
+
+/// The field of every named body of `c` (on `grid`, the grid solved) under `fields`' tractions.
+SubsurfaceRun compute_subsurface(const Case& c, const Grid& grid, const output::StaticFields& fields,
+                                 const nlohmann::json& summary);
+
+/// summary.json's "subsurface": per body max_von_mises, at, max_tresca, at_tresca,
+/// max_orthogonal_shear, at_orthogonal ([x, y, depth]; 2-D [x, depth]), and the depths.
+nlohmann::json subsurface_json(const SubsurfaceRun& run, int dimension);
+
+/// The maxima per body on stdout (the solve command's report).
+void print_subsurface(const SubsurfaceRun& run);
+
+}  // namespace dc::runs

@@ -1,0 +1,139 @@
+// The "subsurface" block run as a program (CASES.md, issue 29): the field inside both bodies
+// from the solved tractions, its maxima in summary.json against Hertz's subsurface closed forms
+// (Johnson 3.4, 4.2: max tau_1 = 0.31 p0 at z = 0.48 a under a sphere (nu = 0.3), 0.30 p0 at
+// 0.78 b and the orthogonal shear 0.25 p0 at 0.5 b under a cylinder), subsurface.vti and the
+// planes' CSV, a rigid body without a field, and bad input naming its key.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+#include "hertz.hpp"
+#include "material.hpp"
+#include "subsurface_closed_forms.hpp"
+
+namespace {
+
+using json = nlohmann::json;
+using dc::test::slurp;
+
+class CliSubsurface : public dc::test::CliTest {
+ protected:
+  json solve(const json& c, int expected_exit = 0) const {
+    const auto r = run("solve " + write_case(c) + " --out out -q");
+    EXPECT_EQ(r.code, expected_exit) << r.err;
+    return json::parse(slurp(dir_ / "out" / "summary.json"));
+  }
+};
+
+/// A steel sphere (R = 8 mm) on a steel base (nu = 0.3) and a bronze body (nu = 0.34), 60 N.
+json sphere_case() {
+  return {{"schema", "dyncontact/1"},
+          {"name", "sphere"},
+          {"problem", "normal"},
+          {"materials", {{"body", {{"E", 1.17e11}, {"nu", 0.34}}}, {"base", {{"E", 2.1e11}, {"nu", 0.3}}}}},
+          {"profile", {{"type", "sphere"}, {"radius", 0.008}}},
+          {"grid", {{"nx", 64}, {"ny", 64}, {"extent", 1.5}}},
+          {"normal", {{"force", 60.0}}},
+          {"accuracy", {{"estimate", false}}},
+          {"output", {{"plots", false}}}};
+}
+
+TEST_F(CliSubsurface, SpheresMaximumShearIsHertzsInEachBody) {
+  json c = sphere_case();
+  const dc::MaterialPair m{dc::Elastic::from_E_nu(1.17e11, 0.34), dc::Elastic::from_E_nu(2.1e11, 0.3)};
+  const auto h = dc::hertz::sphere(0.008, 60.0, m.E_star());
+  c["subsurface"] = {{"depths", "0:" + std::to_string(1.5 * h.a) + ":61"}};
+  const json s = solve(c);
+  const json& base = s.at("subsurface").at("base");
+  // 64^2 over +-1.5 a (dx = a/21), depths every a/40: tau_1 within 0.005 p0 and its depth 0.03 a.
+  EXPECT_NEAR(base.at("max_tresca").get<double>() / h.p0, 0.31, 0.005);
+  EXPECT_NEAR(base.at("at_tresca")[2].get<double>() / h.a, 0.48, 0.03);
+  EXPECT_LT(std::hypot(base.at("at_tresca")[0].get<double>(), base.at("at_tresca")[1].get<double>()), 0.05 * h.a);
+  // The body with its own nu = 0.34: its maximum on the axis from Johnson 3.45,
+  // tau_1 = (sigma_z - sigma_r) / 2 (the largest over depths every a/1000).
+  double peak = 0.0, peak_depth = 0.0;
+  for (int k = 1; k <= 1500; ++k) {
+    const auto axis = dc::closed_form::hertz_sphere_axis(k * 1e-3 * h.a, h.a, h.p0, 0.34);
+    if (std::abs(axis.sigma_z - axis.sigma_r) / 2.0 > peak) {
+      peak = std::abs(axis.sigma_z - axis.sigma_r) / 2.0;
+      peak_depth = k * 1e-3 * h.a;
+    }
+  }
+  const json& body = s.at("subsurface").at("body");
+  EXPECT_NEAR(body.at("max_tresca").get<double>() / peak, 1.0, 0.015);
+  EXPECT_NEAR(body.at("at_tresca")[2].get<double>() / h.a, peak_depth / h.a, 0.03);
+  EXPECT_GT(std::abs(body.at("max_tresca").get<double>() / base.at("max_tresca").get<double>() - 1.0), 0.02);
+  // The files: the image (64 x 64 x 61 points, both bodies) and the planes through the worst point.
+  const json& files = s.at("files");
+  EXPECT_EQ(files.at("subsurface"), "subsurface.vti");
+  const std::string vti = slurp(dir_ / "out" / "subsurface.vti");
+  EXPECT_NE(vti.find("WholeExtent=\"0 63 0 63 0 60\""), std::string::npos);
+  for (const char* name : {"base_stress", "base_von_mises", "base_tresca", "body_stress", "body_displacement"})
+    EXPECT_NE(vti.find(std::string("Name=\"") + name + "\""), std::string::npos) << name;
+  EXPECT_EQ(files.at("subsurface_planes").size(), 4u);
+  const std::string xz = slurp(dir_ / "out" / "subsurface_base_xz.csv");
+  EXPECT_EQ(xz.substr(0, xz.find('\n')), "x,depth,sxx,syy,szz,syz,sxz,sxy,von_mises,tresca");
+  EXPECT_EQ(std::count(xz.begin(), xz.end(), '\n'), 1 + 64 * 61);
+}
+
+TEST_F(CliSubsurface, LineContactsShearsAreHertzsAndARigidBodyHasNoField) {
+  const double R = 0.02, P = 3.0e5, E = 2.1e11, nu = 0.3;
+  const double e_star = E / (1.0 - nu * nu);  // a rigid cylinder: the base's compliance alone
+  const auto h = dc::hertz::cylinder2d(R, P, e_star);
+  json c = {{"schema", "dyncontact/1"},
+            {"name", "line"},
+            {"problem", "normal"},
+            {"dimension", 2},
+            {"materials", {{"body", {{"rigid", true}}}, {"base", {{"E", E}, {"nu", nu}}}}},
+            {"profile", {{"type", "cylinder"}, {"radius", R}}},
+            {"grid", {{"nx", 600}, {"x", {-3.0 * h.a, 3.0 * h.a}}}},
+            {"normal", {{"force", P}}},
+            {"accuracy", {{"estimate", false}}},
+            {"subsurface", {{"depths", "0:" + std::to_string(1.2 * h.a) + ":121"}}},
+            {"output", {{"plots", false}}}};
+  const json s = solve(c);
+  const json& base = s.at("subsurface").at("base");
+  // 600 strips over +-3 b (dx = b/100), depths every b/100.
+  EXPECT_NEAR(base.at("max_tresca").get<double>() / h.p0, 0.30, 0.005);
+  EXPECT_NEAR(base.at("at_tresca")[1].get<double>() / h.a, 0.78, 0.02);
+  EXPECT_NEAR(base.at("max_orthogonal_shear").get<double>() / h.p0, 0.25, 0.003);
+  EXPECT_NEAR(base.at("at_orthogonal")[1].get<double>() / h.a, 0.50, 0.02);
+  EXPECT_NEAR(std::abs(base.at("at_orthogonal")[0].get<double>()) / h.a, 0.87, 0.02);
+  EXPECT_TRUE(s.at("subsurface").at("body").at("rigid").get<bool>());
+  EXPECT_EQ(s.at("files").at("subsurface_planes").size(), 1u);  // 2-D: the x-z plane of the base
+}
+
+TEST_F(CliSubsurface, DefaultDepthsReachOneAndAHalfHalfWidthsAndUnevenDepthsWriteNoImage) {
+  json c = sphere_case();
+  c["subsurface"] = json::object();
+  json s = solve(c);
+  const json& d = s.at("subsurface").at("depths");
+  ASSERT_EQ(d.size(), 32u);
+  EXPECT_EQ(d[0].get<double>(), 0.0);
+  EXPECT_NEAR(d.back().get<double>(), 1.5 * s.at("contact_half_width_x").get<double>(), 1e-15);
+  c["subsurface"] = {{"depths", {0.0, 5e-5, 1.5e-4}}, {"bodies", {"base"}}, {"planes", false}};
+  s = solve(c);
+  EXPECT_FALSE(s.at("files").contains("subsurface"));
+  EXPECT_FALSE(s.at("files").contains("subsurface_planes"));
+  EXPECT_FALSE(s.at("subsurface").contains("body"));
+  EXPECT_GT(s.at("subsurface").at("base").at("max_von_mises").get<double>(), 0.0);
+}
+
+TEST_F(CliSubsurface, BadSubsurfaceInputNamesTheKey) {
+  for (const json& block : {json{{"depths", "0:1e-3:1"}}, json{{"depths", {1e-4, 0.0}}}, json{{"depths", {-1e-4}}},
+                            json{{"bodies", {"rail"}}}, json{{"bodies", {"base", "base"}}}, json{{"plane", true}}}) {
+    json c = sphere_case();
+    c["subsurface"] = block;
+    const std::string key = block.contains("plane") ? "subsurface.plane" : "subsurface." + block.begin().key();
+    expect_input_error("validate " + write_case(c), key);
+  }
+  json dynamic = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "ball-impact.json"));
+  dynamic["subsurface"] = json::object();
+  expect_input_error("validate " + write_case(dynamic), "subsurface");
+}
+
+}  // namespace
