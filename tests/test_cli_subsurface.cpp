@@ -136,4 +136,41 @@ TEST_F(CliSubsurface, BadSubsurfaceInputNamesTheKey) {
   expect_input_error("validate " + write_case(dynamic), "subsurface");
 }
 
+/// First yield of Hertz's sphere (steel on steel, nu = 0.3): von Mises at p0 = 1.60 Y, Tresca at
+/// tau_1 = 0.31 p0 = k (Johnson 6.2), found by solving at the factor on the same grid.
+TEST_F(CliSubsurface, FirstYieldOfASphereIsAtHertzsPeakPressure) {
+  const dc::MaterialPair m{dc::Elastic::from_E_nu(2.1e11, 0.3), dc::Elastic::from_E_nu(2.1e11, 0.3)};
+  const double R = 0.012, P = 80.0;
+  const auto h = dc::hertz::sphere(R, P, m.E_star());
+  for (const bool von_mises : {true, false}) {
+    json c = sphere_case();
+    c["materials"] = {{"body", {{"E", 2.1e11}, {"nu", 0.3}}}, {"base", {{"E", 2.1e11}, {"nu", 0.3}}}};
+    c["profile"]["radius"] = R;
+    c["normal"]["force"] = P;
+    c["grid"] = {{"nx", 96}, {"ny", 96}, {"extent", 2.0}};  // room for the contact at the factor
+    // Strengths that put first yield at 1.5 and 2.5 times the load.
+    const double strength = von_mises ? h.p0 * std::cbrt(1.5) / 1.60 : 0.31 * h.p0 * std::cbrt(2.5);
+    c["materials"]["base"]["yield"] = von_mises ? json{{"von_mises", strength}} : json{{"tresca_k", strength}};
+    const json s = solve(c);
+    const json& y = s.at("yield").at("base");
+    EXPECT_FALSE(s.at("yield").contains("body"));
+    const double factor = y.at("first_yield_load_factor").get<double>();
+    // 96^2 over +-2 a (dx = a/24; at the factor a/28-a/33): within 1.5 % of Hertz's.
+    EXPECT_NEAR(factor, von_mises ? 1.5 : 2.5, (von_mises ? 1.5 : 2.5) * 3 * 0.015) << y.dump();
+    EXPECT_NEAR(h.p0 * std::cbrt(factor) / strength, von_mises ? 1.60 : 1.0 / 0.31, (von_mises ? 1.60 : 3.23) * 0.015);
+    EXPECT_NEAR(y.at("at")[2].get<double>() / h.a, 0.48, 0.05);
+    EXPECT_NEAR(y.at("utilisation").get<double>(), std::pow(factor, -1.0 / 3.0), 0.01);
+  }
+  // A factor whose contact would leave the grid says so, without a number.
+  json c = sphere_case();
+  c["grid"]["extent"] = 1.2;
+  c["materials"]["base"]["yield"] = {{"von_mises", 1e11}};
+  const json s = solve(c);
+  EXPECT_TRUE(s.at("yield").at("base").at("first_yield_load_factor").is_null());
+  EXPECT_NE(s.at("yield").at("base").at("note").get<std::string>().find("grid's edge"), std::string::npos);
+  json bad = sphere_case();
+  bad["materials"]["base"]["yield"] = {{"von_mises", 1e9}, {"tresca_k", 5e8}};
+  expect_input_error("validate " + write_case(bad), "materials.base.yield");
+}
+
 }  // namespace

@@ -143,6 +143,13 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   if (top.has("output")) c.output = read_output(top.at("output"));
   if (top.has("accuracy")) c.accuracy = read_accuracy(top.at("accuracy"), c.problem);
   if (top.has("subsurface")) c.subsurface = read_subsurface(top.at("subsurface"));
+  if (top.has("materials")) {
+    c.yields = read_yields(top.at("materials"));
+    if ((c.yields.body || c.yields.base) && !static_problem)
+      throw InputError(c.yields.base ? "materials.base.yield" : "materials.body.yield",
+                       std::string("first yield is computed for problems normal and tangential, not '") +
+                           to_string(c.problem) + "'");
+  }
   if (!top.has("accuracy") && c.problem == ProblemKind::dynamic) c.accuracy.estimate = false;  // opt-in there
   if (c.problem == ProblemKind::dynamic) {
     c.dynamic = read_dynamic(document, c);

@@ -58,6 +58,7 @@ struct Case : DynamicContactSpec {
   OutputSpec output;
   AccuracySpec accuracy;                            ///< problems normal, tangential
   SubsurfaceSpec subsurface;                        ///< problems normal, tangential (the final state)
+  BodyYields yields;                                ///< materials.*.yield (problems normal, tangential)
   std::vector<std::string> blocks;  ///< the top-level keys the case file gave
   nlohmann::json source;            ///< the (overridden) JSON the case was read from (sweeps re-read it)
 

@@ -28,6 +28,9 @@ SolverOptions read_solver(const nlohmann::json& j);
 /// "accuracy": the error estimate and the target of a `problem` (its quantities checked).
 AccuracySpec read_accuracy(const nlohmann::json& j, ProblemKind problem);
 
+/// materials.body.yield and materials.base.yield (the block read by read_materials).
+BodyYields read_yields(const nlohmann::json& materials);
+
 /// "subsurface": the depths, bodies and planes of the field inside the bodies.
 SubsurfaceSpec read_subsurface(const nlohmann::json& j);
 

@@ -15,7 +15,8 @@ namespace {
 
 Elastic read_elastic(const json& j, const std::string& path) {
   JsonBlock o(j, path);
-  o.allow({"E", "G", "nu", "rigid"});
+  o.allow({"E", "G", "nu", "rigid", "yield"});
+  if (o.has("yield") && o.boolean_or("rigid", false)) throw InputError(o.key("yield"), "a rigid body does not yield");
   if (o.boolean_or("rigid", false)) {
     for (const char* k : {"E", "G", "nu"})
       if (o.has(k)) throw InputError(o.key(k), "a rigid body takes no elastic constants");
@@ -29,7 +30,26 @@ Elastic read_elastic(const json& j, const std::string& path) {
   return hasE ? Elastic::from_E_nu(o.number("E"), nu, path) : Elastic::from_G_nu(o.number("G"), nu, path);
 }
 
+std::optional<YieldSpec> read_yield(const json& materials, const char* body) {
+  if (!materials.is_object() || !materials.contains(body) || !materials[body].is_object() ||
+      !materials[body].contains("yield"))
+    return std::nullopt;
+  const std::string path = std::string("materials.") + body + ".yield";
+  JsonBlock o(materials[body]["yield"], path);
+  o.allow({"von_mises", "tresca_k"});
+  if (o.has("von_mises") == o.has("tresca_k"))
+    throw InputError(path, "give one of von_mises (the yield stress Y, Pa) or tresca_k (the shear yield k, Pa)");
+  YieldSpec y;
+  y.von_mises = o.has("von_mises");
+  y.strength = o.positive(y.von_mises ? "von_mises" : "tresca_k");
+  return y;
+}
+
 }  // namespace
+
+BodyYields read_yields(const json& materials) {
+  return {read_yield(materials, "body"), read_yield(materials, "base")};
+}
 
 /// `body_from_mesh` (problem finite): the body's elasticity is its mesh's (fe_body), so the
 /// block gives the half-space ("base") only and the pair's body is rigid.

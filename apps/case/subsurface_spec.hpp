@@ -1,6 +1,7 @@
 #pragma once
 // The "subsurface" block (CASES.md): the elastic field inside both bodies from the computed
 // surface tractions (core/subsurface_field.hpp), at depths below each body's surface.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,18 @@ struct SubsurfaceSpec {
   std::vector<std::string> bodies = {"base", "body"};
   /// subsurface.planes: also the x-z and y-z planes through each body's worst point (CSV).
   bool planes = true;
+};
+
+/// materials.<body>.yield: {"von_mises": Y} (uniaxial yield stress) or {"tresca_k": k} (shear
+/// yield, Tresca's tau_1 = (sigma_1 - sigma_3)/2 <= k). A body with one gets its utilisation
+/// and first-yield load factor (the field computed at the default depths if no block asks).
+struct YieldSpec {
+  bool von_mises = true;  ///< false: Tresca
+  double strength = 0.0;  ///< Y or k (Pa)
+};
+
+struct BodyYields {
+  std::optional<YieldSpec> body, base;
 };
 
 }  // namespace dc

@@ -156,7 +156,7 @@ int run_solve(const SolveArgs& args) {
     output::write_fields(dir, solved.grid, run.fields.back());
     files["fields"] = "fields.csv";
   }
-  if (run.subsurface) {  // subsurface.vti (evenly spaced depths) and the planes through the worst points
+  if (run.subsurface && c.subsurface.enabled) {  // subsurface.vti (evenly spaced depths) and the planes through the worst points
     std::vector<output::SubsurfaceBody> bodies;
     for (const runs::BodySubsurface& b : run.subsurface->bodies) bodies.push_back({b.name, &b.field, &b.measures});
     if (!bodies.empty() && output::evenly_spaced(run.subsurface->depths))

@@ -5,6 +5,7 @@
 
 #include "accuracy_run.hpp"
 #include "finite_run.hpp"
+#include "first_yield.hpp"
 #include "interrupt.hpp"
 #include "normal_run.hpp"
 #include "progress.hpp"
@@ -158,12 +159,15 @@ TangentialRun run_tangential(const Case& c, bool progress) {
 
 StaticRun run_static(const Case& c, bool progress) {
   StaticRun run = run_static_with_accuracy(c, progress);
-  // The field inside the bodies from the final state's tractions (subsurface_run.hpp).
-  if (c.subsurface.enabled && run.converged && !run.interrupted && !run.fields.empty()) {
+  // The field inside the bodies from the final state's tractions (subsurface_run.hpp), also for
+  // a yield strength (first_yield.hpp).
+  const bool yields = c.yields.body || c.yields.base;
+  if ((c.subsurface.enabled || yields) && run.converged && !run.interrupted && !run.fields.empty()) {
     const nlohmann::json& s = run.summary;
     const bool steps = s.contains("steps") && s["steps"].is_array() && !s["steps"].empty();
     run.subsurface = compute_subsurface(c, run.grid, run.fields.back(), steps ? s["steps"].back() : s);
     run.summary["subsurface"] = subsurface_json(*run.subsurface, run.grid.dimension);
+    if (yields) run.summary["yield"] = first_yield_json(first_yield(c, run), run.grid.dimension);
   }
   return run;
 }
