@@ -173,4 +173,51 @@ TEST_F(CliSubsurface, FirstYieldOfASphereIsAtHertzsPeakPressure) {
   expect_input_error("validate " + write_case(bad), "materials.base.yield");
 }
 
+/// Melan's shakedown of a rolling line contact (Johnson 9.2, Fig. 9.7; Tresca in the x-z plane):
+/// frictionless p0/k = 4.0 at z = 0.5 b with the elastic limit 3.3; with full-slip traction
+/// mu = 0.2 the subsurface limit p0 / max|sigma_xz| = 3.20, from mu = 0.4 the surface's 1/mu.
+TEST_F(CliSubsurface, ShakedownOfARollingLineContactIsJohnsons) {
+  const double E = 2.1e11, nu = 0.3, R = 0.02, P = 1e5;
+  const auto h = dc::hertz::cylinder2d(R, P, E / (2.0 * (1.0 - nu * nu)));
+  const json base = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "carter-2d.json"));
+  auto rolling = [&](double mu, double p0_over_k, const char* criterion) {
+    json c = base;
+    c["friction"]["mu"] = mu;
+    // Full slip: a creepage of 3 mu b / R (Carter's saturation is mu b / R).
+    c["tangential"] = {{"regime", "rolling"}, {"creepage", {-3.0 * mu * h.a / R}}, {"velocity", 1.0}};
+    c["grid"] = {{"nx", 400}, {"x", {-3.0 * h.a, 3.0 * h.a}}};
+    c["accuracy"] = {{"estimate", false}};
+    const double k = h.p0 / p0_over_k;
+    c["materials"]["base"]["yield"] = {{criterion, std::string(criterion) == "tresca_k" ? k : k * std::sqrt(3.0)}};
+    c["shakedown"] = true;
+    c["subsurface"] = {{"depths", "0:" + std::to_string(1.2 * h.a) + ":61"}};
+    c["output"] = {{"plots", false}};
+    return solve(c).at("shakedown");
+  };
+  // 400 strips over +-3 b, depths every b/50: within 1 %.
+  json s = rolling(0.0, 3.0, "tresca_k");
+  EXPECT_EQ(s.at("status"), "optimal");
+  EXPECT_NEAR(s.at("shakedown_p0_over_k").get<double>(), 4.0, 0.04);
+  EXPECT_NEAR(s.at("elastic_limit_load_factor").get<double>() * 3.0, 3.3, 0.033);
+  EXPECT_NEAR(s.at("critical_depth").get<double>() / h.a, 0.5, 0.03);
+  EXPECT_EQ(s.at("verdict"), "elastic");
+  EXPECT_LT(s.at("certificate").at("duality_gap").get<double>(), 1e-6);
+  EXPECT_EQ(rolling(0.0, 3.6, "tresca_k").at("verdict"), "shakedown");
+  EXPECT_EQ(rolling(0.0, 4.4, "von_mises").at("verdict"), "beyond");
+  s = rolling(0.2, 3.0, "tresca_k");
+  EXPECT_NEAR(s.at("traction_coefficient").get<double>(), 0.2, 1e-6);
+  EXPECT_NEAR(s.at("shakedown_p0_over_k").get<double>(), 3.20, 0.032);
+  s = rolling(0.4, 3.0, "tresca_k");
+  EXPECT_NEAR(s.at("shakedown_p0_over_k").get<double>(), 2.5, 0.025);
+  EXPECT_NEAR(s.at("critical_depth").get<double>(), 0.0, 1e-12);  // the surface
+  EXPECT_EQ(s.at("verdict"), "beyond");
+  json sphere = sphere_case();
+  sphere["shakedown"] = true;
+  sphere["materials"]["base"]["yield"] = {{"von_mises", 1e9}};
+  expect_input_error("validate " + write_case(sphere), "shakedown");
+  json no_yield = base;
+  no_yield["shakedown"] = true;
+  expect_input_error("validate " + write_case(no_yield), "shakedown");
+}
+
 }  // namespace

@@ -60,6 +60,7 @@ const std::vector<BlockUse>& block_uses() {
       {"fe_body", {P::finite, P::dynamic}},
       {"accuracy", {P::normal, P::tangential, P::dynamic}},
       {"subsurface", {P::normal, P::tangential}},
+      {"shakedown", {P::normal, P::tangential}},
   };
   return uses;
 }
@@ -103,7 +104,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   top.allow({"schema", "name", "description", "problem", "dimension", "materials", "profile", "grid", "normal",
              "friction", "tangential", "fe_body", "body", "loads", "time", "traction_model", "dimensionless",
              "solver", "sweep", "output", "normal_model", "contact_model", "accuracy",
-             "subsurface"});
+             "subsurface", "shakedown"});
   Case c;
   c.source = document;
   for (auto it = document.begin(); it != document.end(); ++it) c.blocks.push_back(it.key());
@@ -150,6 +151,12 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
                        std::string("first yield is computed for problems normal and tangential, not '") +
                            to_string(c.problem) + "'");
   }
+  c.shakedown = top.boolean_or("shakedown", false);
+  if (c.shakedown && c.dimension != 2)
+    throw InputError("shakedown", "Melan's program here takes the residual stresses of a line contact (rho_xx(z), "
+                                  "rho_yy(z)): 2-D cases only (3-D rho(y, z): not yet)");
+  if (c.shakedown && !c.yields.base)
+    throw InputError("shakedown", "needs the base's yield strength (materials.base.yield: von_mises or tresca_k)");
   if (!top.has("accuracy") && c.problem == ProblemKind::dynamic) c.accuracy.estimate = false;  // opt-in there
   if (c.problem == ProblemKind::dynamic) {
     c.dynamic = read_dynamic(document, c);

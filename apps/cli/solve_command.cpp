@@ -190,6 +190,25 @@ int run_solve(const SolveArgs& args) {
     if (c.problem == ProblemKind::tangential) print_tangential(c, s);
     if (s.contains("accuracy")) runs::print_accuracy(s["accuracy"]);
     if (run.subsurface) runs::print_subsurface(*run.subsurface);
+    auto number = [](const nlohmann::json& v) {
+      char b[32];
+      if (!v.is_number()) return std::string("none");
+      std::snprintf(b, sizeof b, "%.4g", v.get<double>());
+      return std::string(b);
+    };
+    if (s.contains("yield"))
+      for (const auto& [body, y] : s["yield"].items())
+        std::printf("  yield %-5s      utilisation %s (%s); first yield at %s x the load%s\n", body.c_str(),
+                    number(y["utilisation"]).c_str(), y["criterion"].get<std::string>().c_str(),
+                    number(y["first_yield_load_factor"]).c_str(),
+                    y.contains("note") ? (" (" + y["note"].get<std::string>() + ")").c_str() : "");
+    if (s.contains("shakedown")) {
+      const nlohmann::json& sd = s["shakedown"];
+      std::printf("  shakedown        %s: limit %s x the load (p0/k %s), elastic limit %s x; p0/k %s, traction %s\n",
+                  sd["verdict"].get<std::string>().c_str(), number(sd["load_factor"]).c_str(),
+                  number(sd["shakedown_p0_over_k"]).c_str(), number(sd["elastic_limit_load_factor"]).c_str(),
+                  number(sd["p0_over_k"]).c_str(), number(sd["traction_coefficient"]).c_str());
+    }
     if (r.backend == "none") std::printf("note: %s\n", r.message.c_str());
     std::printf("wrote %s\n", summary_path.c_str());
     std::fflush(stdout);
@@ -202,6 +221,11 @@ int run_solve(const SolveArgs& args) {
     return runs::interrupted_exit_code();
   }
   if (runs::report_limits(limits, dir)) return runs::kExitBadInput;
+  if (s.contains("shakedown") && s["shakedown"].value("status", std::string()) != "optimal") {
+    std::cerr << "error: shakedown: the program did not converge (" << s["shakedown"].value("status", std::string())
+              << ": " << s["shakedown"].value("message", std::string()) << "); results written to " << dir << "\n";
+    return runs::kExitUnconverged;
+  }
   if (runs::accuracy_target_missed(s)) {
     const nlohmann::json& a = s["accuracy"];
     std::cerr << "error: accuracy: the target " << a["target"].get<double>() << " was not met (stopped by "
