@@ -220,4 +220,34 @@ TEST_F(CliSubsurface, ShakedownOfARollingLineContactIsJohnsons) {
   expect_input_error("validate " + write_case(no_yield), "shakedown");
 }
 
+/// Dang Van on the rolling passage of a frictionless line contact (alpha = 0): the mesoscopic
+/// shear amplitude is the orthogonal shear's, 0.25 p0 at 0.5 b, and the sigma_xz range 0.5 p0.
+TEST_F(CliSubsurface, DangVanOfFrictionlessLineRollingPeaksAtHalfTheHalfWidth) {
+  const double E = 2.1e11, nu = 0.3, R = 0.02, P = 3.0e5;
+  const auto h = dc::hertz::cylinder2d(R, P, E / (1.0 - nu * nu));
+  json c = {{"schema", "dyncontact/1"},
+            {"name", "line"},
+            {"problem", "normal"},
+            {"dimension", 2},
+            {"materials",
+             {{"body", {{"rigid", true}}},
+              {"base", {{"E", E}, {"nu", nu}, {"fatigue", {{"dang_van", {{"alpha", 0.0}, {"beta", 0.25 * h.p0}}}}}}}}},
+            {"profile", {{"type", "cylinder"}, {"radius", R}}},
+            {"grid", {{"nx", 400}, {"x", {-3.0 * h.a, 3.0 * h.a}}}},
+            {"normal", {{"force", P}}},
+            {"accuracy", {{"estimate", false}}},
+            {"subsurface", {{"depths", "0:" + std::to_string(1.2 * h.a) + ":61"}}},
+            {"output", {{"plots", false}}}};
+  const json f = solve(c).at("fatigue").at("base");
+  // 400 strips over +-3 b, depths every b/50: within 0.5 %.
+  EXPECT_NEAR(f.at("dang_van_max").get<double>(), 1.0, 0.005);
+  EXPECT_NEAR(f.at("at")[1].get<double>() / h.a, 0.5, 0.03);
+  EXPECT_NEAR(f.at("orthogonal_shear_range").get<double>() / h.p0, 0.5, 0.0025);
+  // With alpha > 0 the compressive hydrostatic stress lowers the index.
+  c["materials"]["base"]["fatigue"]["dang_van"]["alpha"] = 0.3;
+  EXPECT_LT(solve(c).at("fatigue").at("base").at("dang_van_max").get<double>(), 0.9);
+  c["materials"]["base"]["fatigue"] = {{"dang_van", {{"alpha", 0.3}}}};
+  expect_input_error("validate " + write_case(c), "materials.base.fatigue.dang_van.beta");
+}
+
 }  // namespace

@@ -146,6 +146,11 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   if (top.has("subsurface")) c.subsurface = read_subsurface(top.at("subsurface"));
   if (top.has("materials")) {
     c.yields = read_yields(top.at("materials"));
+    c.fatigue = read_fatigue_limits(top.at("materials"));
+    if ((c.fatigue.body || c.fatigue.base) && !static_problem)
+      throw InputError(c.fatigue.base ? "materials.base.fatigue" : "materials.body.fatigue",
+                       std::string("the rolling passage's fatigue index is computed for problems normal and "
+                                   "tangential, not '") + to_string(c.problem) + "'");
     if ((c.yields.body || c.yields.base) && !static_problem)
       throw InputError(c.yields.base ? "materials.base.yield" : "materials.body.yield",
                        std::string("first yield is computed for problems normal and tangential, not '") +

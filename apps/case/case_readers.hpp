@@ -30,6 +30,8 @@ AccuracySpec read_accuracy(const nlohmann::json& j, ProblemKind problem);
 
 /// materials.body.yield and materials.base.yield (the block read by read_materials).
 BodyYields read_yields(const nlohmann::json& materials);
+/// materials.body.fatigue and materials.base.fatigue (Dang Van's alpha and beta).
+BodyFatigue read_fatigue_limits(const nlohmann::json& materials);
 
 /// "subsurface": the depths, bodies and planes of the field inside the bodies.
 SubsurfaceSpec read_subsurface(const nlohmann::json& j);

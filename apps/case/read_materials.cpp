@@ -15,8 +15,9 @@ namespace {
 
 Elastic read_elastic(const json& j, const std::string& path) {
   JsonBlock o(j, path);
-  o.allow({"E", "G", "nu", "rigid", "yield"});
-  if (o.has("yield") && o.boolean_or("rigid", false)) throw InputError(o.key("yield"), "a rigid body does not yield");
+  o.allow({"E", "G", "nu", "rigid", "yield", "fatigue"});
+  for (const char* k : {"yield", "fatigue"})
+    if (o.has(k) && o.boolean_or("rigid", false)) throw InputError(o.key(k), "a rigid body has no stresses");
   if (o.boolean_or("rigid", false)) {
     for (const char* k : {"E", "G", "nu"})
       if (o.has(k)) throw InputError(o.key(k), "a rigid body takes no elastic constants");
@@ -45,7 +46,26 @@ std::optional<YieldSpec> read_yield(const json& materials, const char* body) {
   return y;
 }
 
+std::optional<FatigueSpec> read_fatigue(const json& materials, const char* body) {
+  if (!materials.is_object() || !materials.contains(body) || !materials[body].is_object() ||
+      !materials[body].contains("fatigue"))
+    return std::nullopt;
+  const std::string path = std::string("materials.") + body + ".fatigue";
+  JsonBlock o(materials[body]["fatigue"], path);
+  o.allow({"dang_van"});
+  JsonBlock d(o.at("dang_van"), path + ".dang_van");
+  d.allow({"alpha", "beta"});
+  FatigueSpec f;
+  f.alpha = d.number("alpha");
+  f.beta = d.positive("beta");
+  return f;
+}
+
 }  // namespace
+
+BodyFatigue read_fatigue_limits(const json& materials) {
+  return {read_fatigue(materials, "body"), read_fatigue(materials, "base")};
+}
 
 BodyYields read_yields(const json& materials) {
   return {read_yield(materials, "body"), read_yield(materials, "base")};

@@ -30,4 +30,14 @@ struct BodyYields {
   std::optional<YieldSpec> body, base;
 };
 
+/// materials.<body>.fatigue.dang_van: {"alpha", "beta"} (Dang Van's criterion tau + alpha p_h
+/// <= beta, core/dang_van.hpp), evaluated on the rolling passage of the solved load.
+struct FatigueSpec {
+  double alpha = 0.0, beta = 0.0;  ///< beta in Pa
+};
+
+struct BodyFatigue {
+  std::optional<FatigueSpec> body, base;
+};
+
 }  // namespace dc

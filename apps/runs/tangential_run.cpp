@@ -5,6 +5,7 @@
 
 #include "accuracy_run.hpp"
 #include "finite_run.hpp"
+#include "fatigue_run.hpp"
 #include "first_yield.hpp"
 #include "shakedown_run.hpp"
 #include "interrupt.hpp"
@@ -163,12 +164,14 @@ StaticRun run_static(const Case& c, bool progress) {
   // The field inside the bodies from the final state's tractions (subsurface_run.hpp), also for
   // a yield strength (first_yield.hpp).
   const bool yields = c.yields.body || c.yields.base;
-  if ((c.subsurface.enabled || yields || c.shakedown) && run.converged && !run.interrupted && !run.fields.empty()) {
+  const bool fatigue = c.fatigue.body || c.fatigue.base;
+  if ((c.subsurface.enabled || yields || c.shakedown || fatigue) && run.converged && !run.interrupted && !run.fields.empty()) {
     const nlohmann::json& s = run.summary;
     const bool steps = s.contains("steps") && s["steps"].is_array() && !s["steps"].empty();
     run.subsurface = compute_subsurface(c, run.grid, run.fields.back(), steps ? s["steps"].back() : s);
     run.summary["subsurface"] = subsurface_json(*run.subsurface, run.grid.dimension);
     if (yields) run.summary["yield"] = first_yield_json(first_yield(c, run), run.grid.dimension);
+    if (fatigue) run.summary["fatigue"] = fatigue_json(c, *run.subsurface);
     if (c.shakedown) run.summary["shakedown"] = shakedown_json(c, *run.subsurface, steps ? s["steps"].back() : s);
   }
   return run;
