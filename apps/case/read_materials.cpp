@@ -31,12 +31,17 @@ Elastic read_elastic(const json& j, const std::string& path) {
   return hasE ? Elastic::from_E_nu(o.number("E"), nu, path) : Elastic::from_G_nu(o.number("G"), nu, path);
 }
 
+/// materials.<body>.<key> when the case gives it (the block's shape checked by read_materials).
+const json* body_entry(const json& materials, const char* body, const char* key) {
+  if (!materials.is_object() || !materials.contains(body) || !materials[body].is_object()) return nullptr;
+  return materials[body].contains(key) ? &materials[body][key] : nullptr;
+}
+
 std::optional<YieldSpec> read_yield(const json& materials, const char* body) {
-  if (!materials.is_object() || !materials.contains(body) || !materials[body].is_object() ||
-      !materials[body].contains("yield"))
-    return std::nullopt;
+  const json* entry = body_entry(materials, body, "yield");
+  if (!entry) return std::nullopt;
   const std::string path = std::string("materials.") + body + ".yield";
-  JsonBlock o(materials[body]["yield"], path);
+  JsonBlock o(*entry, path);
   o.allow({"von_mises", "tresca_k"});
   if (o.has("von_mises") == o.has("tresca_k"))
     throw InputError(path, "give one of von_mises (the yield stress Y, Pa) or tresca_k (the shear yield k, Pa)");
@@ -47,11 +52,10 @@ std::optional<YieldSpec> read_yield(const json& materials, const char* body) {
 }
 
 std::optional<FatigueSpec> read_fatigue(const json& materials, const char* body) {
-  if (!materials.is_object() || !materials.contains(body) || !materials[body].is_object() ||
-      !materials[body].contains("fatigue"))
-    return std::nullopt;
+  const json* entry = body_entry(materials, body, "fatigue");
+  if (!entry) return std::nullopt;
   const std::string path = std::string("materials.") + body + ".fatigue";
-  JsonBlock o(materials[body]["fatigue"], path);
+  JsonBlock o(*entry, path);
   o.allow({"dang_van"});
   JsonBlock d(o.at("dang_van"), path + ".dang_van");
   d.allow({"alpha", "beta"});
