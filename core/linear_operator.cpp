@@ -150,7 +150,9 @@ std::vector<KernelSpectrum> kernel_spectra(const Grid& grid, const PaddedFft& ff
     for (int dj = -(grid.ny - 1); dj <= grid.ny - 1; ++dj)
       for (int di = -(grid.nx - 1); di <= grid.nx - 1; ++di)
         box[wrap(di, mx) + static_cast<std::size_t>(mx) * wrap(dj, my)] = t.at(di, dj);
+    throw_if_interrupted();
     fft.periodic_forward(box, spectrum);
+    throw_if_interrupted();
     spectra.emplace_back(spectrum, norm);
   }
   return spectra;

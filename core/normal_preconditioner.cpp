@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "fft_planning.hpp"
+#include "interrupt.hpp"
 #include "periodic_kernel.hpp"
 
 namespace dc {
@@ -19,11 +20,14 @@ NormalPreconditioner::NormalPreconditioner(const LinearOperator& compliance, con
   const int ic = grid.nx / 2, jc = grid.ny / 2;
   std::vector<double> unit(n_, 0.0), response;
   unit[grid.index(ic, jc)] = 1.0;
+  throw_if_interrupted();  // each step below takes a large grid a few tenths of a second
   compliance.apply(unit, response);
+  throw_if_interrupted();
   const int mx = fft_.mx(), my = fft_.my();
   const std::vector<double> box = periodic_kernel_box(response, 0, grid, mx, my);
   std::vector<double> spectrum;
   fft_.periodic_forward(box, spectrum);
+  throw_if_interrupted();
   // The kernel is even, so its spectrum is real; truncation can leave a few tiny or negative
   // values far in the tail: bound them below by a small fraction of the largest.
   const std::size_t ncplx = fft_.spectrum_size();
