@@ -168,6 +168,13 @@ TEST_F(CliSubsurface, FirstYieldOfASphereIsAtHertzsPeakPressure) {
   const json s = solve(c);
   EXPECT_TRUE(s.at("yield").at("base").at("first_yield_load_factor").is_null());
   EXPECT_NE(s.at("yield").at("base").at("note").get<std::string>().find("grid's edge"), std::string::npos);
+  // A yield strength on a body the block leaves out still gets that body's field.
+  json only_body = sphere_case();
+  only_body["subsurface"] = {{"bodies", {"body"}}};
+  only_body["materials"]["base"]["yield"] = {{"von_mises", 1e9}};
+  const json ob = solve(only_body);
+  EXPECT_GT(ob.at("yield").at("base").at("utilisation").get<double>(), 0.0);
+  EXPECT_TRUE(ob.at("subsurface").contains("base"));
   json bad = sphere_case();
   bad["materials"]["base"]["yield"] = {{"von_mises", 1e9}, {"tresca_k", 5e8}};
   expect_input_error("validate " + write_case(bad), "materials.base.yield");

@@ -168,7 +168,15 @@ StaticRun run_static(const Case& c, bool progress) {
   if ((c.subsurface.enabled || yields || c.shakedown || fatigue) && run.converged && !run.interrupted && !run.fields.empty()) {
     const nlohmann::json& s = run.summary;
     const bool steps = s.contains("steps") && s["steps"].is_array() && !s["steps"].empty();
-    run.subsurface = compute_subsurface(c, run.grid, run.fields.back(), steps ? s["steps"].back() : s);
+    // The bodies the block names, and every body a yield, fatigue or shakedown verdict needs.
+    Case fc = c;
+    std::vector<std::string>& bodies = fc.subsurface.bodies;
+    auto need = [&](bool wanted, const char* name) {
+      if (wanted && std::find(bodies.begin(), bodies.end(), name) == bodies.end()) bodies.push_back(name);
+    };
+    need(c.yields.base || c.fatigue.base || c.shakedown, "base");
+    need(c.yields.body || c.fatigue.body, "body");
+    run.subsurface = compute_subsurface(fc, run.grid, run.fields.back(), steps ? s["steps"].back() : s);
     run.summary["subsurface"] = subsurface_json(*run.subsurface, run.grid.dimension);
     if (yields) run.summary["yield"] = first_yield_json(first_yield(c, run), run.grid.dimension);
     if (fatigue) run.summary["fatigue"] = fatigue_json(c, *run.subsurface);
