@@ -131,9 +131,113 @@ TEST_F(CliSubsurface, BadSubsurfaceInputNamesTheKey) {
     const std::string key = block.contains("plane") ? "subsurface.plane" : "subsurface." + block.begin().key();
     expect_input_error("validate " + write_case(c), key);
   }
-  json dynamic = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "ball-impact.json"));
-  dynamic["subsurface"] = json::object();
-  expect_input_error("validate " + write_case(dynamic), "subsurface");
+  json sweep = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "ball-impact-speeds.json"));
+  sweep["subsurface"] = json::object();
+  expect_input_error("validate " + write_case(sweep), "subsurface");
+}
+
+/// The largest von Mises stress under Hertz's sphere (on its axis, Johnson 3.45), sampled every
+/// a/1000 down to 1.5 a, in units of p0.
+double hertz_sphere_max_von_mises(double nu) {
+  double peak = 0.0;
+  for (int k = 1; k <= 1500; ++k) {
+    const auto axis = dc::closed_form::hertz_sphere_axis(k * 1e-3, 1.0, 1.0, nu);
+    peak = std::max(peak, std::abs(axis.sigma_z - axis.sigma_r));
+  }
+  return peak;
+}
+
+// A loading history (normal loads 20, 60 then 40 N on the sphere): every step's field at the same
+// depths, each step's maximum Hertz's for its load, the worst over the history at the 60 N step,
+// subsurface_<step>.vti in subsurface.pvd, and the yield utilisation of that worst state.
+TEST_F(CliSubsurface, HistoryKeepsTheWorstStateAndWritesASeries) {
+  json c = sphere_case();
+  c["problem"] = "tangential";
+  c["friction"] = {{"law", "coulomb"}, {"mu", 0.3}};
+  c["tangential"] = {{"regime", "shift"},
+                     {"history",
+                      {{{"force", {0.0, 0.0}}, {"normal", {{"force", 20.0}}}},
+                       {{"force", {0.0, 0.0}}, {"normal", {{"force", 60.0}}}},
+                       {{"force", {0.0, 0.0}}, {"normal", {{"force", 40.0}}}}}}};
+  const dc::MaterialPair m{dc::Elastic::from_E_nu(1.17e11, 0.34), dc::Elastic::from_E_nu(2.1e11, 0.3)};
+  const auto h = dc::hertz::sphere(0.008, 60.0, m.E_star());
+  c["grid"] = {{"nx", 64}, {"ny", 64}, {"x", {-1.5 * h.a, 1.5 * h.a}}, {"y", {-1.5 * h.a, 1.5 * h.a}}};
+  c["subsurface"] = {{"depths", "0:" + std::to_string(1.5 * h.a) + ":61"}, {"bodies", {"base"}}};
+  c["materials"]["base"]["yield"] = {{"von_mises", 1.0e9}};
+  const json s = solve(c);
+  const json& sub = s.at("subsurface");
+  ASSERT_EQ(sub.at("states").size(), 3u);
+  const double vm = hertz_sphere_max_von_mises(0.3);  // 0.62 p0
+  const double loads[3] = {20.0, 60.0, 40.0};
+  for (int k = 0; k < 3; ++k) {
+    const json& state = sub.at("states")[k];
+    EXPECT_EQ(state.at("step"), k);
+    EXPECT_EQ(state.at("file"), "subsurface_" + std::to_string(k) + ".vti");
+    EXPECT_TRUE(std::filesystem::exists(dir_ / "out" / state.at("file").get<std::string>()));
+    // dx = a(60 N)/21, depths every a(60 N)/40: within 1.5 % of Hertz's.
+    const double p0 = dc::hertz::sphere(0.008, loads[k], m.E_star()).p0;
+    EXPECT_NEAR(state.at("base").at("max_von_mises").get<double>() / (vm * p0), 1.0, 0.015) << "step " << k;
+  }
+  const json& base = sub.at("base");
+  EXPECT_EQ(base.at("step"), 1);
+  EXPECT_EQ(base.at("max_von_mises"), sub.at("states")[1].at("base").at("max_von_mises"));
+  EXPECT_NEAR(base.at("at")[2].get<double>() / h.a, 0.48, 0.04);
+  const json& y = s.at("yield").at("base");
+  EXPECT_NEAR(y.at("utilisation").get<double>(), base.at("max_von_mises").get<double>() / 1.0e9, 1e-12);
+  EXPECT_EQ(y.at("step"), 1);
+  EXPECT_TRUE(y.at("first_yield_load_factor").is_null());
+  // The series: ParaView's collection of the three images, and the final state's image.
+  EXPECT_EQ(s.at("files").at("subsurface_series"), "subsurface.pvd");
+  const std::string pvd = slurp(dir_ / "out" / "subsurface.pvd");
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NE(pvd.find("timestep=\"" + std::to_string(k) + "\" group=\"\" part=\"0\" file=\"subsurface_" +
+                       std::to_string(k) + ".vti\""),
+              std::string::npos)
+        << pvd;
+  EXPECT_EQ(s.at("files").at("subsurface"), "subsurface.vti");
+  // Every second step: steps 0 and 2 (the last always).
+  c["output"]["snapshot_every"] = 2;
+  const json every = solve(c);
+  ASSERT_EQ(every.at("subsurface").at("states").size(), 2u);
+  EXPECT_EQ(every.at("subsurface").at("states")[1].at("step"), 2);
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "out" / "subsurface_1.vti"));  // the earlier run's removed
+}
+
+// A dynamic run (the Hertz impact of examples/ball-impact.json): the field at its snapshots and at
+// the step of the largest contact force, which is Hertz's static contact under that force (the
+// impact is quasi-static: its contact time is 10^3 x the time elastic waves cross the contact).
+TEST_F(CliSubsurface, DynamicRunsFieldAtItsPeakIsHertzsUnderThePeakForce) {
+  json c = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "ball-impact.json"));
+  c["output"] = {{"plots", false}, {"snapshot_every", 40}};
+  c["subsurface"] = {{"depths", "0:2.4e-4:41"}};
+  c["materials"]["base"]["yield"] = {{"tresca_k", 1.0e9}};
+  const json s = solve(c);
+  const json& sub = s.at("subsurface");
+  const json& states = sub.at("states");
+  // 160 steps: snapshots at 40, 80, 120, 160 and the peak (about step 69) between them.
+  ASSERT_EQ(states.size(), 5u);
+  const json* peak = nullptr;
+  for (const json& st : states)
+    if (st.value("peak_normal_force", false)) peak = &st;
+  ASSERT_NE(peak, nullptr);
+  const double F = s.at("peaks").at("max_normal_force").get<double>();
+  const dc::Elastic steel = dc::Elastic::from_E_nu(2.1e11, 0.3);
+  const auto h = dc::hertz::sphere(0.01, F, dc::MaterialPair{steel, steel}.E_star());
+  // 32^2 over +-1.3 a (dx = a/12), depths every 0.03 a: within 3 % of Hertz's under the peak force.
+  const double vm = hertz_sphere_max_von_mises(0.3);
+  EXPECT_NEAR(peak->at("base").at("max_von_mises").get<double>() / (vm * h.p0), 1.0, 0.03);
+  EXPECT_NEAR(sub.at("base").at("max_von_mises").get<double>() / (vm * h.p0), 1.0, 0.03);
+  EXPECT_EQ(sub.at("base").at("step"), peak->at("step"));
+  EXPECT_NEAR(sub.at("base").at("time").get<double>(), peak->at("time").get<double>(), 1e-15);
+  for (const json& st : states)
+    EXPECT_LE(st.at("base").at("max_von_mises").get<double>(), sub.at("base").at("max_von_mises").get<double>());
+  // Tresca's utilisation of the worst state.
+  EXPECT_NEAR(s.at("yield").at("base").at("utilisation").get<double>(),
+              sub.at("base").at("max_tresca").get<double>() / 1.0e9, 1e-12);
+  const std::string pvd = slurp(dir_ / "out" / "subsurface.pvd");
+  std::size_t datasets = 0;
+  for (std::size_t at = pvd.find("<DataSet"); at != std::string::npos; at = pvd.find("<DataSet", at + 1)) ++datasets;
+  EXPECT_EQ(datasets, 5u) << pvd;
 }
 
 /// First yield of Hertz's sphere (steel on steel, nu = 0.3): von Mises at p0 = 1.60 Y, Tresca at

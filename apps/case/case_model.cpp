@@ -59,7 +59,7 @@ const std::vector<BlockUse>& block_uses() {
       {"sweep", {P::paper_cylinder, P::dynamic}},
       {"fe_body", {P::finite, P::dynamic}},
       {"accuracy", {P::normal, P::tangential, P::dynamic}},
-      {"subsurface", {P::normal, P::tangential}},
+      {"subsurface", {P::normal, P::tangential, P::dynamic}},
       {"shakedown", {P::normal, P::tangential}},
   };
   return uses;
@@ -151,9 +151,9 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
       throw InputError(c.fatigue.base ? "materials.base.fatigue" : "materials.body.fatigue",
                        std::string("the rolling passage's fatigue index is computed for problems normal and "
                                    "tangential, not '") + to_string(c.problem) + "'");
-    if ((c.yields.body || c.yields.base) && !static_problem)
+    if ((c.yields.body || c.yields.base) && !static_problem && c.problem != ProblemKind::dynamic)
       throw InputError(c.yields.base ? "materials.base.yield" : "materials.body.yield",
-                       std::string("first yield is computed for problems normal and tangential, not '") +
+                       std::string("first yield is computed for problems normal, tangential and dynamic, not '") +
                            to_string(c.problem) + "'");
   }
   c.shakedown = top.boolean_or("shakedown", false);
@@ -162,6 +162,9 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
                                   "rho_yy(z)): 2-D cases only (3-D rho(y, z): not yet)");
   if (c.shakedown && !c.yields.base)
     throw InputError("shakedown", "needs the base's yield strength (materials.base.yield: von_mises or tresca_k)");
+  if (top.has("sweep") && (c.subsurface.enabled || c.yields.body || c.yields.base))
+    throw InputError(c.subsurface.enabled ? "subsurface" : "materials.base.yield",
+                     "the subsurface field is computed for single runs, not a sweep's (run the values one by one)");
   if (!top.has("accuracy") && c.problem == ProblemKind::dynamic) c.accuracy.estimate = false;  // opt-in there
   if (c.problem == ProblemKind::dynamic) {
     c.dynamic = read_dynamic(document, c);

@@ -20,6 +20,7 @@
 #include "plot_writer.hpp"
 #include "accuracy_run.hpp"
 #include "result_limits.hpp"
+#include "subsurface_plots.hpp"
 #include "subsurface_writer.hpp"
 #include "summary_writer.hpp"
 #include "table_ranks.hpp"
@@ -129,8 +130,9 @@ int run_solve(const SolveArgs& args) {
   }
 
   runs::StaticRun run;
+  output::SubsurfaceSnapshots subsurface_series(dir);  // a history's states (subsurface_series.hpp)
   try {
-    run = runs::run_static(c, !args.quiet);
+    run = runs::run_static(c, !args.quiet, c.subsurface.enabled ? runs::subsurface_file_sink(subsurface_series) : nullptr);
   } catch (const Interrupted&) {  // nothing finished: a summary that says so
     const std::string path = output::write_summary(dir, interrupted_summary(c));
     std::cerr << "interrupted before a result was finished; wrote " << path << '\n';
@@ -156,9 +158,10 @@ int run_solve(const SolveArgs& args) {
     output::write_fields(dir, solved.grid, run.fields.back());
     files["fields"] = "fields.csv";
   }
+  std::vector<output::SubsurfaceBody> bodies;  // the subsurface block's field of the final state
   if (run.subsurface && c.subsurface.enabled) {  // subsurface.vti (evenly spaced depths) and the planes through the worst points
-    std::vector<output::SubsurfaceBody> bodies;
-    for (const runs::BodySubsurface& b : run.subsurface->bodies) bodies.push_back({b.name, &b.field, &b.measures});
+    bodies = runs::subsurface_bodies(*run.subsurface);
+    if (subsurface_series.count() > 0) files["subsurface_series"] = subsurface_series.collection();
     if (!bodies.empty() && output::evenly_spaced(run.subsurface->depths))
       files["subsurface"] = output::write_subsurface_vti(dir, bodies);
     if (!bodies.empty() && c.subsurface.planes) files["subsurface_planes"] = output::write_subsurface_planes(dir, bodies);
@@ -167,7 +170,10 @@ int run_solve(const SolveArgs& args) {
     Case plotted = solved;
     plotted.normal = run.normal;  // the closed-form curve of the last step's load
     nlohmann::json plots = nlohmann::json::array();
-    for (const auto& p : output::write_static_plots(dir, plotted, run.fields.back()))
+    std::vector<output::GnuplotFigure> planes;
+    if (!bodies.empty() && c.subsurface.planes && run.subsurface->depths.size() > 1)
+      planes = output::subsurface_plane_figures(dir, c.name, bodies);
+    for (const auto& p : output::write_static_plots(dir, plotted, run.fields.back(), planes))
       plots.push_back(std::filesystem::path(p).filename().string());
     files["plots"] = plots;
   }
@@ -189,7 +195,10 @@ int run_solve(const SolveArgs& args) {
     std::printf("  %-16s %d of %zu elements\n", "in contact", s["n_contact"].get<int>(), solved.grid.size());
     if (c.problem == ProblemKind::tangential) print_tangential(c, s);
     if (s.contains("accuracy")) runs::print_accuracy(s["accuracy"]);
-    if (run.subsurface) runs::print_subsurface(*run.subsurface);
+    if (run.subsurface_series)
+      runs::print_subsurface_series(*run.subsurface_series, false);
+    else if (run.subsurface)
+      runs::print_subsurface(*run.subsurface);
     auto number = [](const nlohmann::json& v) {
       char b[32];
       if (!v.is_number()) return std::string("none");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "finite_body.hpp"
+#include "pvd_collection.hpp"
 #include "rigid_body.hpp"
 
 namespace dc::output {
@@ -22,7 +23,7 @@ class BodySnapshots {
 
  private:
   std::string dir_;
-  std::vector<std::pair<double, std::string>> files_;  // time, file
+  std::vector<PvdEntry> files_;
 };
 
 }  // namespace dc::output

@@ -10,8 +10,8 @@
 namespace dc::output {
 
 /// Whether `name` is one of the result files a run writes (summary.json, fields[_k].csv,
-/// timeseries[_k].csv, compare.json, the plots and their data, body.vtu, body_<k>.vtu and
-/// body.pvd): a new run removes these from its folder first. A run kind that writes new file
+/// timeseries[_k].csv, compare.json, the plots and their data, body.vtu, body_<k>.vtu,
+/// body.pvd, subsurface.vti, subsurface_<k>.vti and subsurface.pvd, the planes' CSV): a new run removes these from its folder first. A run kind that writes new file
 /// names lists them here.
 bool is_result_file(const std::string& name);
 

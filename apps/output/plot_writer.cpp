@@ -34,7 +34,7 @@ bool any_nonzero(const std::vector<double>& v) {
 
 }  // namespace
 
-std::vector<std::string> write_static_plots(const std::string& dir, const Case& c, const StaticFields& f) {
+std::vector<GnuplotFigure> static_plot_figures(const std::string& dir, const Case& c, const StaticFields& f) {
   namespace fs = std::filesystem;
   const Grid& g = c.grid;
   const auto ref = analytic_reference(c);
@@ -179,6 +179,13 @@ std::vector<std::string> write_static_plots(const std::string& dir, const Case& 
     cm << "plot \"map.dat\" using ($1*1e3):($2*1e3):4 with image notitle\n";
     figures.push_back({"contact_map", cm.str()});
   }
+  return figures;
+}
+
+std::vector<std::string> write_static_plots(const std::string& dir, const Case& c, const StaticFields& f,
+                                            const std::vector<GnuplotFigure>& more) {
+  std::vector<GnuplotFigure> figures = static_plot_figures(dir, c, f);
+  figures.insert(figures.end(), more.begin(), more.end());
   return render_gnuplot(dir, c.name, figures);
 }
 

@@ -60,7 +60,8 @@ bool evenly_spaced(const std::vector<double>& depths) {
   return step > 0.0;
 }
 
-std::string write_subsurface_vti(const std::string& dir, const std::vector<SubsurfaceBody>& bodies) {
+std::string write_subsurface_vti(const std::string& dir, const std::vector<SubsurfaceBody>& bodies,
+                                 const std::string& name) {
   const SubsurfaceResult& first = *bodies.front().field;
   const Grid& g = first.grid;
   const std::vector<double>& d = first.depths;
@@ -96,8 +97,15 @@ std::string write_subsurface_vti(const std::string& dir, const std::vector<Subsu
     }
   }
   out += "</PointData>\n</Piece>\n</ImageData>\n</VTKFile>\n";
-  write_file_whole((std::filesystem::path(dir) / "subsurface.vti").string(), out);
-  return "subsurface.vti";
+  write_file_whole((std::filesystem::path(dir) / name).string(), out);
+  return name;
+}
+
+std::string SubsurfaceSnapshots::write(const std::vector<SubsurfaceBody>& bodies, int step, double time) {
+  const std::string name = write_subsurface_vti(dir_, bodies, "subsurface_" + std::to_string(step) + ".vti");
+  files_.push_back({time, name});
+  write_pvd((std::filesystem::path(dir_) / collection()).string(), files_);
+  return name;
 }
 
 std::vector<std::string> write_subsurface_planes(const std::string& dir, const std::vector<SubsurfaceBody>& bodies) {

@@ -14,6 +14,7 @@
 #include "dynamic_series.hpp"
 #include "dynamic_sweep.hpp"
 #include "exit_codes.hpp"
+#include "first_yield.hpp"
 #include "fe_body_estimate.hpp"
 #include "fields_writer.hpp"
 #include "gnuplot_figures.hpp"
@@ -23,6 +24,7 @@
 #include "progress.hpp"
 #include "result_limits.hpp"
 #include "summary_entries.hpp"
+#include "subsurface_series.hpp"
 #include "summary_writer.hpp"
 #ifdef DYNCONTACT_WITH_FE
 #include "body_snapshots.hpp"
@@ -139,25 +141,45 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   output::BodySnapshots body_series(dir);  // an fe_body: body_NNNN.vtu per snapshot and body.pvd
 #endif
   Grid grid = c.grid;  // of the run the snapshots are taken from (an accuracy target chooses it)
+  SubsurfaceStates field_states;  // the snapshots' and the peak load's tractions (subsurface_series.hpp)
+  const bool subsurface = c.subsurface.enabled || c.yields.base || c.yields.body;
   const auto write_snapshot = [&](const dynamics::DynamicSample& s) {
-    if (s.step % every == 0) {
+    if (every > 0 && s.step % every == 0) {
       const std::string name = "fields_" + std::to_string(s.step) + ".csv";
-      output::write_fields(dir, grid, step_fields(grid, s.contact_state), name);
+      output::StaticFields fields = step_fields(grid, s.contact_state);
+      output::write_fields(dir, grid, fields, name);
       json snapshot = {{"step", s.step}, {"time", s.state.time}, {"file", name}};
 #ifdef DYNCONTACT_WITH_FE
       if (s.finite_body) snapshot["body"] = body_series.write(*s.finite_body, s.state);
 #endif
       snapshots.push_back(snapshot);
+      if (subsurface) field_states.keep(s.step, s.state.time, std::move(fields));
     }
+    if (subsurface && field_states.exceeds_peak(std::abs(s.contact.force.z())))
+      field_states.keep_peak(s.step, s.state.time, std::abs(s.contact.force.z()), step_fields(grid, s.contact_state));
   };
-  const DynamicOutcome out =
-      simulate_dynamic_with_accuracy(c, !quiet, every > 0 ? std::function(write_snapshot) : nullptr, &grid);
+  const DynamicOutcome out = simulate_dynamic_with_accuracy(
+      c, !quiet, every > 0 || subsurface ? std::function(write_snapshot) : nullptr, &grid);
   const dynamics::DynamicResult& r = out.result;
   const double elapsed = out.elapsed;
   output::write_file_whole((fs::path(dir) / "timeseries.csv").string(), out.timeseries);
   json summary = out.summary;
   json files = {{"summary", "summary.json"}, {"timeseries", "timeseries.csv"}};
   if (!snapshots.empty()) files["snapshots"] = snapshots;
+  std::optional<SubsurfaceSeries> series;  // the field of the snapshots and the peak load, the worst of them
+  if (subsurface && !r.interrupted && !field_states.empty()) {
+    Case fc = with_verdict_bodies(c);
+    if (c.dynamic && c.dynamic->fe_body) std::erase(fc.subsurface.bodies, std::string("body"));  // its stresses: body.pvd
+    output::SubsurfaceSnapshots images(dir);
+    series = subsurface_series(fc, grid, field_states.states(),
+                               c.subsurface.enabled ? subsurface_file_sink(images) : SubsurfaceSink());
+    summary["subsurface"] = subsurface_series_json(*series, grid.dimension, true);
+    for (json& state : summary["subsurface"]["states"])
+      if (state["step"] == field_states.peak_step()) state["peak_normal_force"] = true;
+    if (c.dynamic && c.dynamic->fe_body) summary["subsurface"]["body"] = {{"finite_element", true}, {"see", "body.pvd"}};
+    if (c.yields.base || c.yields.body) summary["yield"] = worst_yield_json(c, *series, grid.dimension, true);
+    if (images.count() > 0) files["subsurface_series"] = images.collection();
+  }
 #ifdef DYNCONTACT_WITH_FE
   if (body_series.count() > 0) files["body_series"] = body_series.collection();
 #endif
@@ -186,6 +208,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
                 r.final.time, r.final.position.x(), r.final.position.y(), r.final.position.z(), r.final.velocity.x(),
                 r.final.velocity.y(), r.final.velocity.z(), r.final.omega.x(), r.final.omega.y(), r.final.omega.z());
     if (summary.contains("accuracy")) print_accuracy(summary["accuracy"]);
+    if (series) print_subsurface_series(*series, true);
     std::printf("wrote %s\n", path.c_str());
     std::fflush(stdout);
   }

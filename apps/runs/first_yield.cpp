@@ -80,6 +80,29 @@ std::vector<FirstYield> first_yield(const Case& c, const StaticRun& run) {
   return out;
 }
 
+nlohmann::json worst_yield_json(const Case& c, const SubsurfaceSeries& series, int dimension, bool timed) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const WorstSubsurface& b : series.bodies) {
+    const std::optional<YieldSpec>& y = b.name == "base" ? c.yields.base : c.yields.body;
+    if (!y) continue;
+    const WorstSubsurface::At& w = y->von_mises ? b.von_mises : b.tresca;
+    const FieldExtreme& e = w.extreme;
+    nlohmann::json entry = {{"criterion", y->von_mises ? "von_mises" : "tresca"},
+                            {"strength", y->strength},
+                            {"utilisation", e.value / y->strength},
+                            {"at", dimension == 3 ? nlohmann::json::array({e.x, e.y, e.depth})
+                                                  : nlohmann::json::array({e.x, e.depth})},
+                            {"step", w.step},
+                            {"first_yield_load_factor", nlohmann::json()},
+                            {"solves", 0},
+                            {"note", "the worst state of the run; the first-yield load factor is solved for single "
+                                     "normal problems"}};
+    if (timed) entry["time"] = w.time;
+    j[b.name] = std::move(entry);
+  }
+  return j;
+}
+
 nlohmann::json first_yield_json(const std::vector<FirstYield>& yields, int dimension) {
   nlohmann::json j = nlohmann::json::object();
   for (const FirstYield& f : yields) {

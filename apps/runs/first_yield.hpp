@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "case_model.hpp"
-#include "subsurface_run.hpp"
+#include "subsurface_series.hpp"
 
 namespace dc::runs {
 
@@ -37,5 +37,10 @@ std::vector<FirstYield> first_yield(const Case& c, const StaticRun& run);
 /// summary.json's "yield": per body utilisation, at, criterion, strength, first_yield_load_factor
 /// (null with a "note" when it could not be found), solves.
 nlohmann::json first_yield_json(const std::vector<FirstYield>& yields, int dimension);
+
+/// summary.json's "yield" of a run in time (a history, a dynamic run): per body with a strength
+/// the utilisation of the worst state (subsurface_series.hpp), at, step (`timed`: time),
+/// criterion, strength, first_yield_load_factor null with a note (not solved for runs in time).
+nlohmann::json worst_yield_json(const Case& c, const SubsurfaceSeries& series, int dimension, bool timed);
 
 }  // namespace dc::runs

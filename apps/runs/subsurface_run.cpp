@@ -6,21 +6,41 @@
 
 namespace dc::runs {
 
-std::vector<double> subsurface_depths(const SubsurfaceSpec& spec, const nlohmann::json& summary) {
+Case with_verdict_bodies(const Case& c) {
+  Case fc = c;
+  std::vector<std::string>& bodies = fc.subsurface.bodies;
+  auto need = [&](bool wanted, const char* name) {
+    if (wanted && std::find(bodies.begin(), bodies.end(), name) == bodies.end()) bodies.push_back(name);
+  };
+  need(c.yields.base || c.fatigue.base || c.shakedown, "base");
+  need(c.yields.body || c.fatigue.body, "body");
+  return fc;
+}
+
+std::vector<double> subsurface_depths(const SubsurfaceSpec& spec, double half_width) {
   if (!spec.depths.empty()) return spec.depths;
+  constexpr int kDepths = 32;
+  std::vector<double> depths;
+  for (int k = 0; k < kDepths; ++k) depths.push_back(1.5 * half_width * k / (kDepths - 1));
+  return depths;
+}
+
+std::vector<double> subsurface_depths(const SubsurfaceSpec& spec, const nlohmann::json& summary) {
   const double half = summary.contains("contact_half_width")
                           ? summary.value("contact_half_width", 0.0)
                           : std::max(summary.value("contact_half_width_x", 0.0), summary.value("contact_half_width_y", 0.0));
-  constexpr int kDepths = 32;
-  std::vector<double> depths;
-  for (int k = 0; k < kDepths; ++k) depths.push_back(1.5 * half * k / (kDepths - 1));
-  return depths;
+  return subsurface_depths(spec, half);
 }
 
 SubsurfaceRun compute_subsurface(const Case& c, const Grid& grid, const output::StaticFields& fields,
                                  const nlohmann::json& summary) {
+  return compute_subsurface(c, grid, fields, subsurface_depths(c.subsurface, summary));
+}
+
+SubsurfaceRun compute_subsurface(const Case& c, const Grid& grid, const output::StaticFields& fields,
+                                 const std::vector<double>& depths) {
   SubsurfaceRun run;
-  run.depths = subsurface_depths(c.subsurface, summary);
+  run.depths = depths;
   SurfaceTractions t{fields.p, fields.tx, grid.dimension == 3 ? fields.ty : std::vector<double>()};
   for (std::vector<double>* v : {&t.p, &t.tau_x, &t.tau_y})  // what the solve left undefined is no load
     for (double& x : *v)
@@ -48,6 +68,12 @@ SubsurfaceRun compute_subsurface(const Case& c, const Grid& grid, const output::
     run.bodies.push_back(std::move(b));
   }
   return run;
+}
+
+std::vector<output::SubsurfaceBody> subsurface_bodies(const SubsurfaceRun& run) {
+  std::vector<output::SubsurfaceBody> bodies;
+  for (const BodySubsurface& b : run.bodies) bodies.push_back({b.name, &b.field, &b.measures});
+  return bodies;
 }
 
 nlohmann::json subsurface_json(const SubsurfaceRun& run, int dimension) {

@@ -11,6 +11,7 @@
 #include "case_model.hpp"
 #include "static_fields.hpp"
 #include "subsurface_field.hpp"
+#include "subsurface_writer.hpp"
 
 namespace dc::runs {
 
@@ -28,12 +29,25 @@ struct SubsurfaceRun {
   std::vector<std::string> rigid;      ///< named but rigid: no field
 };
 
-/// The depths of `spec`, or 32 from 0 to 1.5 x the contact's larger half-width in `summary`.
+/// `c` with c.subsurface.bodies holding every body a yield, fatigue or shakedown verdict needs
+/// besides those the block names.
+Case with_verdict_bodies(const Case& c);
+
+/// The depths of `spec`, or 32 from 0 to 1.5 x `half_width` (the contact's larger half-width).
+std::vector<double> subsurface_depths(const SubsurfaceSpec& spec, double half_width);
+/// The same with the half-width of `summary` (contact_half_width, or the larger of _x and _y).
 std::vector<double> subsurface_depths(const SubsurfaceSpec& spec, const nlohmann::json& summary);
 
-/// The field of every named body of `c` (on `grid`, the grid solved) under `fields`' tractions.
+/// The field of every named body of `c` (on `grid`, the grid solved) under `fields`' tractions
+/// at `depths`.
+SubsurfaceRun compute_subsurface(const Case& c, const Grid& grid, const output::StaticFields& fields,
+                                 const std::vector<double>& depths);
+/// The same at subsurface_depths(c.subsurface, summary).
 SubsurfaceRun compute_subsurface(const Case& c, const Grid& grid, const output::StaticFields& fields,
                                  const nlohmann::json& summary);
+
+/// The bodies of `run` as the writers take them (output/subsurface_writer.hpp).
+std::vector<output::SubsurfaceBody> subsurface_bodies(const SubsurfaceRun& run);
 
 /// summary.json's "subsurface": per body max_von_mises, at, max_tresca, at_tresca,
 /// max_orthogonal_shear, at_orthogonal ([x, y, depth]; 2-D [x, depth]), and the depths.

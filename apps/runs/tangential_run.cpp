@@ -159,7 +159,22 @@ TangentialRun run_tangential(const Case& c, bool progress) {
   return run;
 }
 
-StaticRun run_static(const Case& c, bool progress) {
+namespace {
+
+/// The states of a history whose field is computed: every step, or every
+/// output.snapshot_every-th and the last.
+std::vector<SubsurfaceState> history_states(const Case& c, const StaticRun& run) {
+  std::vector<SubsurfaceState> states;
+  const int every = c.output.snapshot_every;
+  for (std::size_t k = 0; k < run.fields.size(); ++k)
+    if (every <= 0 || k % static_cast<std::size_t>(every) == 0 || k + 1 == run.fields.size())
+      states.push_back({static_cast<int>(k), static_cast<double>(k), &run.fields[k]});
+  return states;
+}
+
+}  // namespace
+
+StaticRun run_static(const Case& c, bool progress, const SubsurfaceSink& history_sink) {
   StaticRun run = run_static_with_accuracy(c, progress);
   // The field inside the bodies from the final state's tractions (subsurface_run.hpp), also for
   // a yield strength (first_yield.hpp).
@@ -168,17 +183,18 @@ StaticRun run_static(const Case& c, bool progress) {
   if ((c.subsurface.enabled || yields || c.shakedown || fatigue) && run.converged && !run.interrupted && !run.fields.empty()) {
     const nlohmann::json& s = run.summary;
     const bool steps = s.contains("steps") && s["steps"].is_array() && !s["steps"].empty();
-    // The bodies the block names, and every body a yield, fatigue or shakedown verdict needs.
-    Case fc = c;
-    std::vector<std::string>& bodies = fc.subsurface.bodies;
-    auto need = [&](bool wanted, const char* name) {
-      if (wanted && std::find(bodies.begin(), bodies.end(), name) == bodies.end()) bodies.push_back(name);
-    };
-    need(c.yields.base || c.fatigue.base || c.shakedown, "base");
-    need(c.yields.body || c.fatigue.body, "body");
-    run.subsurface = compute_subsurface(fc, run.grid, run.fields.back(), steps ? s["steps"].back() : s);
-    run.summary["subsurface"] = subsurface_json(*run.subsurface, run.grid.dimension);
-    if (yields) run.summary["yield"] = first_yield_json(first_yield(c, run), run.grid.dimension);
+    const Case fc = with_verdict_bodies(c);
+    if (run.history) {  // every state's field, the worst over the history; the final state's at the same depths
+      run.subsurface_series = subsurface_series(fc, run.grid, history_states(c, run), history_sink);
+      const SubsurfaceSeries& series = *run.subsurface_series;
+      run.subsurface = compute_subsurface(fc, run.grid, run.fields.back(), series.depths);
+      run.summary["subsurface"] = subsurface_series_json(series, run.grid.dimension, false);
+      if (yields) run.summary["yield"] = worst_yield_json(c, series, run.grid.dimension, false);
+    } else {
+      run.subsurface = compute_subsurface(fc, run.grid, run.fields.back(), s);
+      run.summary["subsurface"] = subsurface_json(*run.subsurface, run.grid.dimension);
+      if (yields) run.summary["yield"] = first_yield_json(first_yield(c, run), run.grid.dimension);
+    }
     if (fatigue) run.summary["fatigue"] = fatigue_json(c, *run.subsurface);
     if (c.shakedown) run.summary["shakedown"] = shakedown_json(c, *run.subsurface, steps ? s["steps"].back() : s);
   }

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "subsurface_run.hpp"
+#include "subsurface_series.hpp"
 
 #include "case_model.hpp"
 #include "solver_report.hpp"
@@ -58,11 +58,14 @@ struct StaticRun {
   bool interrupted = false;                  ///< an interrupt came during a history: the steps finished
   Grid grid;                                 ///< the grid solved (an accuracy target chooses it)
   std::optional<SubsurfaceRun> subsurface;   ///< the "subsurface" block's field (final state)
+  std::optional<SubsurfaceSeries> subsurface_series;  ///< a history's: the worst over its states
 };
 
 /// Runs a static case (normal, tangential, finite) with its accuracy block
 /// (run_static_with_accuracy, accuracy_run.hpp): what `solve`, `compare` and Python call.
-StaticRun run_static(const Case& c, bool progress);
+/// A history's subsurface field is computed for each state (subsurface_series.hpp), handed to
+/// `history_sink` when given (the command line writes subsurface_<step>.vti).
+StaticRun run_static(const Case& c, bool progress, const SubsurfaceSink& history_sink = nullptr);
 /// One solve of a static case on its grid (run_normal / run_tangential / run_finite_static);
 /// a normal case from `warm_pressure` (one per element) when given.
 StaticRun run_static_once(const Case& c, bool progress, const std::vector<double>* warm_pressure = nullptr);
