@@ -361,4 +361,51 @@ TEST_F(CliSubsurface, DangVanOfFrictionlessLineRollingPeaksAtHalfTheHalfWidth) {
   expect_input_error("validate " + write_case(c), "materials.base.fatigue.dang_van.beta");
 }
 
+
+
+/// The largest von Mises stress (plane strain, nu) under McEwen's sliding line contact, q = mu p,
+/// in units of p0: sampled every b/200 along x over +-1.5 b and every b/400 in depth to 1.5 b.
+double mcewen_max_von_mises(double mu, double nu) {
+  double peak = 0.0;
+  for (int k = 0; k <= 600; ++k)
+    for (int i = -300; i <= 300; ++i) {
+      const double x = i / 200.0, z = k / 400.0;
+      const auto n = dc::closed_form::mcewen_normal(x, z, 1.0, 1.0);
+      const auto t = dc::closed_form::mcewen_tangential(x, z, 1.0, mu);
+      const double sx = n.sigma_xx + t.sigma_xx, sz = n.sigma_zz + t.sigma_zz, sxz = n.sigma_xz + t.sigma_xz;
+      const double sy = nu * (sx + sz);
+      const double vm = std::sqrt(0.5 * ((sx - sy) * (sx - sy) + (sy - sz) * (sy - sz) + (sz - sx) * (sz - sx)) +
+                                  3.0 * sxz * sxz);
+      peak = std::max(peak, vm);
+    }
+  return peak;
+}
+
+
+// First yield of a tangential problem: a cylinder rolling in full slip (q = mu p, mu = 0.2) on
+// steel. Its tangential force follows the normal load (full slip: the creepage kept), so first
+// yield is at McEwen's p0 = Y / max(sigma_vm / p0) and, p0 growing as sqrt(P) in 2-D, at the
+// load factor (Y / (max sigma_vm))^2.
+TEST_F(CliSubsurface, FirstYieldOfASlidingLineContactIsMcEwens) {
+  const double E = 2.1e11, nu = 0.3, R = 0.02, P = 1e5, mu = 0.2;
+  const auto h = dc::hertz::cylinder2d(R, P, E / (2.0 * (1.0 - nu * nu)));
+  json c = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "carter-2d.json"));
+  c["friction"]["mu"] = mu;
+  c["tangential"] = {{"regime", "rolling"}, {"creepage", {-3.0 * mu * h.a / R}}, {"velocity", 1.0}};
+  c["grid"] = {{"nx", 400}, {"x", {-3.0 * h.a, 3.0 * h.a}}};
+  c["accuracy"] = {{"estimate", false}};
+  c["output"] = {{"plots", false}};
+  const double m = mcewen_max_von_mises(mu, nu);  // about 0.59 at mu = 0.2
+  const double Y = 1.3 * m * h.p0;                  // first yield at 1.69 x the load
+  c["materials"]["base"]["yield"] = {{"von_mises", Y}};
+  c["subsurface"] = {{"depths", "0:" + std::to_string(1.2 * h.a) + ":121"}, {"bodies", {"base"}}};
+  const json s = solve(c);
+  const json& y = s.at("yield").at("base");
+  // 400 strips over +-3 b, depths every b/100: the utilisation within 1 %, the factor 2 %.
+  EXPECT_NEAR(y.at("utilisation").get<double>(), 1.0 / 1.3, 0.01 / 1.3);
+  ASSERT_TRUE(y.at("first_yield_load_factor").is_number()) << y.dump();
+  EXPECT_NEAR(y.at("first_yield_load_factor").get<double>(), 1.3 * 1.3, 0.02 * 1.69);
+  EXPECT_NEAR(std::abs(s.at("tangential_force")[0].get<double>()) / s.at("normal_force").get<double>(), mu, 1e-6);
+}
+
 }  // namespace

@@ -17,12 +17,25 @@ struct Trial {
   std::string why;
 };
 
+/// The normal load (force or approach, as c.normal) and every tangential force and moment scaled
+/// by `factor` (a force-controlled traction coefficient kept); shifts, creepages, spin and angles
+/// as given.
+void scale_loads(NormalSpec& normal, std::array<ModeControl, 3>& modes, double factor) {
+  normal.value *= factor;
+  for (ModeControl& m : modes)
+    if (m.kind == ModeControl::Kind::resultant) m.value *= factor;
+}
+
 Trial trial(const Case& c, const Grid& grid, const std::string& body, const YieldSpec& y, double factor) {
   Case s = c;
   s.grid = grid;
   s.accuracy.estimate = false;
   s.accuracy.target.reset();
   s.normal.value *= factor;
+  if (s.tangential) {
+    scale_loads(s.tangential->load.normal, s.tangential->load.modes, factor);
+    scale_loads(s.tangential->rolling.normal, s.tangential->rolling.modes, factor);
+  }
   s.subsurface.bodies = {body};
   const StaticRun r = run_static_once(s, false);
   if (!r.converged || r.fields.empty()) return {false, 0.0, "the solve at load factor " + std::to_string(factor) + " did not converge"};
@@ -49,8 +62,8 @@ std::vector<FirstYield> first_yield(const Case& c, const StaticRun& run) {
     if (!y) continue;
     FirstYield f{b.name, *y, utilisation(*y, b.measures, nullptr), {}, std::nullopt, "", 0};
     utilisation(*y, b.measures, &f.at);
-    if (c.problem != ProblemKind::normal || run.history) {
-      f.note = "the first-yield load factor is solved for normal problems without a history";
+    if (run.history) {
+      f.note = "the first-yield load factor is solved for single normal and tangential problems";
       out.push_back(f);
       continue;
     }

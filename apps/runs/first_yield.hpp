@@ -4,7 +4,9 @@
 // against k) and its place, and the load factor at which the body first yields. The factor is
 // solved for, not scaled: the contact grows with the load (Hertz: p0 ~ P^(1/3)), so the case is
 // solved again at factor x its normal load on the same grid, the field recomputed, and the factor
-// iterated (secant in log-log) until the utilisation is 1 within 1e-3.
+// iterated (secant in log-log) until the utilisation is 1 within 1e-3. A tangential problem's
+// tangential forces and moment are scaled with the normal load (its shifts, creepages, spin and
+// angle are kept: a full-sliding contact stays in full sliding).
 #include <optional>
 #include <string>
 #include <vector>
