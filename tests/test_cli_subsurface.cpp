@@ -408,4 +408,46 @@ TEST_F(CliSubsurface, FirstYieldOfASlidingLineContactIsMcEwens) {
   EXPECT_NEAR(std::abs(s.at("tangential_force")[0].get<double>()) / s.at("normal_force").get<double>(), mu, 1e-6);
 }
 
+// Dang Van over a dynamic run's snapshots: a cylinder (R = 20 mm, 100 kN/m, frictionless) rolled
+// 8 b at 0.1 m/s, its contact grid following the body. Each point of the base sees the Hertzian
+// field pass (the snapshots every b/10 of travel), so with alpha = 0 the index x beta is the
+// enclosing ball of the orthogonal shear's +-0.25 p0 at 0.5 b (Johnson's, as in the static
+// DangVanOfFrictionlessLineRollingPeaksAtHalfTheHalfWidth), and the sigma_xz range 0.5 p0 there.
+TEST_F(CliSubsurface, DangVanOverADynamicRollingPassIsJohnsonsOrthogonalShear) {
+  const double E = 2.1e11, nu = 0.3, R = 0.02, P = 1e5, M = 50.0;
+  const auto h = dc::hertz::cylinder2d(R, P, E / (2.0 * (1.0 - nu * nu)));
+  json c = {{"schema", "dyncontact/1"},
+            {"name", "rolling-2d"},
+            {"problem", "dynamic"},
+            {"dimension", 2},
+            {"materials", {{"body", {{"E", E}, {"nu", nu}}}, {"base", {{"E", E}, {"nu", nu}}}}},
+            {"profile", {{"type", "cylinder"}, {"radius", R}}},
+            {"grid", {{"nx", 120}, {"x", {-3.0 * h.a, 3.0 * h.a}}}},
+            {"body",
+             {{"mass", M},
+              {"inertia", {0.5 * M * R * R, 0.5 * M * R * R, 0.5 * M * R * R}},
+              {"radius", R},
+              {"initial", {{"velocity", {0.1, 0.0, 0.0}}, {"omega", {0.0, 0.1 / R, 0.0}}}}}},
+            {"loads", {{"force", {{"z", {{"value", -P}}}}}}},
+            {"time", {{"dt", 1.5e-4}, {"t_end", 80 * 1.5e-4}, {"scheme", "bdf2"}}},
+            {"contact_model", "transient"},
+            {"output", {{"snapshot_every", 1}, {"plots", false}}},
+            {"subsurface", {{"depths", "0:" + std::to_string(1.2 * h.a) + ":41"}, {"bodies", {"base"}}}}};
+  c["materials"]["base"]["fatigue"] = {{"dang_van", {{"alpha", 0.0}, {"beta", h.p0}}}};
+  const json s = solve(c);
+  const json& f = s.at("fatigue").at("base");
+  // 120 elements over +-3 b, depths every 0.03 b, 80 snapshots every 0.1 b: within 2 %.
+  EXPECT_NEAR(f.at("dang_van_max").get<double>(), 0.25, 0.005);
+  EXPECT_NEAR(f.at("at")[1].get<double>() / h.a, 0.5, 0.04);
+  EXPECT_NEAR(f.at("orthogonal_shear_range").get<double>() / h.p0, 0.5, 0.01);
+  EXPECT_EQ(f.at("snapshots"), 80);
+  // The moving body's index, and one without snapshots, are input errors naming the key.
+  json body = c;
+  body["materials"]["body"]["fatigue"] = {{"dang_van", {{"alpha", 0.0}, {"beta", h.p0}}}};
+  expect_input_error("validate " + write_case(body), "materials.body.fatigue");
+  json once = c;
+  once["output"]["snapshot_every"] = 0;
+  expect_input_error("validate " + write_case(once), "materials.base.fatigue");
+}
+
 }  // namespace

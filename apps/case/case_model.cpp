@@ -147,10 +147,13 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   if (top.has("materials")) {
     c.yields = read_yields(top.at("materials"));
     c.fatigue = read_fatigue_limits(top.at("materials"));
-    if ((c.fatigue.body || c.fatigue.base) && !static_problem)
+    if (c.problem == ProblemKind::dynamic && c.fatigue.body)
+      throw InputError("materials.body.fatigue", "a dynamic run's fatigue index is computed for the base (its "
+                                                 "material points stay in place), not the moving body");
+    if ((c.fatigue.body || c.fatigue.base) && !static_problem && c.problem != ProblemKind::dynamic)
       throw InputError(c.fatigue.base ? "materials.base.fatigue" : "materials.body.fatigue",
-                       std::string("the rolling passage's fatigue index is computed for problems normal and "
-                                   "tangential, not '") + to_string(c.problem) + "'");
+                       std::string("the fatigue index is computed for problems normal, tangential and dynamic, not '") +
+                           to_string(c.problem) + "'");
     if ((c.yields.body || c.yields.base) && !static_problem && c.problem != ProblemKind::dynamic)
       throw InputError(c.yields.base ? "materials.base.yield" : "materials.body.yield",
                        std::string("first yield is computed for problems normal, tangential and dynamic, not '") +
@@ -162,7 +165,10 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
                                   "rho_yy(z)): 2-D cases only (3-D rho(y, z): not yet)");
   if (c.shakedown && !c.yields.base)
     throw InputError("shakedown", "needs the base's yield strength (materials.base.yield: von_mises or tresca_k)");
-  if (top.has("sweep") && (c.subsurface.enabled || c.yields.body || c.yields.base))
+  if (c.problem == ProblemKind::dynamic && c.fatigue.base && c.output.snapshot_every <= 0)
+    throw InputError("materials.base.fatigue", "a dynamic run's fatigue index follows the base's points over its "
+                                               "snapshots: set output.snapshot_every");
+  if (top.has("sweep") && (c.subsurface.enabled || c.yields.body || c.yields.base || c.fatigue.base))
     throw InputError(c.subsurface.enabled ? "subsurface" : "materials.base.yield",
                      "the subsurface field is computed for single runs, not a sweep's (run the values one by one)");
   if (!top.has("accuracy") && c.problem == ProblemKind::dynamic) c.accuracy.estimate = false;  // opt-in there

@@ -14,6 +14,7 @@
 #include "dynamic_series.hpp"
 #include "dynamic_sweep.hpp"
 #include "exit_codes.hpp"
+#include "fatigue_over_run.hpp"
 #include "first_yield.hpp"
 #include "fe_body_estimate.hpp"
 #include "fields_writer.hpp"
@@ -142,7 +143,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
 #endif
   Grid grid = c.grid;  // of the run the snapshots are taken from (an accuracy target chooses it)
   SubsurfaceStates field_states;  // the snapshots' and the peak load's tractions (subsurface_series.hpp)
-  const bool subsurface = c.subsurface.enabled || c.yields.base || c.yields.body;
+  const bool subsurface = c.subsurface.enabled || c.yields.base || c.yields.body || c.fatigue.base;
   const auto write_snapshot = [&](const dynamics::DynamicSample& s) {
     if (every > 0 && s.step % every == 0) {
       const std::string name = "fields_" + std::to_string(s.step) + ".csv";
@@ -153,10 +154,11 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
       if (s.finite_body) snapshot["body"] = body_series.write(*s.finite_body, s.state);
 #endif
       snapshots.push_back(snapshot);
-      if (subsurface) field_states.keep(s.step, s.state.time, std::move(fields));
+      if (subsurface) field_states.keep(s.step, s.state.time, s.state.position.x(), s.state.position.y(), std::move(fields));
     }
     if (subsurface && field_states.exceeds_peak(std::abs(s.contact.force.z())))
-      field_states.keep_peak(s.step, s.state.time, std::abs(s.contact.force.z()), step_fields(grid, s.contact_state));
+      field_states.keep_peak(s.step, s.state.time, s.state.position.x(), s.state.position.y(),
+                             std::abs(s.contact.force.z()), step_fields(grid, s.contact_state));
   };
   const DynamicOutcome out = simulate_dynamic_with_accuracy(
       c, !quiet, every > 0 || subsurface ? std::function(write_snapshot) : nullptr, &grid);
@@ -171,8 +173,15 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
     Case fc = with_verdict_bodies(c);
     if (c.dynamic && c.dynamic->fe_body) std::erase(fc.subsurface.bodies, std::string("body"));  // its stresses: body.pvd
     output::SubsurfaceSnapshots images(dir);
-    series = subsurface_series(fc, grid, field_states.states(),
-                               c.subsurface.enabled ? subsurface_file_sink(images) : SubsurfaceSink());
+    const SubsurfaceSink write = c.subsurface.enabled ? subsurface_file_sink(images) : SubsurfaceSink();
+    const std::vector<SubsurfaceState> states = field_states.states();
+    std::optional<FatigueOverRun> fatigue;  // Dang Van on the base's points over the snapshots
+    if (c.fatigue.base) fatigue.emplace(fc, grid, subsurface_series_depths(fc, grid, states), states);
+    series = subsurface_series(fc, grid, states, [&](const SubsurfaceState& st, const SubsurfaceRun& run) {
+      if (fatigue) fatigue->add(st, run);
+      return write ? write(st, run) : std::string();
+    });
+    if (fatigue) summary["fatigue"] = fatigue->to_json();
     summary["subsurface"] = subsurface_series_json(*series, grid.dimension, true);
     for (json& state : summary["subsurface"]["states"])
       if (state["step"] == field_states.peak_step()) state["peak_normal_force"] = true;

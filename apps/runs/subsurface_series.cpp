@@ -19,12 +19,13 @@ output::StaticFields SubsurfaceStates::tractions_only(output::StaticFields field
   return fields;
 }
 
-void SubsurfaceStates::keep(int step, double time, output::StaticFields fields) {
-  kept_.push_back({step, time, tractions_only(std::move(fields))});
+void SubsurfaceStates::keep(int step, double time, double x_offset, double y_offset, output::StaticFields fields) {
+  kept_.push_back({step, time, x_offset, y_offset, tractions_only(std::move(fields))});
 }
 
-void SubsurfaceStates::keep_peak(int step, double time, double normal_force, output::StaticFields fields) {
-  peak_ = {step, time, tractions_only(std::move(fields))};
+void SubsurfaceStates::keep_peak(int step, double time, double x_offset, double y_offset, double normal_force,
+                                 output::StaticFields fields) {
+  peak_ = {step, time, x_offset, y_offset, tractions_only(std::move(fields))};
   peak_force_ = normal_force;
   has_peak_ = true;
 }
@@ -34,13 +35,13 @@ std::vector<SubsurfaceState> SubsurfaceStates::states() const {
   bool peak_listed = !has_peak_;
   for (const Kept& k : kept_) {
     if (!peak_listed && peak_.step < k.step) {
-      states.push_back({peak_.step, peak_.time, &peak_.fields});
+      states.push_back(peak_.state());
       peak_listed = true;
     }
     if (has_peak_ && k.step == peak_.step) peak_listed = true;
-    states.push_back({k.step, k.time, &k.fields});
+    states.push_back(k.state());
   }
-  if (!peak_listed) states.push_back({peak_.step, peak_.time, &peak_.fields});
+  if (!peak_listed) states.push_back(peak_.state());
   return states;
 }
 
@@ -58,13 +59,17 @@ double contact_half_width(const Grid& grid, const output::StaticFields& fields) 
   return grid.dimension == 3 ? std::max(half_x, 0.5 * (m.y_max - m.y_min)) : half_x;
 }
 
-SubsurfaceSeries subsurface_series(const Case& c, const Grid& grid, const std::vector<SubsurfaceState>& states,
-                                   const SubsurfaceSink& sink) {
-  SubsurfaceSeries series;
+std::vector<double> subsurface_series_depths(const Case& c, const Grid& grid, const std::vector<SubsurfaceState>& states) {
   double half = 0.0;
   if (c.subsurface.depths.empty())
     for (const SubsurfaceState& s : states) half = std::max(half, contact_half_width(grid, *s.fields));
-  series.depths = subsurface_depths(c.subsurface, half);
+  return subsurface_depths(c.subsurface, half);
+}
+
+SubsurfaceSeries subsurface_series(const Case& c, const Grid& grid, const std::vector<SubsurfaceState>& states,
+                                   const SubsurfaceSink& sink) {
+  SubsurfaceSeries series;
+  series.depths = subsurface_series_depths(c, grid, states);
   bool first = true;
   for (const SubsurfaceState& s : states) {
     const SubsurfaceRun run = compute_subsurface(c, grid, *s.fields, series.depths);

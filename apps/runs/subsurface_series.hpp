@@ -20,15 +20,17 @@ struct SubsurfaceState {
   int step = 0;
   double time = 0.0;  ///< s (a history: the step number)
   const output::StaticFields* fields = nullptr;
+  double x_offset = 0.0, y_offset = 0.0;  ///< the grid origin's place in the base (a dynamic run: the body's)
 };
 
 /// What a dynamic run keeps for its field while it runs: the tractions of its snapshots and of
 /// the step with the largest normal force so far (the slips and bounds dropped).
 class SubsurfaceStates {
  public:
-  void keep(int step, double time, output::StaticFields fields);
+  void keep(int step, double time, double x_offset, double y_offset, output::StaticFields fields);
   bool exceeds_peak(double normal_force) const { return !has_peak_ || normal_force > peak_force_; }
-  void keep_peak(int step, double time, double normal_force, output::StaticFields fields);
+  void keep_peak(int step, double time, double x_offset, double y_offset, double normal_force,
+                 output::StaticFields fields);
   bool empty() const { return kept_.empty() && !has_peak_; }
   int peak_step() const { return has_peak_ ? peak_.step : -1; }
   /// The kept states by step, the peak's once (also when it is a snapshot's).
@@ -37,8 +39,9 @@ class SubsurfaceStates {
  private:
   struct Kept {
     int step = 0;
-    double time = 0.0;
+    double time = 0.0, x_offset = 0.0, y_offset = 0.0;
     output::StaticFields fields;
+    SubsurfaceState state() const { return {step, time, &fields, x_offset, y_offset}; }
   };
   static output::StaticFields tractions_only(output::StaticFields fields);
   std::vector<Kept> kept_;
@@ -76,8 +79,12 @@ SubsurfaceSink subsurface_file_sink(output::SubsurfaceSnapshots& series);
 /// The largest contact half-width of `fields` on `grid` (3-D: the larger of x and y), 0 without contact.
 double contact_half_width(const Grid& grid, const output::StaticFields& fields);
 
-/// The field of every state of `states` at the depths of c.subsurface (default: 32 from 0 to 1.5 x
-/// the largest contact half-width over the states), the worst over them, `sink` called per state.
+/// The depths of c.subsurface, by default 32 from 0 to 1.5 x the largest contact half-width over
+/// `states`.
+std::vector<double> subsurface_series_depths(const Case& c, const Grid& grid, const std::vector<SubsurfaceState>& states);
+
+/// The field of every state of `states` at subsurface_series_depths, the worst over them, `sink`
+/// called per state.
 SubsurfaceSeries subsurface_series(const Case& c, const Grid& grid, const std::vector<SubsurfaceState>& states,
                                    const SubsurfaceSink& sink = nullptr);
 
