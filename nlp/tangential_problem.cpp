@@ -156,6 +156,11 @@ void TangentialProblem::steady_rolling(const RollingLoad& load, const SolverOpti
         const double ds = rigid + u_here[c * N + e] - u_up[c * N + e];
         (c == 0 ? sol.sx : sol.sy)[e] = ds;
       }
+    sol.convective_elastic_work = 0.0;
+    for (std::size_t e = 0; e < N; ++e)
+      for (int c = 0; c < s.comps; ++c)
+        sol.convective_elastic_work +=
+            (c == 0 ? sol.tx : sol.ty)[e] * (u_here[c * N + e] - u_up[c * N + e]) * s.grid.area();
     const Certificate steady_cert =
         certify_friction(s.grid, sol.tx, sol.ty, sol.sx, sol.sy, sol.bound, s.Ct->diagonal(0));
     sol.report.certificate.friction_law = steady_cert.friction_law;

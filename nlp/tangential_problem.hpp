@@ -21,6 +21,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <limits>
 #include <vector>
 
 #include "friction_law.hpp"
@@ -61,6 +62,13 @@ struct TangentialSolution {
   bool rolling = false;              ///< amplitudes are creepages / spin (steady or transient rolling), not shifts
   double distance = 0.0;             ///< roll(): distance rolled, marching_steps * dx (m)
   bool shift_undetermined = false;   ///< no friction (mu = 0): the resultant-controlled rigid modes have no unique value
+  /// Steady rolling: sum_e tau_e . (C - S C)(tau, p)_e A, the work of the steady slip's elastic
+  /// part (2.19) per step of travel dx (J; 2-D J/m). With the rigid part's, sum_k alpha_k R_k dx,
+  /// it makes up sum tau . ds A: the creep forces' power -(F_x xi + F_y eta + M_z phi) V is the
+  /// frictional dissipation -sum tau . ds A V / dx plus this V / dx, the upwind scheme's part
+  /// (O(dx): zero in the continuum, where the operator's convective form is antisymmetric).
+  /// NaN for other solutions.
+  double convective_elastic_work = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Back to a default solution, the storage of its fields and reports kept (solver_report.hpp).

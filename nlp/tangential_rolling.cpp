@@ -104,6 +104,14 @@ bool TangentialProblem::Impl::steady_rolling_direct(const RollingLoad& load,
   for (std::size_t r = 0; r < unknown_modes.size(); ++r) amplitudes[unknown_modes[r]] = outcome.amplitudes[r];
   std::vector<double>& ds = step_ds;
   D_conv->apply(tau, ds);
+  // The elastic part of the slip: D tau and the kappa term (in b with the given rigid slip).
+  double elastic_work = 0.0;
+  for (std::size_t e = 0; e < N; ++e)
+    for (int c = 0; c < comps; ++c) {
+      double given = 0.0;
+      for (int k = 0; k < n_modes(); ++k) given += given_increment[k] * mode(k, e, c);
+      elastic_work += tau[c * N + e] * (ds[c * N + e] + program.b[c * N + e] - given);
+    }
   for (std::size_t i = 0; i < n; ++i) ds[i] += program.b[i];
   for (std::size_t r = 0; r < program.modes.size(); ++r)
     for (std::size_t i = 0; i < n; ++i) ds[i] += outcome.amplitudes[r] * program.modes[r][i];
@@ -123,6 +131,7 @@ bool TangentialProblem::Impl::steady_rolling_direct(const RollingLoad& load,
   p_prev = sol.normal.pressure;
   displacement_prev.clear();  // not computed here: a later convected step applies the operators
   sol.amplitudes = amplitudes;
+  sol.convective_elastic_work = elastic_work * grid.area();
   return true;
 }
 

@@ -11,7 +11,10 @@ namespace dc::output {
 std::string write_fields(const std::string& dir, const Grid& grid, const StaticFields& f, const std::string& file) {
   const std::string path = (std::filesystem::path(dir) / file).string();
   auto at_or_zero = [](const std::vector<double>& v, std::size_t e) { return e < v.size() ? v[e] : 0.0; };
-  std::string text = "x,y,p,tx,ty,sx,sy,state\n";
+  // The frictional power density (W/m^2) where the step has a rate, else the step's work per area.
+  const bool work = !f.dissipation.empty();
+  const char* work_column = f.dissipation_rate > 0.0 ? ",power\n" : ",dissipation\n";
+  std::string text = std::string("x,y,p,tx,ty,sx,sy,state") + (work ? work_column : "\n");
   text.reserve(text.size() + grid.size() * 96);
   // std::to_chars(..., general, 10) writes what printf's %.10g does, several times faster.
   char line[256];
@@ -28,6 +31,12 @@ std::string write_fields(const std::string& dir, const Grid& grid, const StaticF
                        at_or_zero(f.sx, e), at_or_zero(f.sy, e)})
         put(at, v, ',');
       at = std::to_chars(at, line + sizeof line, state).ptr;
+      if (work) {
+        *at++ = ',';
+        const double w = at_or_zero(f.dissipation, e);
+        at = std::to_chars(at, line + sizeof line, f.dissipation_rate > 0.0 ? w * f.dissipation_rate : w,
+                           std::chars_format::general, 10).ptr;
+      }
       *at++ = '\n';
       text.append(line, at);
     }

@@ -1,7 +1,9 @@
 #pragma once
 // fields.csv of static problems: x,y,p,tx,ty,sx,sy,state (one row per element, grid order
 // i + nx*j; element centres; 2-D: y = 0). state 0 free, 1 stick, 2 slip; a normal problem
-// writes 1 for every element in contact (p above the contact threshold).
+// writes 1 for every element in contact (p above the contact threshold). With friction a last
+// column: `power` (W/m^2, -tau . ds / dt: rolling and dynamic steps) or `dissipation` (J/m^2,
+// -tau . ds of a quasi-static step).
 #include <string>
 
 #include "grid.hpp"

@@ -19,6 +19,12 @@ struct StaticFields {
   std::vector<double> bound;         ///< friction bound f(p) (Pa); empty for a normal problem
   std::vector<int> state;            ///< ElementState per element
   double contact_threshold = 0.0;    ///< elements with p > this are in contact
+  /// The frictional work of the step per area, -tau . ds (J/m^2; >= 0 under Coulomb); empty:
+  /// not computed (a normal problem).
+  std::vector<double> dissipation;
+  /// Per second, the rate turning `dissipation` into the power density (W/m^2): V / dx in
+  /// rolling, 1/dt in a dynamic step; 0 for a quasi-static step (fields.csv: "dissipation").
+  double dissipation_rate = 0.0;
 };
 
 /// Normal problem: no tangential traction; state 1 (kStick: "in contact") where

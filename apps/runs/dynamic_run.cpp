@@ -45,7 +45,15 @@ json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 output::StaticFields step_fields(const Grid& grid, const dynamics::ContactState& cs) {
   if (cs.fields) {
     const TangentialSolution& t = *cs.fields;
-    return {t.normal.pressure, t.tx, t.ty, t.sx, t.sy, t.bound, t.state, 0.0};
+    output::StaticFields f;
+    f.p = t.normal.pressure;
+    f.tx = t.tx;
+    f.ty = t.ty;
+    f.sx = t.sx;
+    f.sy = t.sy;
+    f.bound = t.bound;
+    f.state = t.state;
+    return f;
   }
   if (cs.pressure) return output::normal_fields(*cs.pressure, 1e-9);
   return output::normal_fields(std::vector<double>(grid.size(), 0.0), 1e-9);

@@ -1,6 +1,7 @@
 #include "tangential_run.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "accuracy_run.hpp"
@@ -44,6 +45,31 @@ bool case_level_key(const std::string& key) {
 
 bool has_history(const Case& c) { return c.tangential && c.tangential->has_history; }
 
+/// summary.json's "energy" of a tangential solution (CASES.md). Every step: `dissipated`, the
+/// frictional work sum -tau . ds A of the step (J; 2-D J/m). Steady rolling at speed V (per step
+/// of travel dx, dt = dx / V) also the powers (W; 2-D W/m): `frictional_power` = dissipated / dt,
+/// `creep_power` -(F_x xi + F_y eta + M_z phi) V, and `scheme_power` the upwind scheme's share
+/// sum tau . (C - S C)(tau, p) A / dt, with creep = frictional + scheme to round-off
+/// (TangentialSolution::convective_elastic_work; O(dx): the continuum has none).
+nlohmann::json energy_json(const Case& c, const TangentialSolution& sol, const output::StaticFields& f) {
+  double work = 0.0;
+  for (double w : f.dissipation) work += w;
+  work *= c.grid.area();
+  nlohmann::json e = {{"dissipated", work}};
+  if (sol.rolling && std::isfinite(sol.convective_elastic_work) && c.tangential) {
+    const double V = c.tangential->rolling.velocity, rate = V / c.grid.dx;
+    const auto& a = sol.amplitudes;
+    const auto& r = sol.resultants;
+    const double creep = -(r[0] * a[0] + r[1] * a[1] + r[2] * a[2]) * V;
+    const double frictional = work * rate, scheme = sol.convective_elastic_work * rate;
+    e["frictional_power"] = frictional;
+    e["creep_power"] = creep;
+    e["scheme_power"] = scheme;
+    e["balance"] = creep != 0.0 ? (creep - frictional - scheme) / std::abs(creep) : 0.0;
+  }
+  return e;
+}
+
 }  // namespace
 
 bool TangentialRun::converged() const {
@@ -74,6 +100,10 @@ output::StaticFields tangential_fields(const TangentialSolution& s, double relat
   for (std::size_t e = 0; e < f.state.size(); ++e)
     if (f.state[e] != output::kFree)
       f.state[e] = (e < s.state.size() && s.state[e] == output::kStick) ? output::kStick : output::kSlip;
+  f.dissipation.assign(s.tx.size(), 0.0);
+  for (std::size_t e = 0; e < f.dissipation.size(); ++e)
+    f.dissipation[e] = 0.0 - (s.tx[e] * (e < s.sx.size() ? s.sx[e] : 0.0) +
+                         (e < s.ty.size() && e < s.sy.size() ? s.ty[e] * s.sy[e] : 0.0));
   return f;
 }
 
@@ -98,6 +128,7 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   s["rotation"] = rolling ? nlohmann::json() : nlohmann::json(a[2]);
   if (sol.shift_undetermined) s["rigid_shift_undetermined"] = true;  // mu = 0: any shift, zero traction
   if (regime == "rolling") s["velocity"] = c.tangential->rolling.velocity;
+  s["energy"] = energy_json(c, sol, f);
   if (regime == "rolling" && has_history(c)) s["distance"] = sol.distance;  // rolled in this step (m)
   int n_stick = 0, n_slip = 0;
   double capacity = 0.0;
@@ -131,12 +162,15 @@ TangentialRun run_tangential(const Case& c, bool progress) {
   run.normal.resize(run.steps.size(), c.normal);
   run.interrupted = interrupt_requested();
   nlohmann::json steps = nlohmann::json::array();
-  double rolled = 0.0;
+  double rolled = 0.0, dissipated = 0.0;
   Case step_case = c;  // one copy, its load set per step (a copy per step is slow for long histories)
   for (std::size_t k = 0; k < run.steps.size(); ++k) {
     step_case.normal = run.normal[k];
     run.fields.push_back(tangential_fields(run.steps[k], contact_threshold(c)));
+    if (run.steps[k].rolling) run.fields.back().dissipation_rate = c.tangential->rolling.velocity / c.grid.dx;
     run.summary = tangential_summary(step_case, run.steps[k], run.fields.back());
+    dissipated += run.summary["energy"]["dissipated"].get<double>();
+    run.summary["energy"]["dissipated_total"] = dissipated;  // over the steps so far
     if (run.summary.contains("distance")) {  // a rolling history: the distance rolled so far
       rolled += run.steps[k].distance;
       run.summary["total_distance"] = rolled;
