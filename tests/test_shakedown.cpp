@@ -494,6 +494,14 @@ TEST(Shakedown3d, StripLoadReproducesTheLineContact) {
   EXPECT_NEAR(t.elastic_limit, 3.33, 0.005 * 3.33);
   EXPECT_NEAR(t.limit_upper_bound, 2.0 / std::sqrt(3.0) * t.certificate.upper_bound, 1e-12);
   EXPECT_EQ(t.verdict, ShakedownVerdict::elastic);  // p0 = 1 < 3.33 k (k = 1)
+  // At p0/k = 5.0 the line contact is beyond shakedown (Tresca's 4.0); the cone's certificate
+  // brackets Tresca's limit by 2/sqrt 3 x 4.0 = 4.62 < 5.0, so the verdict is certain.
+  StressHistory3d heavy = g;
+  for (Voigt& v : heavy.stress)
+    for (double& c : v) c *= 5.0;
+  const ShakedownResult beyond = solve_shakedown_3d(heavy, YieldCriterion::tresca_inscribed(1.0));
+  EXPECT_LT(beyond.limit_upper_bound, 1.0);
+  EXPECT_EQ(beyond.verdict, ShakedownVerdict::beyond_shakedown);
   EXPECT_THROW(solve_shakedown_3d(g, YieldCriterion::tresca_plane_xz(1.0)), std::invalid_argument);
 }
 
