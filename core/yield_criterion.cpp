@@ -10,6 +10,7 @@ const char* to_string(YieldKind kind) {
   switch (kind) {
     case YieldKind::von_mises: return "von_mises";
     case YieldKind::tresca_plane_xz: return "tresca_plane_xz";
+    case YieldKind::tresca_inscribed: return "tresca_inscribed";
   }
   return "?";
 }
@@ -20,7 +21,7 @@ double YieldCriterion::shear_yield() const {
 
 Eigen::MatrixXd YieldCriterion::factor() const {
   const double k = shear_yield();
-  if (kind == YieldKind::von_mises) return deviatoric_coordinate_map() / k;
+  if (kind != YieldKind::tresca_plane_xz) return deviatoric_coordinate_map() / k;
   Eigen::MatrixXd l = Eigen::MatrixXd::Zero(2, 6);
   l(0, index_of(VoigtComponent::xx)) = 0.5 / k;
   l(0, index_of(VoigtComponent::zz)) = -0.5 / k;
@@ -30,8 +31,16 @@ Eigen::MatrixXd YieldCriterion::factor() const {
 
 double YieldCriterion::ratio(const Voigt& s) const {
   const double k = shear_yield();
-  if (kind == YieldKind::von_mises) return sqrt_j2(s) / k;
+  if (kind != YieldKind::tresca_plane_xz) return sqrt_j2(s) / k;
   return std::hypot(0.5 * (s[0] - s[2]), s[4]) / k;
+}
+
+double YieldCriterion::exact_ratio(const Voigt& s) const {
+  return kind == YieldKind::tresca_inscribed ? tresca_shear(s) / shear_yield() : ratio(s);
+}
+
+double YieldCriterion::outer_factor() const {
+  return kind == YieldKind::tresca_inscribed ? 2.0 / std::sqrt(3.0) : 1.0;
 }
 
 std::string YieldCriterion::validate() const {

@@ -11,7 +11,8 @@
 // (d rho_xz/dz = d rho_yz/dz = d rho_zz/dz = 0) and the free surface (rho_iz = 0 at z = 0) leave
 // rho_zz = rho_xz = rho_yz = 0 and rho_xx(z), rho_yy(z), rho_xy(z) free (K. L. Johnson, Contact
 // Mechanics, Cambridge 1985, chapter 9; for the 2-D line contact rho_xx and rho_yy, rho_xy
-// being zero by symmetry).
+// being zero by symmetry). This is the line contact's set, and the depth-only subset of the 3-D
+// model, whose residual depends on (y, z) (nlp/shakedown_3d.hpp).
 #include <string>
 #include <vector>
 

@@ -39,7 +39,10 @@
 //    lambda - lambda^2 Q + S (each g is homogeneous of degree 2 in (lambda, y)), over lambda
 //    1/(4Q) + S, and over a scaling t mu of the multipliers sqrt(S/Q).
 //    The duality gap (lambda_up - lambda_lo) / lambda_up bounds the relative error of lambda*.
-// The elastic limit (first yield) is lambda_e = 1 / max_ij |u_ij|, exact. The verdict at the
+// The program itself, over stations (a depth here), is nlp/shakedown_stations.hpp, shared with the
+// 3-D model (nlp/shakedown_3d.hpp).
+// The elastic limit (first yield) is lambda_e = 1 / max_ij |u_ij|, exact (tresca_inscribed:
+// Tresca's own first yield from the principal stresses, core/yield_criterion.hpp). The verdict at the
 // load as given (lambda = 1) compares both (shakedown_result.hpp); when the residual absorbs the
 // stress of every depth (one y_j with u_ij = -W y_j for all i) the program is unbounded.
 #include "shakedown_input.hpp"

@@ -22,7 +22,7 @@ enum class ShakedownStatus {
 enum class ShakedownVerdict {
   elastic,            ///< "elastic": lambda_e >= 1, no yield at all
   elastic_shakedown,  ///< "shakedown": lambda_e < 1 <= lambda (certified lower bound >= 1)
-  beyond_shakedown,   ///< "beyond": lambda < 1 (certified upper bound < 1): cyclic plasticity or ratchetting
+  beyond_shakedown,   ///< "beyond": lambda < 1 (limit_upper_bound < 1): cyclic plasticity or ratchetting
   undetermined,       ///< "undetermined": the certified bracket contains 1, or the solve failed
 };
 
@@ -44,9 +44,17 @@ struct ShakedownResult {
   double load_factor = 0.0;     ///< the shakedown limit lambda (Ipopt's point; +inf when unbounded)
   double elastic_limit = 0.0;   ///< lambda_e = 1 / max f(sigma^e) (+inf when no sample is stressed)
   int elastic_limit_depth = -1, elastic_limit_position = -1;  ///< where first yield occurs
+  int elastic_limit_line = -1;  ///< 3-D: its y index (nlp/shakedown_3d.hpp); -1 in 2-D
   /// The depth index carrying the largest multiplier mass: where the yield conditions bind.
   int critical_depth = -1;
-  std::vector<Voigt> residual;  ///< rho(z_j) at Ipopt's point, one per depth (components not free are 0)
+  int critical_line = -1;       ///< 3-D: the y index of that station; -1 in 2-D
+  /// rho at Ipopt's point: 2-D one per depth (components not free are 0); 3-D one per station
+  /// (depth k, line j) at k * lines + j.
+  std::vector<Voigt> residual;
+  /// A certified upper bound of the criterion's own limit: certificate.upper_bound times the
+  /// criterion's outer_factor() (core/yield_criterion.hpp: 2/sqrt 3 when the program's cone is
+  /// Tresca's inscribed von Mises cylinder, else 1). The verdict "beyond" needs it below 1.
+  double limit_upper_bound = 0.0;
   ShakedownVerdict verdict = ShakedownVerdict::undetermined;
   ShakedownCertificate certificate;
   int iterations = 0;           ///< Ipopt's iterations, summed over the rounds

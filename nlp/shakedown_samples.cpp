@@ -1,5 +1,6 @@
 #include "shakedown_samples.hpp"
 
+#include <limits>
 #include <stdexcept>
 
 namespace dc {
@@ -9,6 +10,17 @@ Voigt ShakedownSamples::residual(const double* y) const {
   for (int c = 0; c < p(); ++c)
     rho[static_cast<std::size_t>(index_of(components[static_cast<std::size_t>(c)]))] = residual_scale * y[c];
   return rho;
+}
+
+double exact_elastic_limit(const std::vector<Voigt>& stress, const YieldCriterion& criterion, std::size_t& worst) {
+  double fmax = 0.0;
+  worst = 0;
+  for (std::size_t k = 0; k < stress.size(); ++k)
+    if (const double f = criterion.exact_ratio(stress[k]); f > fmax) {
+      fmax = f;
+      worst = k;
+    }
+  return fmax > 0.0 ? 1.0 / fmax : std::numeric_limits<double>::infinity();
 }
 
 ShakedownSamples shakedown_samples(const StressHistory& history, const YieldCriterion& criterion,

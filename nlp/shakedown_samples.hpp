@@ -33,6 +33,11 @@ struct ShakedownSamples {
   Voigt residual(const double* y) const;
 };
 
+/// 1 / max_k criterion.exact_ratio(stress[k]) (+inf when no sample is stressed), `worst` its k: the
+/// elastic limit of the criterion itself where the program's cone is an inner approximation
+/// (tresca_inscribed: Tresca's own first yield, from the principal stresses).
+double exact_elastic_limit(const std::vector<Voigt>& stress, const YieldCriterion& criterion, std::size_t& worst);
+
 /// Throws std::invalid_argument when the history, the criterion or the model is invalid.
 ShakedownSamples shakedown_samples(const StressHistory& history, const YieldCriterion& criterion,
                                    const ResidualModel& model);

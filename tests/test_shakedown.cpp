@@ -12,6 +12,7 @@
 // dx), so the literature values are checked to 0.2 %.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -22,9 +23,12 @@
 #include <vector>
 
 #include "mcewen_reference.hpp"
+#include "shakedown_3d.hpp"
 #include "shakedown_by_depth.hpp"
 #include "shakedown_problem.hpp"
 #include "shakedown_samples.hpp"
+#include "subsurface_closed_forms.hpp"
+#include "subsurface_field.hpp"
 
 namespace dc::shakedown_tests {
 namespace {
@@ -340,6 +344,267 @@ TEST(ShakedownProgram, ResidualComponentsThatCannotActAreDropped) {
   const ResidualModel all{{VoigtComponent::xx, VoigtComponent::yy, VoigtComponent::xy}};
   EXPECT_EQ(shakedown_samples(h, YieldCriterion::tresca_plane_xz(1.0), all).p(), 1);
   EXPECT_EQ(shakedown_samples(h, YieldCriterion::von_mises(1.0), all).p(), 3);
+}
+
+
+TEST(ShakedownYield, InscribedConeLiesBetweenTrescaAndItsOuterCylinder) {
+  // tau <= sqrt(J2) <= 2 tau / sqrt 3 (core/yield_criterion.hpp): the cone's ratio is at least
+  // Tresca's and at most 2/sqrt 3 times it, equal in pure shear, the other extreme in uniaxial stress.
+  const YieldCriterion c = YieldCriterion::tresca_inscribed(2.0);
+  EXPECT_NEAR(c.outer_factor(), 2.0 / std::sqrt(3.0), 1e-15);
+  EXPECT_EQ(YieldCriterion::von_mises(1.0).outer_factor(), 1.0);
+  unsigned state = 7u;
+  const auto next = [&]() {
+    state = state * 1103515245u + 12345u;
+    return static_cast<double>(state % 20001u) / 10000.0 - 1.0;
+  };
+  for (int n = 0; n < 1000; ++n) {
+    const Voigt s{next(), next(), next(), next(), next(), next()};
+    EXPECT_GE(c.ratio(s), c.exact_ratio(s) * (1 - 1e-12));
+    EXPECT_LE(c.ratio(s), c.outer_factor() * c.exact_ratio(s) * (1 + 1e-12));
+  }
+  const Voigt shear{0.0, 0.0, 0.0, 0.0, 1.0, 0.0}, uniaxial{1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  EXPECT_NEAR(c.ratio(shear), 0.5, 1e-15);
+  EXPECT_NEAR(c.exact_ratio(shear), 0.5, 1e-15);
+  EXPECT_NEAR(c.ratio(uniaxial) / c.exact_ratio(uniaxial), 2.0 / std::sqrt(3.0), 1e-14);
+  EXPECT_EQ(c.rows(), 5);
+}
+
+// ---- 3-D: residual stresses rho(y, z) (nlp/shakedown_3d.hpp) ----
+
+/// The 3-D history of a 2-D one repeated on `lines` lines y = -1 .. 1 (a load that does not vary along y).
+StressHistory3d strip_history(const StressHistory& h, int lines) {
+  StressHistory3d g;
+  g.depths = h.depths;
+  g.positions = h.positions;
+  for (int j = 0; j < lines; ++j) g.lines.push_back(-1.0 + 2.0 * j / (lines - 1));
+  for (int k = 0; k < h.n_depths(); ++k)
+    for (int j = 0; j < lines; ++j)
+      for (int i = 0; i < h.n_positions(); ++i) g.stress.push_back(h.at(k, i));
+  return g;
+}
+
+/// The samples of every line of a depth as the positions of one 2-D depth (the depth-only model's view).
+StressHistory flattened(const StressHistory3d& g) {
+  StressHistory h;
+  h.depths = g.depths;
+  for (int j = 0; j < g.n_lines(); ++j)
+    for (const double x : g.positions) h.positions.push_back(x + 100.0 * j);  // labels only
+  h.stress = g.stress;  // (k * lines + j) * positions + i = k * (lines * positions) + (j * positions + i)
+  return h;
+}
+
+void expect_certified_3d(const ShakedownResult& r) {
+  ASSERT_EQ(r.status, ShakedownStatus::optimal) << r.message;
+  EXPECT_LE(r.certificate.yield_violation, 1e-7);
+  EXPECT_LE(r.certificate.duality_gap, 1e-7);
+  EXPECT_GE(r.certificate.duality_gap, -1e-12);
+}
+
+TEST(ShakedownResidual3d, StressFunctionsAreSelfEquilibratedAndTractionFree) {
+  // Equation (3) of shakedown_3d.hpp by central differences (h = 1e-5 on breakpoint spacings
+  // 0.05 .. 0.25), at random unknowns, on uneven breakpoints; the free surface and the box's
+  // boundary exactly.
+  const std::vector<double> depths{0.05, 0.1, 0.2, 0.28, 0.4, 0.55}, lines{-0.5, -0.3, -0.2, 0.0, 0.15, 0.4};
+  const ResidualBasis3d basis(depths, lines, {});
+  ASSERT_GT(basis.stress_function_unknowns(), 0);
+  std::vector<double> theta(static_cast<std::size_t>(basis.unknowns()));
+  unsigned state = 12345u;
+  for (double& t : theta) {
+    state = state * 1103515245u + 12345u;
+    t = static_cast<double>(state % 20001u) / 10000.0 - 1.0;
+  }
+  const double h = 1e-5;
+  const auto rho = [&](double y, double z) { return basis.stress_function_part(theta, y, z); };
+  double scale = 0.0, worst = 0.0;
+  for (int a = 0; a <= 40; ++a)
+    for (int b = 1; b <= 30; ++b) {
+      const double y = -0.69 + 1.28 * a / 40.0, z = 0.68 * b / 31.0;
+      const Voigt yp = rho(y + h, z), ym = rho(y - h, z), zp = rho(y, z + h), zm = rho(y, z - h);
+      // Voigt: xx, yy, zz, yz, xz, xy.
+      const double e1 = (yp[5] - ym[5]) / (2 * h) + (zp[4] - zm[4]) / (2 * h);
+      const double e2 = (yp[1] - ym[1]) / (2 * h) + (zp[3] - zm[3]) / (2 * h);
+      const double e3 = (yp[3] - ym[3]) / (2 * h) + (zp[2] - zm[2]) / (2 * h);
+      for (const double v : rho(y, z)) scale = std::max(scale, std::abs(v));
+      worst = std::max({worst, std::abs(e1), std::abs(e2), std::abs(e3)});
+    }
+  std::printf("[ 3-D residual ] largest stress %.3g, largest divergence %.3g (per unit length)\n", scale, worst);
+  ASSERT_GT(scale, 0.5);
+  // One derivative of a stress of size `scale` over a spacing 0.05 is 20 scale: the divergence
+  // vanishes to 1e-6 of that (the differences' truncation and rounding).
+  EXPECT_LT(worst, 1e-6 * scale / 0.05);
+  for (int a = 0; a <= 50; ++a) {
+    const double y = -0.7 + 1.35 * a / 50.0;
+    const Voigt s = rho(y, 0.0);
+    EXPECT_NEAR(s[2], 0.0, 1e-12 * scale) << y;  // rho_zz
+    EXPECT_NEAR(s[3], 0.0, 1e-12 * scale) << y;  // rho_yz
+    EXPECT_NEAR(s[4], 0.0, 1e-12 * scale) << y;  // rho_xz
+    const Voigt bottom = rho(y, 0.7);  // the box's floor: 0.55 + 0.15
+    EXPECT_NEAR(bottom[2], 0.0, 1e-12 * scale) << y;
+    EXPECT_NEAR(bottom[3], 0.0, 1e-12 * scale) << y;
+    EXPECT_NEAR(bottom[4], 0.0, 1e-12 * scale) << y;
+    for (const double v : rho(y, 0.71)) EXPECT_EQ(v, 0.0);  // zero outside the box
+  }
+  for (int b = 0; b <= 50; ++b) {
+    const double z = 0.7 * b / 50.0;
+    for (const double y : {-0.7, 0.65}) {  // the box's sides: one spacing beyond the outer lines
+      const Voigt s = rho(y, z);
+      EXPECT_NEAR(s[5], 0.0, 1e-12 * scale) << y << " " << z;  // rho_xy
+      EXPECT_NEAR(s[1], 0.0, 1e-12 * scale) << y << " " << z;  // rho_yy
+      EXPECT_NEAR(s[3], 0.0, 1e-12 * scale) << y << " " << z;  // rho_yz
+    }
+  }
+  const ResidualBasis3d depth_only(depths, lines, ResidualModel3d{false});
+  EXPECT_EQ(depth_only.stress_function_unknowns(), 0);
+  EXPECT_EQ(depth_only.unknowns(), 3 * static_cast<int>(depths.size()));
+}
+
+TEST(Shakedown3d, StripLoadReproducesTheLineContact) {
+  // A load that does not vary along y (McEwen's field on 3 lines, the 2-D sampling of the header):
+  // no residual of (y, z) can beat the line contact's bound. At the two samples of a station where
+  // the orthogonal shear peaks (+/- t), |lambda sigma_xz + rho_xz| <= sqrt(J2) <= k gives
+  // lambda t <= k whatever rho, so 1 / max|sigma_xz| of the samples bounds the 3-D limit; the
+  // depth-only von Mises program (rho_xx, rho_yy, rho_xy) is a subset. Johnson & Jefferis'
+  // p0/k = 4.0 (frictionless, Tresca; von Mises reaches it too, VonMisesFrictionlessIsFourK) to
+  // the 2-D test's 2e-3 on this sampling.
+  const StressHistory h = line_contact_history(0.0);
+  const StressHistory3d g = strip_history(h, 3);
+  const YieldCriterion mises = YieldCriterion::von_mises(std::sqrt(3.0));
+  const ShakedownResult r = solve_shakedown_3d(g, mises);
+  expect_certified_3d(r);
+  const ShakedownResult line =
+      solve_shakedown(h, mises, ResidualModel{{VoigtComponent::xx, VoigtComponent::yy, VoigtComponent::xy}});
+  ASSERT_EQ(line.status, ShakedownStatus::optimal) << line.message;
+  double tmax = 0.0;
+  for (const Voigt& s : h.stress) tmax = std::max(tmax, std::abs(s[4]));
+  std::printf("[ 3-D strip, von Mises ] p0/k: %.6f (2-D depth-only %.6f, 1/max|sxz| %.6f) at z = %.2f a; "
+              "%.2f s, %d rounds, %d conditions\n",
+              r.load_factor, line.load_factor, 1.0 / tmax, h.depths[static_cast<std::size_t>(r.critical_depth)],
+              r.time_s, r.rounds, r.constraints);
+  EXPECT_NEAR(r.load_factor, 4.0, 4.0 * 2e-3);
+  EXPECT_GE(r.load_factor, line.load_factor * (1 - 1e-7));
+  EXPECT_LE(r.certificate.lower_bound, (1.0 / tmax) * (1 + 1e-9));
+  EXPECT_NEAR(h.depths[static_cast<std::size_t>(r.critical_depth)], 0.5, 0.021);
+  // Tresca through the inscribed cone: the same program (k the same), Tresca's own first yield
+  // 1 / 0.300 = 3.33 (Johnson 1985 section 4.2; sigma_yy = nu (sigma_xx + sigma_zz) the
+  // intermediate stress), and Tresca's limit bracketed by [lambda, 2/sqrt 3 lambda_up].
+  const ShakedownResult t = solve_shakedown_3d(g, YieldCriterion::tresca_inscribed(1.0));
+  expect_certified_3d(t);
+  EXPECT_NEAR(t.load_factor / r.load_factor, 1.0, 1e-6);
+  EXPECT_NEAR(t.elastic_limit, 3.33, 0.005 * 3.33);
+  EXPECT_NEAR(t.limit_upper_bound, 2.0 / std::sqrt(3.0) * t.certificate.upper_bound, 1e-12);
+  EXPECT_EQ(t.verdict, ShakedownVerdict::elastic);  // p0 = 1 < 3.33 k (k = 1)
+  // At p0/k = 5.0 the line contact is beyond shakedown (Tresca's 4.0); the cone's certificate
+  // brackets Tresca's limit by 2/sqrt 3 x 4.0 = 4.62 < 5.0, so the verdict is certain.
+  StressHistory3d heavy = g;
+  for (Voigt& v : heavy.stress)
+    for (double& c : v) c *= 5.0;
+  const ShakedownResult beyond = solve_shakedown_3d(heavy, YieldCriterion::tresca_inscribed(1.0));
+  EXPECT_LT(beyond.limit_upper_bound, 1.0);
+  EXPECT_EQ(beyond.verdict, ShakedownVerdict::beyond_shakedown);
+  EXPECT_THROW(solve_shakedown_3d(g, YieldCriterion::tresca_plane_xz(1.0)), std::invalid_argument);
+}
+
+/// Hertz's frictionless circular contact, a = p0 = 1, nu = 0.3: the field of the piecewise-
+/// constant pressure on 41 x 41 elements over [-2.05, 2.05]^2 (dx = 0.1 a; core/subsurface_field.hpp,
+/// checked against Johnson's (3.45) in test_subsurface_field.cpp), sampled at depths 0 .. 0.9 a
+/// (step 0.05 a) on the 25 lines |y| <= 1.2 a and the 41 positions along x.
+StressHistory3d hertz_point_history() {
+  const int n = 41;
+  const Grid grid = Grid::make(3, n, n, -2.05, 2.05, -2.05, 2.05);
+  SurfaceTractions t;
+  t.p.resize(grid.size());
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double r2 = grid.xc(i) * grid.xc(i) + grid.yc(j) * grid.yc(j);
+      t.p[grid.index(i, j)] = r2 < 1.0 ? std::sqrt(1.0 - r2) : 0.0;
+    }
+  StressHistory3d g;
+  for (int k = 0; k <= 18; ++k) g.depths.push_back(0.05 * k);
+  SubsurfaceField field(grid, Elastic::from_E_nu(1.0, kNu), BodySide::body);
+  const SubsurfaceResult r = field.compute(t, g.depths);
+  std::vector<int> lines;
+  for (int j = 0; j < n; ++j)
+    if (std::abs(grid.yc(j)) <= 1.2 + 1e-9) {
+      lines.push_back(j);
+      g.lines.push_back(grid.yc(j));
+    }
+  for (int i = 0; i < n; ++i) g.positions.push_back(grid.xc(i));
+  for (std::size_t k = 0; k < g.depths.size(); ++k)
+    for (const int j : lines)
+      for (int i = 0; i < n; ++i) g.stress.push_back(voigt_stress(r.point(k, i, j)));
+  return g;
+}
+
+TEST(Shakedown3d, HertzPointContactAgainstPublishedBounds) {
+  // Published (frictionless free rolling, circular Hertz contact): the kinematic (upper) bound
+  // p0/k = 4.7 for Tresca (A. R. S. Ponter, A. D. Hearle, K. L. Johnson, J. Mech. Phys. Solids 33
+  // (1985) 339-362; K. L. Johnson, Contact Mechanics 1985, section 9.5 and Fig. 9.7); the line
+  // contact's 4.0 for comparison. Our value is a static (Melan) lower bound for Tresca through the
+  // inscribed cone (k = 1), so it must lie below 4.7: the 1 % allowed is the sampling's (the
+  // sampled program can exceed the continuum's limit: 0.2 % in the line contact at dx = 0.02 a,
+  // here dx = 0.1 a). First yield is exact: Tresca's largest shear on the axis, 0.31 p0 at
+  // z = 0.48 a (Johnson (3.45), from the closed form on a fine scan below), p0/k = 1/0.31 = 3.2;
+  // checked to 1 % (the piecewise-constant pressure at dx = 0.1 a and the depth step 0.05 a).
+  const StressHistory3d g = hertz_point_history();
+  double tau_axis = 0.0;
+  for (int k = 0; k <= 20000; ++k) {
+    const auto s = closed_form::hertz_sphere_axis(1e-4 * k, 1.0, 1.0, kNu);
+    tau_axis = std::max(tau_axis, 0.5 * std::abs(s.sigma_z - s.sigma_r));
+  }
+  EXPECT_NEAR(tau_axis, 0.31, 0.005);
+  const YieldCriterion tresca = YieldCriterion::tresca_inscribed(1.0);
+  const ShakedownResult r = solve_shakedown_3d(g, tresca);
+  expect_certified_3d(r);
+  const ShakedownResult depth_only = solve_shakedown_3d(g, tresca, ResidualModel3d{false});
+  expect_certified_3d(depth_only);
+  std::printf("[ 3-D Hertz point, Tresca ] p0/k: shakedown >= %.4f (depth-only residual %.4f), Tresca's limit <= "
+              "%.4f; at z = %.2f a, y = %.2f a; elastic limit %.4f (closed form 1/%.4f = %.4f); %.2f s, %d rounds, "
+              "%d conditions, %d iterations\n",
+              r.certificate.lower_bound, depth_only.load_factor, r.limit_upper_bound,
+              g.depths[static_cast<std::size_t>(r.critical_depth)], g.lines[static_cast<std::size_t>(r.critical_line)],
+              r.elastic_limit, tau_axis, 1.0 / tau_axis, r.time_s, r.rounds, r.constraints, r.iterations);
+  EXPECT_NEAR(r.elastic_limit * tau_axis, 1.0, 0.01);
+  EXPECT_NEAR(g.lines[static_cast<std::size_t>(r.elastic_limit_line)], 0.0, 1e-12);  // on the axis
+  EXPECT_LE(r.certificate.lower_bound, 4.7 * 1.01);
+  EXPECT_GE(r.load_factor, depth_only.load_factor * (1 - 1e-7));  // a superset of residuals
+  EXPECT_GT(r.load_factor, r.elastic_limit * std::sqrt(3.0) / 2);  // above the cone's own first yield
+}
+
+TEST(Shakedown3d, DepthOnlyModelIsTheLineContactProgramOnEveryLine) {
+  // vary_across = false is the depth-only set rho_xx(z), rho_yy(z), rho_xy(z): the 2-D program with
+  // the samples of all lines as one depth's positions, and the per-depth bisection
+  // (shakedown_by_depth.hpp, no Ipopt), to 1e-6; von Mises on the point contact's history.
+  const StressHistory3d g = hertz_point_history();
+  const YieldCriterion mises = YieldCriterion::von_mises(std::sqrt(3.0));
+  const ResidualModel all{{VoigtComponent::xx, VoigtComponent::yy, VoigtComponent::xy}};
+  const ShakedownResult a = solve_shakedown_3d(g, mises, ResidualModel3d{false});
+  expect_certified_3d(a);
+  const StressHistory h = flattened(g);
+  const ShakedownResult b = solve_shakedown(h, mises, all);
+  ASSERT_EQ(b.status, ShakedownStatus::optimal) << b.message;
+  const DepthShakedownLimits c = shakedown_by_depth(h, mises, all, 1e-12);
+  std::printf("[ 3-D Hertz point, von Mises, depth-only ] p0/k: %.6f (2-D program %.6f, bisection %.6f); "
+              "elastic limit %.4f\n",
+              a.load_factor, b.load_factor, c.min_load_factor, a.elastic_limit);
+  EXPECT_NEAR(a.load_factor / b.load_factor, 1.0, 1e-6);
+  EXPECT_NEAR(a.load_factor / c.min_load_factor, 1.0, 1e-6);
+  EXPECT_EQ(a.critical_depth, b.critical_depth);
+  EXPECT_NEAR(a.elastic_limit, b.elastic_limit, 1e-12 * b.elastic_limit);
+}
+
+TEST(Shakedown3d, InvalidInputIsRejected) {
+  StressHistory3d g = strip_history(line_contact_history(0.0, 3, 4), 3);
+  const YieldCriterion mises = YieldCriterion::von_mises(1.0);
+  g.lines = {0.0, 0.0, 1.0};
+  EXPECT_THROW(solve_shakedown_3d(g, mises), std::invalid_argument);
+  g.lines = {-1.0, 0.0, 1.0};
+  g.depths[0] = -0.1;
+  EXPECT_THROW(solve_shakedown_3d(g, mises), std::invalid_argument);
+  g.depths[0] = 0.0;
+  EXPECT_EQ(g.validate(), "");
+  g.stress.pop_back();
+  EXPECT_EQ(g.validate().rfind("stress:", 0), 0u);
 }
 
 }  // namespace

@@ -160,9 +160,6 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
                            to_string(c.problem) + "'");
   }
   c.shakedown = top.boolean_or("shakedown", false);
-  if (c.shakedown && c.dimension != 2)
-    throw InputError("shakedown", "Melan's program here takes the residual stresses of a line contact (rho_xx(z), "
-                                  "rho_yy(z)): 2-D cases only (3-D rho(y, z): not yet)");
   if (c.shakedown && !c.yields.base)
     throw InputError("shakedown", "needs the base's yield strength (materials.base.yield: von_mises or tresca_k)");
   if (c.problem == ProblemKind::dynamic && c.fatigue.base && c.output.snapshot_every <= 0)

@@ -60,7 +60,7 @@ struct Case : DynamicContactSpec {
   SubsurfaceSpec subsurface;                        ///< problems normal, tangential (the final state)
   BodyYields yields;                                ///< materials.*.yield (problems normal, tangential)
   BodyFatigue fatigue;                              ///< materials.*.fatigue (problems normal, tangential)
-  bool shakedown = false;                           ///< "shakedown": Melan's limit of the rolling load (2-D)
+  bool shakedown = false;                           ///< "shakedown": Melan's limit of the rolling load
   std::vector<std::string> blocks;  ///< the top-level keys the case file gave
   nlohmann::json source;            ///< the (overridden) JSON the case was read from (sweeps re-read it)
 
