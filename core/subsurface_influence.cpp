@@ -1,5 +1,6 @@
 #include "subsurface_influence.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -290,11 +291,20 @@ void SubsurfaceCoefficients::set_depth(double depth) {
       rectangle_corner((k - 0.5) * grid_.dx, (l - 0.5) * grid_.dy, depth, v);
       const std::size_t at = k + static_cast<std::size_t>(cx_) * l;
       for (int f = 0; f < kCornerFns; ++f) corners_[f * plane + at] = v[f];
-      if (mirrored && k < l) {
-        const std::size_t swapped = l + static_cast<std::size_t>(cx_) * k;
-        for (int f = 0; f < kCornerFns; ++f) corners_[kCornerSwap[f] * plane + swapped] = v[f];
-      }
     }
+  if (!mirrored) return;
+  // The other half, plane by plane in 32 x 32 blocks (a transpose: stored one at a time into 25
+  // planes it missed the cache at every store): F_swap(f)(l, k) = F_f(k, l) for k < l.
+  constexpr int kBlock = 32;
+  const std::size_t cx = static_cast<std::size_t>(cx_);
+  for (int f = 0; f < kCornerFns; ++f) {
+    const double* from = corners_.data() + f * plane;
+    double* to = corners_.data() + kCornerSwap[f] * plane;
+    for (int l0 = 0; l0 < cy_; l0 += kBlock)
+      for (int k0 = 0; k0 <= l0; k0 += kBlock)
+        for (int l = l0; l < std::min(l0 + kBlock, cy_); ++l)
+          for (int k = k0; k < std::min({k0 + kBlock, l, cx_}); ++k) to[l + cx * k] = from[k + cx * l];
+  }
 }
 
 bool SubsurfaceCoefficients::square_corners() const {
