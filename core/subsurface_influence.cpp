@@ -1,5 +1,6 @@
 #include "subsurface_influence.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -15,6 +16,12 @@ enum CornerFn : int {
   f002, f003, f110, f111, zf112, f101, f011, f102, f012, zf103, zf013, f200, f020,
   f201, f021, f202, f022, f300, f030, zf301, zf031, f210, f120, f211, f121, kCornerFns
 };
+
+/// The corner function with the roles of a and b exchanged: F_f(b, a, d) = F_swap(f)(a, b, d),
+/// exactly in floating point (rectangle_corner evaluates each pair by mirrored expressions).
+constexpr int kCornerSwap[kCornerFns] = {f002,  f003,  f110,  f111,  zf112, f011,  f101, f012, f102,
+                                         zf013, zf103, f020,  f200,  f021,  f201,  f022, f202, f030,
+                                         f300,  zf031, zf301, f120,  f210,  f121,  f211};
 
 /// x + r for r = sqrt(x^2 + rest), rest >= 0, without cancellation for x < 0.
 double sum_with_radius(double x, double r, double rest) { return x >= 0.0 ? x + r : rest / (r - x); }
@@ -275,13 +282,39 @@ void SubsurfaceCoefficients::set_depth(double depth) {
     }
     return;
   }
+  // Square elements on a square grid: the corner (l, k) is the corner (k, l) with a and b
+  // exchanged (kCornerSwap), so only the corners k <= l are evaluated; the same values.
+  const bool mirrored = square_corners();
   double v[kCornerFns];
   for (int l = 0; l < cy_; ++l)
-    for (int k = 0; k < cx_; ++k) {
+    for (int k = 0; k < (mirrored ? l + 1 : cx_); ++k) {
       rectangle_corner((k - 0.5) * grid_.dx, (l - 0.5) * grid_.dy, depth, v);
       const std::size_t at = k + static_cast<std::size_t>(cx_) * l;
       for (int f = 0; f < kCornerFns; ++f) corners_[f * plane + at] = v[f];
     }
+  if (!mirrored) return;
+  // The other half, plane by plane in 32 x 32 blocks (a transpose: stored one at a time into 25
+  // planes it missed the cache at every store): F_swap(f)(l, k) = F_f(k, l) for k < l.
+  constexpr int kBlock = 32;
+  const std::size_t cx = static_cast<std::size_t>(cx_);
+  for (int f = 0; f < kCornerFns; ++f) {
+    const double* from = corners_.data() + f * plane;
+    double* to = corners_.data() + kCornerSwap[f] * plane;
+    for (int l0 = 0; l0 < cy_; l0 += kBlock)
+      for (int k0 = 0; k0 <= l0; k0 += kBlock)
+        for (int l = l0; l < std::min(l0 + kBlock, cy_); ++l)
+          for (int k = k0; k < std::min({k0 + kBlock, l, cx_}); ++k) to[l + cx * k] = from[k + cx * l];
+  }
+}
+
+bool SubsurfaceCoefficients::square_corners() const {
+  return grid_.dimension == 3 && grid_.nx == grid_.ny && grid_.dx == grid_.dy;
+}
+
+void SubsurfaceCoefficients::mirror(int c, Axis load, int& mc, Axis& ml) {
+  static constexpr int kSwap[kFieldComponents] = {kUy, kUx, kUz, kSyy, kSxx, kSzz, kSxy, kSyz, kSxz};
+  mc = kSwap[c];
+  ml = load == kX ? kY : (load == kY ? kX : kZ);
 }
 
 int SubsurfaceCoefficients::parity_x(int c, Axis load) {

@@ -111,6 +111,14 @@ class SubsurfaceCoefficients {
   static int parity_x(int component, Axis load);
   static int parity_y(int component, Axis load);
   const Grid& grid() const { return grid_; }
+  /// A square 3-D grid of square elements (nx = ny, dx = dy): the tables of a pair exchanged by
+  /// the reflection x <-> y are each other's transposes (mirror()), and set_depth evaluates
+  /// half the corners.
+  bool square_corners() const;
+  /// The table the reflection x <-> y maps (component, load) to: u_x <-> u_y, sigma_xx <->
+  /// sigma_yy, sigma_xz <-> sigma_yz, tau_x <-> tau_y; on a square grid K_mirror(di, dj) =
+  /// K(dj, di).
+  static void mirror(int component, Axis load, int& mirror_component, Axis& mirror_load);
 
  private:
   Grid grid_;

@@ -45,9 +45,12 @@ Eigen::Matrix<double, 5, 6> deviatoric_coordinate_map();
 
 /// sqrt(J2) = sqrt(s:s / 2).
 double sqrt_j2(const Voigt& s);
-/// Tresca's shear: half the largest difference of principal stresses, (s1 - s3) / 2.
+/// Tresca's shear: half the largest difference of principal stresses, (s1 - s3) / 2, from the
+/// deviator's invariants: sqrt(J2) sin(theta + pi/3), Lode's angle theta = acos(r) / 3,
+/// r = (3 sqrt 3 / 2) J3 / J2^(3/2); within 6 degrees of a repeated root (1 - r^2 <= 0.01) from
+/// principal_stresses. Within 8 eps |sigma| of the exact value.
 double tresca_shear(const Voigt& s);
-/// Principal stresses, ascending.
+/// Principal stresses, ascending: cyclic Jacobi rotations (backward stable, within 8 eps |sigma|).
 Eigen::Vector3d principal_stresses(const Voigt& s);
 
 }  // namespace dc

@@ -30,6 +30,13 @@
 #   scripts/bench.sh fft [--sizes 45,91,152,304,512]
 #                               one operator apply on the FFT path (normal, 2x2 tangential, kappa B21)
 #                               and its set-up on n x n grids, one thread (dyncontact_fft_bench)
+#   scripts/bench.sh subsurface [--sizes 64,128,256] [--repeat 5] [--depths 32]
+#                               one thread: one normal solve (set-up and solve, native) of the Hertz
+#                               sphere and the subsurface field of one body from its pressure at 32
+#                               depths to 1.5 a with the measures (von Mises, Tresca, hydrostatic,
+#                               |sigma_xz| and their extremes), thread CPU time, medians of the
+#                               repeats, and their ratio (dyncontact_subsurface_bench;
+#                               docs/subsurface.md "Speed")
 #   scripts/bench.sh finite [--repeat 2] [--sparse-dofs 10k] [--dofs 10k,50k,200k] [--grids 32,64]
 #                               problem "finite" (examples/bench/finite-hemisphere-bench.json): a hemisphere of
 #                               about 10k, 50k and 200k dofs on a 32^2 and a 64^2 grid, condensed program
@@ -83,6 +90,11 @@ if [[ "${1:-}" == "fft" ]]; then
   shift
   scripts/setup.sh
   exec "$BUILD_DIR/bin/dyncontact_fft_bench" "$@"
+fi
+if [[ "${1:-}" == "subsurface" ]]; then
+  shift
+  scripts/setup.sh
+  DYNCONTACT_THREADS=1 exec "$BUILD_DIR/bin/dyncontact_subsurface_bench" "$@"
 fi
 if [[ "${1:-}" == "finite" ]]; then
   shift

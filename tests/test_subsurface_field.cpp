@@ -132,6 +132,83 @@ TEST(SubsurfaceField, ClosedFormsConsistency) {
   EXPECT_NEAR(axis0.sigma_r, -(1.0 + 2.0 * nu) / 2.0 * p0, 1e-15);  // the surface value at r = 0
 }
 
+// Square grid of square elements: the mirror pairs (x <-> y) are transformed once and read
+// transposed, and half the corner functions are evaluated; the same sums as the direct path,
+// with all three traction components (the pairs tau_x <-> tau_y active) and each alone.
+TEST(SubsurfaceField, FftEqualsDirectOnSquareGrid) {
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const Elastic m = Elastic::from_G_nu(80e9, 0.28);
+  const std::vector<double> depths = {0.0, 0.02, 0.35, 2.0};
+  const Grid grid = Grid::make(3, 21, 21, -1.0, 1.1, -0.8, 1.3);
+  ASSERT_EQ(grid.dx, grid.dy);
+  dc::SurfaceTractions all;
+  for (std::vector<double>* v : {&all.p, &all.tau_x, &all.tau_y}) v->resize(grid.size());
+  for (std::size_t e = 0; e < grid.size(); ++e)
+    all.p[e] = 1e6 * (1.0 + u(rng)), all.tau_x[e] = 3e5 * u(rng), all.tau_y[e] = 3e5 * u(rng);
+  // Each shear alone with a mean (a zero-mean shear alone leaves components that cancel to
+  // 1e-3 of their terms, where the comparison measures that cancellation, not the path).
+  std::vector<double> tx(grid.size()), ty(grid.size());
+  for (std::size_t e = 0; e < grid.size(); ++e) tx[e] = 3e5 * (1.0 + u(rng)), ty[e] = 3e5 * (1.0 + u(rng));
+  std::vector<dc::SurfaceTractions> cases(4, dc::SurfaceTractions{});
+  cases[0] = all;
+  cases[1].p = all.p;
+  cases[2].tau_x = tx;
+  cases[3].tau_y = ty;
+  for (const dc::SurfaceTractions& t : cases)
+    for (BodySide side : {BodySide::body, BodySide::base}) {
+      dc::SubsurfaceField field(grid, m, side);
+      const dc::SubsurfaceResult fft = field.compute(t, depths, SubsurfaceMethod::fft);
+      const dc::SubsurfaceResult direct = field.compute(t, depths, SubsurfaceMethod::direct);
+      double worst = 0.0;
+      for (std::size_t k = 0; k < depths.size(); ++k)
+        for (int c = 0; c < dc::kFieldComponents; ++c) {
+          const double* a = fft.component(k, c);
+          const double* b = direct.component(k, c);
+          const double scale = max_abs(b, grid.size());
+          if (scale == 0.0) continue;
+          for (std::size_t e = 0; e < grid.size(); ++e) worst = std::max(worst, std::abs(a[e] - b[e]) / scale);
+        }
+      EXPECT_LT(worst, 1e-12);  // as on the non-square grid below
+    }
+}
+
+// The reflection x <-> y on a square grid: K_mirror(di, dj) = K(dj, di) for every table, to the
+// rounding of its corner sums (the corner functions of the mirrored half are the evaluated ones
+// exchanged; the sums are taken in another order). The scale: the table's largest value at
+// depth 0, where the corner functions are of the size they have at any depth.
+TEST(SubsurfaceField, MirrorTablesAreTransposes) {
+  const Elastic m = Elastic::from_G_nu(80e9, 0.3);
+  const Grid grid = Grid::make(3, 9, 9, -0.5, 0.4, -0.45, 0.45);
+  dc::SubsurfaceCoefficients coefficients(grid, m, BodySide::body);
+  ASSERT_TRUE(coefficients.square_corners());
+  const auto largest = [](const dc::KernelTable& t) {
+    double s = 0.0;
+    for (double v : t.values) s = std::max(s, std::abs(v));
+    return s;
+  };
+  for (int c = 0; c < dc::kFieldComponents; ++c)
+    for (dc::Axis load : {dc::kX, dc::kY, dc::kZ}) {
+      int mc = 0;
+      dc::Axis ml = dc::kZ;
+      dc::SubsurfaceCoefficients::mirror(c, load, mc, ml);
+      dc::KernelTable a, b;
+      coefficients.set_depth(0.0);
+      coefficients.fill(c, load, a);
+      const double scale = largest(a);
+      for (double depth : {0.0, 0.05, 0.7}) {
+        coefficients.set_depth(depth);
+        coefficients.fill(c, load, a);
+        coefficients.fill(mc, ml, b);
+        double worst = 0.0;
+        for (int dj = -(grid.ny - 1); dj < grid.ny; ++dj)
+          for (int di = -(grid.nx - 1); di < grid.nx; ++di)
+            worst = std::max(worst, std::abs(b.at(di, dj) - a.at(dj, di)));
+        EXPECT_LE(worst, 1e-15 * scale) << "component " << c << ", load " << load << ", depth " << depth;
+      }
+    }
+}
+
 TEST(SubsurfaceField, FftEqualsDirectOnNonSquareGrid) {
   std::mt19937 rng(29);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
