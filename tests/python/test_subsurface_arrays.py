@@ -132,3 +132,16 @@ def test_example_subsurface_vti_reads_back_in_vtk(tmp_path, name):
     vm = arrays["base_von_mises"].reshape(nd, ny, nx)
     assert math.isclose(float(vm[k, j, i]), s["max_von_mises"], rel_tol=1e-7)
     assert math.isclose(float(vm.max()), s["max_von_mises"], rel_tol=1e-7)
+
+
+def test_solve_out_writes_the_blocks_files(tmp_path):
+    # solve(case, out=...) writes what `dyncontact solve` writes for the block: the image and the
+    # planes through each body's worst point.
+    case = hertz_sphere(nx=16)
+    case["subsurface"] = {"depths": "0:2e-4:5", "bodies": ["base"]}
+    r = dyncontact.solve(case, out=tmp_path / "out")
+    assert r["files"]["subsurface"] == "subsurface.vti"
+    assert r["files"]["subsurface_planes"] == ["subsurface_base_xz.csv", "subsurface_base_yz.csv"]
+    for name in ["subsurface.vti"] + r["files"]["subsurface_planes"]:
+        assert (tmp_path / "out" / name).is_file()
+    assert json.loads((tmp_path / "out" / "summary.json").read_text())["files"] == r["files"]
