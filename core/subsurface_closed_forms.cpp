@@ -81,13 +81,13 @@ PlaneStresses line_contact_axis(double z, double a, double p0) {
 }
 
 namespace {
-using Complex = std::complex<double>;
+using JetValue = std::complex<double>;
 
 /// A function of s = r^2 as its Taylor coefficients about one s to third order (complex).
 struct RadialJet {
-  std::array<Complex, 4> c{};
+  std::array<JetValue, 4> c{};
 };
-RadialJet jet_add(const RadialJet& u, const RadialJet& v, Complex cu = 1.0, Complex cv = 1.0) {
+RadialJet jet_add(const RadialJet& u, const RadialJet& v, JetValue cu = 1.0, JetValue cv = 1.0) {
   RadialJet w;
   for (int n = 0; n < 4; ++n) w.c[n] = cu * u.c[n] + cv * v.c[n];
   return w;
@@ -102,7 +102,7 @@ RadialJet jet_sqrt(const RadialJet& u) {
   RadialJet w;
   w.c[0] = std::sqrt(u.c[0]);
   for (int n = 1; n < 4; ++n) {
-    Complex sum = u.c[n];
+    JetValue sum = u.c[n];
     for (int k = 1; k < n; ++k) sum -= w.c[k] * w.c[n - k];
     w.c[n] = sum / (2.0 * w.c[0]);
   }
@@ -112,7 +112,7 @@ RadialJet jet_log(const RadialJet& u) {  // n w_n u_0 = n u_n - sum_k k w_k u_(n
   RadialJet w;
   w.c[0] = std::log(u.c[0]);
   for (int n = 1; n < 4; ++n) {
-    Complex sum = static_cast<double>(n) * u.c[n];
+    JetValue sum = static_cast<double>(n) * u.c[n];
     for (int k = 1; k < n; ++k) sum -= static_cast<double>(k) * w.c[k] * u.c[n - k];
     w.c[n] = sum / (static_cast<double>(n) * u.c[0]);
   }
@@ -122,7 +122,7 @@ RadialJet jet_inverse(const RadialJet& u) {
   RadialJet w;
   w.c[0] = 1.0 / u.c[0];
   for (int n = 1; n < 4; ++n) {
-    Complex sum = 0.0;
+    JetValue sum = 0.0;
     for (int k = 1; k <= n; ++k) sum += u.c[k] * w.c[n - k];
     w.c[n] = -sum / u.c[0];
   }
@@ -134,11 +134,11 @@ struct OmegaAntiderivatives {
   std::array<RadialJet, 6> g;  ///< g[k + 2] = G_k
   const RadialJet& operator()(int k) const { return g[static_cast<std::size_t>(k + 2)]; }
 };
-OmegaAntiderivatives omega_antiderivatives(double s, Complex zeta) {
+OmegaAntiderivatives omega_antiderivatives(double s, JetValue zeta) {
   RadialJet sj, one;
   sj.c = {s, 1.0, 0.0, 0.0};
   one.c = {1.0, 0.0, 0.0, 0.0};
-  const Complex z2 = zeta * zeta, z3 = z2 * zeta, z4 = z3 * zeta;
+  const JetValue z2 = zeta * zeta, z3 = z2 * zeta, z4 = z3 * zeta;
   const RadialJet R = jet_sqrt(jet_add(sj, one, 1.0, z2));
   const RadialJet L = jet_log(jet_add(R, one, 1.0, zeta));
   const RadialJet s2 = jet_mul(sj, sj);
@@ -158,9 +158,9 @@ OmegaAntiderivatives omega_antiderivatives(double s, Complex zeta) {
 }
 
 /// d^(i+j) f / dx^i dy^j of f(x^2 + y^2), i + j <= 3, from the jet of f in s.
-Complex radial_derivative(const RadialJet& f, int i, int j, double x, double y) {
-  const Complex f1 = f.c[1], f2 = 2.0 * f.c[2], f3 = 6.0 * f.c[3];
-  const auto d = [&](int p, int q, double u, double v) -> Complex {  // derivative p in u, q in v
+JetValue radial_derivative(const RadialJet& f, int i, int j, double x, double y) {
+  const JetValue f1 = f.c[1], f2 = 2.0 * f.c[2], f3 = 6.0 * f.c[3];
+  const auto d = [&](int p, int q, double u, double v) -> JetValue {  // derivative p in u, q in v
     switch (10 * p + q) {
       case 0: return f.c[0];
       case 10: return 2.0 * u * f1;
@@ -189,8 +189,8 @@ double hertz_distribution_stress(const KernelTerms& terms, const OmegaAntideriva
   double sum = 0.0;
   for (const KernelTerm& t : terms) {
     if (t.with_z && z == 0.0) continue;
-    const Complex theta = radial_derivative(g(3 - t.m), t.i, t.j, x, y);
-    const Complex theta1 = radial_derivative(g(2 - t.m), t.i, t.j, x, y);
+    const JetValue theta = radial_derivative(g(3 - t.m), t.i, t.j, x, y);
+    const JetValue theta1 = radial_derivative(g(2 - t.m), t.i, t.j, x, y);
     sum += t.c * (t.with_z ? z : 1.0) * (theta.imag() - a * theta1.real());
   }
   return amplitude / a * sum;
@@ -217,7 +217,7 @@ std::array<KernelTerms, 6> shear_x_kernel(double nu) {
 
 SpatialStresses hertz_distribution_field(const std::array<KernelTerms, 6>& kernel, double x, double y, double z,
                                          double a, double amplitude) {
-  const OmegaAntiderivatives g = omega_antiderivatives(x * x + y * y, Complex(z, a));
+  const OmegaAntiderivatives g = omega_antiderivatives(x * x + y * y, JetValue(z, a));
   std::array<double, 6> v{};
   for (int c = 0; c < 6; ++c) v[c] = hertz_distribution_stress(kernel[c], g, x, y, z, a, amplitude);
   return {v[0], v[1], v[2], v[3], v[4], v[5]};
