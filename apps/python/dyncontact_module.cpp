@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@
 #include "result_limits.hpp"
 #include "summary_writer.hpp"
 #include "subsurface_run.hpp"
+#include "subsurface_series.hpp"
 #include "tangential_run.hpp"
 
 namespace dc::python {
@@ -49,9 +51,11 @@ StaticSolve solve_static_case(const Case& c, const py::object& out, bool progres
   if (!out.is_none())
     folder = output::open_output_folder(c, py::str(py::module_::import("os").attr("fspath")(out)), "out");
   StaticSolve r;
+  std::optional<output::SubsurfaceSnapshots> series;  // a history's states, as `dyncontact solve` writes them
+  if (folder.lock && c.subsurface.enabled) series.emplace(folder.dir);
   {
     py::gil_scoped_release release;
-    r.run = runs::run_static(c, progress);
+    r.run = runs::run_static(c, progress, series ? runs::subsurface_file_sink(*series) : nullptr);
   }
   r.solved = c;  // on the grid solved (an accuracy target chooses it)
   r.solved.grid = r.run.grid;
@@ -61,6 +65,7 @@ StaticSolve solve_static_case(const Case& c, const py::object& out, bool progres
   if (folder.lock) {  // summary.json last: complete or absent
     output::write_fields(folder.dir, r.solved.grid, r.run.fields.back());
     nlohmann::json files = {{"summary", "summary.json"}, {"fields", "fields.csv"}};
+    if (series && series->count() > 0) files["subsurface_series"] = series->collection();
     if (r.run.subsurface) runs::write_subsurface_files(folder.dir, c, *r.run.subsurface, files);
     r.summary["files"] = files;
     output::write_summary(folder.dir, r.summary);

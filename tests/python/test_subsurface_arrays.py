@@ -146,3 +146,22 @@ def test_solve_out_writes_the_blocks_files(tmp_path):
     for name in ["subsurface.vti"] + r["files"]["subsurface_planes"]:
         assert (tmp_path / "out" / name).is_file()
     assert json.loads((tmp_path / "out" / "summary.json").read_text())["files"] == r["files"]
+
+
+def test_a_history_writes_its_series(tmp_path):
+    # A loading history (normal loads 50, 100 then 70 N on the Hertz sphere, no shear): the
+    # arrays are the final state's, the series of every state is written as by `dyncontact solve`
+    # (subsurface_<step>.vti in subsurface.pvd), and the largest stress is the 100 N state's.
+    case = hertz_sphere(nx=16)
+    case["problem"] = "tangential"
+    case["friction"] = {"law": "coulomb", "mu": 0.3}
+    case["tangential"] = {"regime": "shift", "history": [
+        {"force": [0.0, 0.0], "normal": {"force": f}} for f in (50.0, 100.0, 70.0)]}
+    r = dyncontact.subsurface(case, depths="0:3e-4:7", bodies=["base"], out=tmp_path / "out")
+    files = r["summary"]["files"]
+    assert files["subsurface_series"] == "subsurface.pvd"
+    assert (tmp_path / "out" / "subsurface.pvd").is_file()
+    assert len(list((tmp_path / "out").glob("subsurface_*.vti"))) == 3
+    assert r["bodies"]["base"]["stress"].shape == (7, 16, 16, 6)
+    final = r["bodies"]["base"]["von_mises"].max()
+    assert r["summary"]["subsurface"]["base"]["max_von_mises"] > final  # the worst state: 100 N
