@@ -27,6 +27,7 @@ PACKAGES=(
   pkg-config cmake g++ make
   libopenmpi-dev openmpi-bin
   python3-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib
+  python3-vtk9  # VTK's Python (ParaView's reader): the tests open subsurface.vti as a user would
   libgmsh-dev libsuitesparse-dev  # finite-element bodies (DYNCONTACT_WITH_FE)
   libmetis-dev  # METIS orders the sparse saddle form for MUMPS (nlp/mumps_ordering_hook.hpp)
   libopenblas0-pthread  # an optimised BLAS for CHOLMOD and MUMPS (reference BLAS: 6x slower factorisations)

@@ -5,7 +5,9 @@
 // planes' CSV, a rigid body without a field, and bad input naming its key.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -477,6 +479,91 @@ TEST_F(CliSubsurface, DangVanOverADynamicRollingPassIsJohnsonsOrthogonalShear) {
   json once = c;
   once["output"]["snapshot_every"] = 0;
   expect_input_error("validate " + write_case(once), "materials.base.fatigue");
+}
+
+// ---------------------------------------------------------------------------------------------
+// The bundled examples of the field, run as shipped (exit 0).
+
+/// rail-shakedown: a wheel (R = 460 mm) on a rail as a line contact, 15 MN/m with a tractive
+/// force 0.2 P. The description's Hertz numbers (b = 8.7 mm, p0 = 1.09 GPa, Johnson 4.2); the
+/// shakedown map point: under Tresca in the x-z plane with traction the limit is p0 / max|sigma_xz|
+/// (the residual rho_xx cancels all but the orthogonal shear: docs/subsurface.md), so it equals
+/// p0 over the field's own orthogonal-shear maximum (within 1 % on 400 strips over +-3 b, depths
+/// every b/35); the verdict follows its two load factors and is the description's "shakedown";
+/// first yield's utilisation is max tau_1 / k (tau_1 of the three principal stresses: at the
+/// surface under traction sigma_yy = nu (sigma_xx + sigma_zz) takes part, so it exceeds the
+/// in-plane elastic limit's 1 / lambda_e) and first yield at utilisation^-2 x the load; Dang Van's
+/// index is reported.
+TEST_F(CliSubsurface, RailShakedownExample) {
+  const json c = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "rail-shakedown.json"));
+  const auto r = run("solve " + write_case(c) + " --out out -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json s = json::parse(slurp(dir_ / "out" / "summary.json"));
+  const auto h = dc::hertz::cylinder2d(0.46, 1.5e7, 2.1e11 / (2.0 * (1.0 - 0.09)));
+  EXPECT_NEAR(h.a, 8.7e-3, 0.05e-3);
+  EXPECT_NEAR(h.p0, 1.09e9, 0.005e9);
+  const double p0 = s.at("max_pressure").get<double>(), k = 3.45e8;
+  EXPECT_NEAR(p0 / h.p0, 1.0, 0.005);
+  const json& sd = s.at("shakedown");
+  EXPECT_EQ(sd.at("status"), "optimal");
+  EXPECT_NEAR(sd.at("traction_coefficient").get<double>(), 0.2, 1e-6);
+  EXPECT_NEAR(sd.at("p0_over_k").get<double>(), p0 / k, 1e-9 * p0 / k);
+  const json& base = s.at("subsurface").at("base");
+  const double orthogonal = base.at("max_orthogonal_shear").get<double>();
+  EXPECT_NEAR(sd.at("shakedown_p0_over_k").get<double>() / (p0 / orthogonal), 1.0, 0.01);
+  const double lambda = sd.at("load_factor").get<double>(), lambda_e = sd.at("elastic_limit_load_factor").get<double>();
+  EXPECT_EQ(sd.at("verdict"), lambda_e >= 1.0 ? "elastic" : lambda >= 1.0 ? "shakedown" : "beyond");
+  EXPECT_EQ(sd.at("verdict"), "shakedown");
+  const json& y = s.at("yield").at("base");
+  EXPECT_EQ(y.at("criterion"), "tresca");
+  EXPECT_NEAR(y.at("utilisation").get<double>(), base.at("max_tresca").get<double>() / k, 1e-12);
+  EXPECT_GE(y.at("utilisation").get<double>() * lambda_e, 1.0 - 1e-9);
+  // The tangential force follows the normal load: Carter's solution at a fixed Q/P is similar,
+  // p0 grows as sqrt(P) in 2-D, so first yield is at utilisation^-2 x the load (within 2 %).
+  ASSERT_TRUE(y.at("first_yield_load_factor").is_number()) << y.dump();
+  const double factor = y.at("first_yield_load_factor").get<double>(), u = y.at("utilisation").get<double>();
+  EXPECT_NEAR(factor * u * u, 1.0, 0.02);
+  const json& f = s.at("fatigue").at("base");
+  EXPECT_GT(f.at("dang_van_max").get<double>(), 0.0);
+  EXPECT_EQ(f.at("beta"), 3.0e8);
+  // The sigma_xz range of the passage: at least the largest |sigma_xz| (its sign reverses).
+  EXPECT_GE(f.at("orthogonal_shear_range").get<double>(), orthogonal);
+  std::printf("[ info ] rail-shakedown: p0/k = %.3f, shakedown p0/k = %.3f (p0/max|sxz| = %.3f), elastic limit "
+              "%.3f, verdict %s; utilisation %.3f, first yield at %.3f x the load (u^-2 = %.3f); Dang Van %.3f\n",
+              p0 / k, sd.at("shakedown_p0_over_k").get<double>(), p0 / orthogonal, lambda_e * p0 / k,
+              sd.at("verdict").get<std::string>().c_str(), u, factor, 1.0 / (u * u), f.at("dang_van_max").get<double>());
+}
+
+/// bearing-subsurface: a ball on a race, 1.5 kN (elliptic Hertz, Johnson 4.2). Its peak pressure
+/// the description's 2.77 GPa; subsurface.vti written; the von Mises maximum below the
+/// surface between the line contact's 0.559 p0 and the sphere's 0.62 p0 (Johnson 6.2: first yield
+/// at p0 = 1.79 Y and 1.60 Y); and first yield: at a fixed ellipticity Hertz's field scales with
+/// p0 ~ P^(1/3), so the factor is the utilisation^-3 (within 2 % on the grid solved).
+TEST_F(CliSubsurface, BearingSubsurfaceExample) {
+  const json c = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "bearing-subsurface.json"));
+  const auto r = run("solve " + write_case(c) + " --out out -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json s = json::parse(slurp(dir_ / "out" / "summary.json"));
+  const auto h = dc::hertz::elliptic(1.0 / (2.0 * 0.0048), 1.0 / (2.0 * 0.06), 1500.0, 2.1e11 / (2.0 * (1.0 - 0.09)));
+  EXPECT_NEAR(h.p0 / 2.77e9, 1.0, 0.005);
+  const double p0 = s.at("max_pressure").get<double>();
+  EXPECT_NEAR(p0 / h.p0, 1.0, 0.01);
+  EXPECT_EQ(s.at("files").at("subsurface"), "subsurface.vti");
+  const json& base = s.at("subsurface").at("base");
+  const double vm = base.at("max_von_mises").get<double>();
+  EXPECT_GT(vm / p0, 0.55);
+  EXPECT_LT(vm / p0, 0.63);
+  EXPECT_GT(base.at("at")[2].get<double>(), 0.0);
+  const json& y = s.at("yield").at("base");
+  EXPECT_EQ(y.at("criterion"), "von_mises");
+  const double u = y.at("utilisation").get<double>();
+  EXPECT_NEAR(u, vm / 1.9e9, 1e-12);
+  ASSERT_TRUE(y.at("first_yield_load_factor").is_number()) << y.dump();
+  EXPECT_NEAR(y.at("first_yield_load_factor").get<double>() * u * u * u, 1.0, 0.02);
+  std::printf("[ info ] bearing-subsurface: p0 = %.4g Pa (Hertz %.4g), max von Mises %.4f p0 at depth %.3g m "
+              "(b = %.3g m); utilisation %.3f, first yield factor %.3f (u^-3 = %.3f)\n",
+              p0, h.p0, vm / p0, base.at("at")[2].get<double>(), std::min(h.a, h.b), u,
+              y.at("first_yield_load_factor").get<double>(), 1.0 / (u * u * u));
 }
 
 }  // namespace

@@ -160,11 +160,8 @@ int run_solve(const SolveArgs& args) {
   }
   std::vector<output::SubsurfaceBody> bodies;  // the subsurface block's field of the final state
   if (run.subsurface && c.subsurface.enabled) {  // subsurface.vti (evenly spaced depths) and the planes through the worst points
-    bodies = runs::subsurface_bodies(*run.subsurface);
     if (subsurface_series.count() > 0) files["subsurface_series"] = subsurface_series.collection();
-    if (!bodies.empty() && output::evenly_spaced(run.subsurface->depths))
-      files["subsurface"] = output::write_subsurface_vti(dir, bodies);
-    if (!bodies.empty() && c.subsurface.planes) files["subsurface_planes"] = output::write_subsurface_planes(dir, bodies);
+    bodies = runs::write_subsurface_files(dir, c, *run.subsurface, files);
   }
   if (c.output.plots && !run.interrupted) {  // an interrupted run writes its data, not figures
     Case plotted = solved;

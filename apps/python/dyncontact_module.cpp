@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,12 +27,12 @@
 #include "python_runs.hpp"
 #include "result_limits.hpp"
 #include "summary_writer.hpp"
+#include "subsurface_run.hpp"
+#include "subsurface_series.hpp"
 #include "tangential_run.hpp"
 
 namespace dc::python {
 
-/// A case given as a dict, JSON text, or a path (str or os.PathLike), validated.
-/// The case document of a dict, JSON text, or a path (str or os.PathLike).
 nlohmann::json case_document(const py::object& arg) {
   if (py::isinstance<py::dict>(arg)) return from_python(arg);
   const std::string text = py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
@@ -43,6 +44,35 @@ nlohmann::json case_document(const py::object& arg) {
 }
 
 Case case_from(const py::object& arg) { return build_case(case_document(arg), "."); }
+
+StaticSolve solve_static_case(const Case& c, const py::object& out, bool progress) {
+  // The folder is locked for the call (another run into it is refused before this one solves).
+  output::OutputFolder folder;
+  if (!out.is_none())
+    folder = output::open_output_folder(c, py::str(py::module_::import("os").attr("fspath")(out)), "out");
+  StaticSolve r;
+  std::optional<output::SubsurfaceSnapshots> series;  // a history's states, as `dyncontact solve` writes them
+  if (folder.lock && c.subsurface.enabled) series.emplace(folder.dir);
+  {
+    py::gil_scoped_release release;
+    r.run = runs::run_static(c, progress, series ? runs::subsurface_file_sink(*series) : nullptr);
+  }
+  r.solved = c;  // on the grid solved (an accuracy target chooses it)
+  r.solved.grid = r.run.grid;
+  r.summary = r.run.summary;
+  runs::attach_result_limits(r.solved, r.summary);  // as `dyncontact solve` writes them
+  r.advice = "; the result is in this exception's .result";
+  if (folder.lock) {  // summary.json last: complete or absent
+    output::write_fields(folder.dir, r.solved.grid, r.run.fields.back());
+    nlohmann::json files = {{"summary", "summary.json"}, {"fields", "fields.csv"}};
+    if (series && series->count() > 0) files["subsurface_series"] = series->collection();
+    if (r.run.subsurface) runs::write_subsurface_files(folder.dir, c, *r.run.subsurface, files);
+    r.summary["files"] = files;
+    output::write_summary(folder.dir, r.summary);
+    r.advice = "; the results are written to " + folder.dir + " and are in this exception's .result";
+  }
+  return r;
+}
 
 }  // namespace dc::python
 
@@ -90,26 +120,11 @@ py::dict solve(const py::object& case_arg, const py::object& out, bool progress,
     throw dc::InputError("problem", std::string("'") + dc::to_string(c.problem) +
                                         "' is run by the command line (dyncontact solve); solve() takes normal, "
                                         "tangential, dynamic and paper_cylinder cases");
-  // The folder is locked for the call (another run into it is refused before this one solves).
-  dc::output::OutputFolder folder;
-  if (!out.is_none())
-    folder = dc::output::open_output_folder(c, py::str(py::module_::import("os").attr("fspath")(out)), "out");
-  dc::runs::StaticRun run;
-  {
-    py::gil_scoped_release release;
-    run = dc::runs::run_static(c, progress);
-  }
-  dc::Case solved = c;  // on the grid solved (an accuracy target chooses it)
-  solved.grid = run.grid;
-  nlohmann::json summary = run.summary;
-  dc::runs::attach_result_limits(solved, summary);  // as `dyncontact solve` writes them
-  std::string advice = "; the result is in this exception's .result";
-  if (folder.lock) {  // summary.json last: complete or absent
-    dc::output::write_fields(folder.dir, solved.grid, run.fields.back());
-    summary["files"] = {{"summary", "summary.json"}, {"fields", "fields.csv"}};
-    dc::output::write_summary(folder.dir, summary);
-    advice = "; the results are written to " + folder.dir + " and are in this exception's .result";
-  }
+  StaticSolve r = solve_static_case(c, out, progress);
+  nlohmann::json& summary = r.summary;
+  const dc::Case& solved = r.solved;
+  const dc::runs::StaticRun& run = r.run;
+  const std::string& advice = r.advice;
   py::dict result = to_python(summary);
   result["fields"] = fields_dict(solved.grid, run.fields.back());
   enforce_summary_limits(summary, result, advice);
@@ -191,6 +206,8 @@ PYBIND11_MODULE(dyncontact, m) {
       "  solve(case)                    solve a case (dict, JSON text or path): the summary as a dict (keys\n"
       "                                 of summary.json) with 'fields' (NumPy; normal, tangential) or\n"
       "                                 'timeseries' (NumPy columns; dynamic, paper_cylinder)\n"
+      "  subsurface(case)               the elastic field inside the bodies of a solved case: per body stress\n"
+      "                                 (depths, ny, nx, 6), displacement, von_mises, tresca (NumPy)\n"
       "  Grid, Materials, grid_centres  the contact grid, the elastic pair, the element centres\n"
       "  HalfSpace                      the half-space's influence operators: HalfSpace(g, m).normal().apply(p)\n"
       "  NormalProblem                  (4.7): NormalProblem(g, m, h).solve(force=P) -> NormalSolution\n"
@@ -224,7 +241,8 @@ PYBIND11_MODULE(dyncontact, m) {
         "summary (the keys of summary.json: normal_force, approach, max_pressure, contact_area,\n"
         "tangential_force, solver with its certificate, ...) with 'fields': NumPy arrays x, y, p,\n"
         "tx, ty, sx, sy, state of shape (ny, nx) (2-D: (nx,)). No files are written unless `out`\n"
-        "names a folder (summary.json and fields.csv). A dynamic or paper_cylinder case returns its\n"
+        "names a folder (summary.json, fields.csv and, with a subsurface block, subsurface.vti and\n"
+        "the planes' CSV as `dyncontact solve` writes them). A dynamic or paper_cylinder case returns its\n"
         "summary with 'timeseries': {column: NumPy array} (the columns of timeseries.csv); a sweep's\n"
         "runs each carry theirs under 'runs'.\n\n"
         "A dict may hold Python or NumPy numbers (np.int64, np.float64, np.bool_) and NumPy arrays\n"
@@ -245,6 +263,7 @@ PYBIND11_MODULE(dyncontact, m) {
 
   bind_problems(m);
   bind_runs(m);
+  bind_subsurface(m);
 
   py::class_<dc::Grid>(m, "Grid", "A uniform grid of rectangular elements on the contact plane (m).")
       .def(py::init([](int nx, int ny, double x_min, double x_max, double y_min, double y_max, int dimension) {

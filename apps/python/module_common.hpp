@@ -41,5 +41,6 @@ py::dict csv_columns(const std::string& text);
 
 void bind_problems(py::module_& m);  // problem_bindings.cpp: NormalProblem, TangentialProblem
 void bind_runs(py::module_& m);      // run_bindings.cpp: DynamicSimulation, csv_columns
+void bind_subsurface(py::module_& m);  // subsurface_bindings.cpp: subsurface()
 
 }  // namespace dc::python

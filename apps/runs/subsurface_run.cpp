@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "subsurface_writer.hpp"
+
 namespace dc::runs {
 
 Case with_verdict_bodies(const Case& c) {
@@ -89,6 +91,16 @@ nlohmann::json subsurface_json(const SubsurfaceRun& run, int dimension) {
   for (const std::string& r : run.rigid) s[r] = {{"rigid", true}};
   s["depths"] = run.depths;
   return s;
+}
+
+std::vector<output::SubsurfaceBody> write_subsurface_files(const std::string& dir, const Case& c,
+                                                          const SubsurfaceRun& run, nlohmann::json& files) {
+  if (!c.subsurface.enabled) return {};
+  const std::vector<output::SubsurfaceBody> bodies = subsurface_bodies(run);
+  if (bodies.empty()) return bodies;
+  if (output::evenly_spaced(run.depths)) files["subsurface"] = output::write_subsurface_vti(dir, bodies);
+  if (c.subsurface.planes) files["subsurface_planes"] = output::write_subsurface_planes(dir, bodies);
+  return bodies;
 }
 
 void print_subsurface(const SubsurfaceRun& run) {

@@ -53,6 +53,13 @@ std::vector<output::SubsurfaceBody> subsurface_bodies(const SubsurfaceRun& run);
 /// max_orthogonal_shear, at_orthogonal ([x, y, depth]; 2-D [x, depth]), and the depths.
 nlohmann::json subsurface_json(const SubsurfaceRun& run, int dimension);
 
+/// The block's files in `dir` (output/subsurface_writer.hpp) when the case asks for the field:
+/// subsurface.vti (evenly spaced depths) and, with `planes`, the planes through each body's worst
+/// point; their names into `files` ("subsurface", "subsurface_planes"), as summary.json lists them.
+/// Returns the bodies written (subsurface_bodies; none without the block).
+std::vector<output::SubsurfaceBody> write_subsurface_files(const std::string& dir, const Case& c,
+                                                          const SubsurfaceRun& run, nlohmann::json& files);
+
 /// The maxima per body on stdout (the solve command's report).
 void print_subsurface(const SubsurfaceRun& run);
 
