@@ -34,7 +34,7 @@ class CliEnergy : public dc::test::CliTest {
 json carter_case() {
   json c = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "carter-2d.json"));
   c["accuracy"] = {{"estimate", false}};
-  c["output"] = {{"plots", false}};
+  c["output"] = {{"plots", false}, {"power", true}};
   return c;
 }
 
@@ -80,7 +80,7 @@ TEST_F(CliEnergy, SteadyRollingsCreepPowerIsItsDissipationAndTheSchemesShare) {
 TEST_F(CliEnergy, AShiftHistoryDissipatesOnlyWhereItSlipsAndAddsItUp) {
   json c = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "cattaneo-sphere.json"));
   c["accuracy"] = {{"estimate", false}};
-  c["output"] = {{"plots", false}};
+  c["output"] = {{"plots", false}, {"power", true}};
   // Q = 0.5 mu P, back to 0, and to -0.5 mu P: every step slips somewhere.
   c["tangential"] = {{"regime", "shift"},
                      {"history", {{{"force", {-15.0, 0.0}}}, {{"force", {0.0, 0.0}}}, {{"force", {15.0, 0.0}}}}}};
@@ -113,6 +113,12 @@ TEST_F(CliEnergy, AShiftHistoryDissipatesOnlyWhereItSlipsAndAddsItUp) {
     EXPECT_GT(w, -1e-8 * largest);
   }
   EXPECT_GT(largest, 0.0);
+  // Without output.power: the contract's columns only.
+  c["output"]["power"] = false;
+  solve(c);
+  std::istringstream plain(slurp(dir_ / "out" / "fields.csv"));
+  std::getline(plain, line);
+  EXPECT_EQ(line, "x,y,p,tx,ty,sx,sy,state");
 }
 
 }  // namespace

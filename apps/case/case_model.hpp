@@ -25,6 +25,9 @@ struct OutputSpec {
   bool fields = true;
   bool plots = true;
   int snapshot_every = 0;  ///< dynamic: the contact fields every k steps (0: none)
+  /// fields.csv also the frictional power density (`power`, W/m^2) or the step's work per area
+  /// (`dissipation`, J/m^2) as a last column; off: the contract's columns only.
+  bool power = false;
 };
 
 // Reading a block (the pattern every block follows):

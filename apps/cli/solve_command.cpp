@@ -149,13 +149,13 @@ int run_solve(const SolveArgs& args) {
       nlohmann::json per_step = nlohmann::json::array();
       for (std::size_t k = 0; k < run.fields.size(); ++k) {
         const std::string name = "fields_" + std::to_string(k) + ".csv";
-        output::write_fields(dir, solved.grid, run.fields[k], name);
+        output::write_fields(dir, solved.grid, run.fields[k], name, c.output.power);
         per_step.push_back(name);
         s["steps"][k]["fields"] = name;
       }
       files["fields_steps"] = per_step;
     }
-    output::write_fields(dir, solved.grid, run.fields.back());
+    output::write_fields(dir, solved.grid, run.fields.back(), "fields.csv", c.output.power);
     files["fields"] = "fields.csv";
   }
   std::vector<output::SubsurfaceBody> bodies;  // the subsurface block's field of the final state

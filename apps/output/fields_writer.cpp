@@ -8,13 +8,14 @@
 
 namespace dc::output {
 
-std::string write_fields(const std::string& dir, const Grid& grid, const StaticFields& f, const std::string& file) {
+std::string write_fields(const std::string& dir, const Grid& grid, const StaticFields& f, const std::string& file,
+                         bool work_column) {
   const std::string path = (std::filesystem::path(dir) / file).string();
   auto at_or_zero = [](const std::vector<double>& v, std::size_t e) { return e < v.size() ? v[e] : 0.0; };
   // The frictional power density (W/m^2) where the step has a rate, else the step's work per area.
-  const bool work = !f.dissipation.empty();
-  const char* work_column = f.dissipation_rate > 0.0 ? ",power\n" : ",dissipation\n";
-  std::string text = std::string("x,y,p,tx,ty,sx,sy,state") + (work ? work_column : "\n");
+  const bool work = work_column && !f.dissipation.empty();
+  const char* work_header = f.dissipation_rate > 0.0 ? ",power\n" : ",dissipation\n";
+  std::string text = std::string("x,y,p,tx,ty,sx,sy,state") + (work ? work_header : "\n");
   text.reserve(text.size() + grid.size() * 96);
   // std::to_chars(..., general, 10) writes what printf's %.10g does, several times faster.
   char line[256];

@@ -63,7 +63,7 @@ StaticSolve solve_static_case(const Case& c, const py::object& out, bool progres
   runs::attach_result_limits(r.solved, r.summary);  // as `dyncontact solve` writes them
   r.advice = "; the result is in this exception's .result";
   if (folder.lock) {  // summary.json last: complete or absent
-    output::write_fields(folder.dir, r.solved.grid, r.run.fields.back());
+    output::write_fields(folder.dir, r.solved.grid, r.run.fields.back(), "fields.csv", r.solved.output.power);
     nlohmann::json files = {{"summary", "summary.json"}, {"fields", "fields.csv"}};
     if (series && series->count() > 0) files["subsurface_series"] = series->collection();
     if (r.run.subsurface) runs::write_subsurface_files(folder.dir, c, *r.run.subsurface, files);
