@@ -9,6 +9,7 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -105,6 +106,13 @@ std::string image_defect(const std::string& file, const std::string& ext) {
 }
 
 }  // namespace
+
+std::string gnuplot_number(double v, int digits) {
+  if (!std::isfinite(v)) return "?";
+  char b[40];
+  std::snprintf(b, sizeof b, "%.*g", digits, v);
+  return b;
+}
 
 std::vector<std::string> render_gnuplot(const std::string& dir, const std::string& case_name,
                                         const std::vector<GnuplotFigure>& figures) {

@@ -14,6 +14,9 @@ struct GnuplotFigure {
   std::string body;  ///< gnuplot commands (title, axes, plot ...)
 };
 
+/// A number for a gnuplot data file: %.<digits>g, "?" (the scripts' missing value) when not finite.
+std::string gnuplot_number(double v, int digits = 9);
+
 /// Writes plots.gp for `figures` and runs gnuplot in `dir`; returns the images produced (none
 /// without gnuplot). Throws OutputError naming the image when one fails.
 std::vector<std::string> render_gnuplot(const std::string& dir, const std::string& case_name,

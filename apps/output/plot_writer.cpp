@@ -19,12 +19,7 @@ namespace {
 /// Map images are drawn from at most this many cells per axis.
 constexpr int kMapCells = 256;
 
-std::string num(double v) {
-  if (!std::isfinite(v)) return "?";
-  char b[32];
-  std::snprintf(b, sizeof b, "%.9g", v);
-  return b;
-}
+std::string num(double v) { return gnuplot_number(v); }
 
 double field(const std::vector<double>& v, std::size_t e) { return e < v.size() ? v[e] : 0.0; }
 

@@ -13,12 +13,7 @@ namespace {
 /// Plane maps are drawn from at most this many points along the surface.
 constexpr int kPlaneCells = 256;
 
-std::string plane_number(double v) {
-  if (!std::isfinite(v)) return "?";
-  char b[32];
-  std::snprintf(b, sizeof b, "%.7g", v);
-  return b;
-}
+std::string plane_number(double v) { return gnuplot_number(v, 7); }
 
 /// The data of one plane: `along depth von_mises tresca sxz`, one block per depth (gnuplot's
 /// grid data for `with image`), the element `index(m)` of the m-th point along the plane.
