@@ -33,6 +33,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "bench_sphere.hpp"
 #include "blas_threads.hpp"
 #include "case_model.hpp"
 #include "grid.hpp"
@@ -46,7 +47,11 @@
 
 namespace {
 
-constexpr double kE = 2.1e11, kNu = 0.3, kRadius = 0.01, kForce = 100.0, kExtent = 1.3;
+using dc::bench::kE;
+using dc::bench::kExtent;
+using dc::bench::kForce;
+using dc::bench::kNu;
+using dc::bench::kRadius;
 
 struct Options {
   std::vector<std::string> backends{"native", "ipopt", "nlopt"};
@@ -113,27 +118,18 @@ double peak_rss_mib() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux: KiB
 }
 
-dc::MaterialPair steel_on_steel() {
-  dc::MaterialPair m;
-  m.body = dc::Elastic::from_E_nu(kE, kNu, "materials.body");
-  m.base = dc::Elastic::from_E_nu(kE, kNu, "materials.base");
-  return m;
-}
-
 /// Tangential cases on the same sphere, Coulomb mu = 0.3: shift by Q = mu P / 2 (error: rigid
 /// shift vs Mindlin) or steady rolling by F = mu P / 2. Iterations: the last inner solve's.
 void run_tangential(const std::string& problem, int n, const dc::SolverOptions& solver, Row& row, double& setup_s,
                     double& solve_s) {
   using clock = std::chrono::steady_clock;
   constexpr double kMu = 0.3;
-  const dc::MaterialPair materials = steel_on_steel();
-  const dc::hertz::SphereSolution hertz = dc::hertz::sphere(kRadius, kForce, materials.E_star());
-  const double half = 1.2 * hertz.a;
-  dc::ProfileSpec profile;
-  profile.type = dc::ProfileType::sphere;
-  profile.radius = kRadius;
+  const dc::bench::BenchSphere sphere;
+  const dc::MaterialPair& materials = sphere.materials;
+  const dc::hertz::SphereSolution& hertz = sphere.hertz;
+  const dc::ProfileSpec& profile = sphere.profile;
   const auto t0 = clock::now();
-  const dc::Grid grid = dc::Grid::make(3, n, n, -half, half, -half, half);
+  const dc::Grid grid = sphere.grid(n, 1.2);
   dc::TangentialProblem tp(grid, materials, dc::profile_heights(profile, grid), dc::FrictionLaw::coulomb(kMu));
   const auto t1 = clock::now();
   const dc::NormalSpec normal{dc::Control::force, kForce};
@@ -177,15 +173,11 @@ Row run_case(const std::string& backend, int n, const Options& options) {
   row.backend = backend;
   row.n = n;
   try {
-    const dc::MaterialPair materials = steel_on_steel();
-    const dc::hertz::SphereSolution hertz = dc::hertz::sphere(kRadius, kForce, materials.E_star());
-    const double half = kExtent * hertz.a;
-    dc::ProfileSpec profile;
-    profile.type = dc::ProfileType::sphere;
-    profile.radius = kRadius;
-    dc::NormalSpec control;
-    control.control = dc::Control::force;
-    control.value = kForce;
+    const dc::bench::BenchSphere sphere;
+    const dc::MaterialPair& materials = sphere.materials;
+    const dc::hertz::SphereSolution& hertz = sphere.hertz;
+    const dc::ProfileSpec& profile = sphere.profile;
+    const dc::NormalSpec& control = sphere.normal;
     dc::SolverOptions solver;
     solver.backend = *dc::backend_from_string(backend);  // one of --backends' names
     solver.fallback = false;  // time the backend asked for, not a fallback
@@ -207,7 +199,7 @@ Row run_case(const std::string& backend, int n, const Options& options) {
     }
     for (int k = 0; k < options.repeat && options.problem == "normal"; ++k) {
       const auto t0 = clock::now();
-      const dc::Grid grid = dc::Grid::make(3, n, n, -half, half, -half, half);
+      const dc::Grid grid = sphere.grid(n);
       dc::NormalProblem problem(grid, materials, dc::profile_heights(profile, grid), solver.operator_kind);
       const auto t1 = clock::now();
       const dc::NormalSolution solution = problem.solve(control, solver);
@@ -388,7 +380,7 @@ int main(int argc, char** argv) {
                "Run every case in this process (RSS is then the running peak)");
   CLI11_PARSE(app, argc, argv);
 
-  const dc::MaterialPair materials = steel_on_steel();
+  const dc::MaterialPair materials = dc::bench::steel_on_steel();
   const dc::hertz::SphereSolution hertz = dc::hertz::sphere(kRadius, kForce, materials.E_star());
   std::printf("Hertz sphere: E = %.3g Pa, nu = %.2f (both bodies), R = %g m, P = %g N\n", kE, kNu,
               kRadius, kForce);

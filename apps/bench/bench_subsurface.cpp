@@ -29,10 +29,9 @@
 #include "profile.hpp"
 #include "solver_report.hpp"
 #include "subsurface_field.hpp"
+#include "bench_sphere.hpp"
 
 namespace {
-
-constexpr double kE = 2.1e11, kNu = 0.3, kRadius = 0.01, kForce = 100.0, kExtent = 1.3;
 
 double thread_seconds() {
   timespec t{};
@@ -52,25 +51,19 @@ struct Timing {
 };
 
 Timing run_once(int n, int depth_count) {
-  dc::MaterialPair materials;
-  materials.body = dc::Elastic::from_E_nu(kE, kNu, "materials.body");
-  materials.base = dc::Elastic::from_E_nu(kE, kNu, "materials.base");
+  const dc::bench::BenchSphere sphere;
+  const dc::MaterialPair& materials = sphere.materials;
   const dc::Elastic& steel = materials.body;
-  const dc::hertz::SphereSolution hertz = dc::hertz::sphere(kRadius, kForce, materials.E_star());
-  const double half = kExtent * hertz.a;
-  dc::ProfileSpec profile;
-  profile.type = dc::ProfileType::sphere;
-  profile.radius = kRadius;
-  dc::NormalSpec control;
-  control.control = dc::Control::force;
-  control.value = kForce;
+  const dc::hertz::SphereSolution& hertz = sphere.hertz;
+  const dc::ProfileSpec& profile = sphere.profile;
+  const dc::NormalSpec& control = sphere.normal;
   dc::SolverOptions solver;
   solver.backend = dc::Backend::native;
   solver.fallback = false;
 
   Timing t;
   const double t0 = thread_seconds();
-  const dc::Grid grid = dc::Grid::make(3, n, n, -half, half, -half, half);
+  const dc::Grid grid = sphere.grid(n);
   dc::NormalProblem problem(grid, materials, dc::profile_heights(profile, grid), solver.operator_kind);
   const dc::NormalSolution solution = problem.solve(control, solver);
   const double t1 = thread_seconds();
