@@ -112,6 +112,12 @@ BlokMaximum blok_line_maximum() {
   return m;
 }
 
+double hertz_circle_mean_high_peclet(double peclet) {
+  const double beta = std::sqrt(kThermalPi) * std::tgamma(2.25) / std::tgamma(2.75);  // B(1/2, 9/4)
+  const double J = 32.0 * std::numbers::sqrt2 / 15.0;
+  return beta * J / (kThermalPi * std::sqrt(2.0 * kThermalPi)) / std::sqrt(peclet);
+}
+
 double hertz_line_temperature(double xi, double peclet) {
   const auto f = [xi, peclet](double s) {
     const double d = xi - s;

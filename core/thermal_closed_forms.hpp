@@ -43,6 +43,12 @@
 // (K sqrt(Pe)), Blok's 1.11. The exact finite-Pe temperature of the Hertzian flux:
 //   theta(xi) = (1/pi) int_-1^1 sqrt(1 - s^2) e^(-Pe (xi - s)) K0(Pe |xi - s|) ds,          (H2)
 // by adaptive quadrature split at the logarithmic singularity s = xi.
+// Hertzian flux q0 sqrt(1 - r^2/a^2) on the circle, high Pe: each chord y is (H1) with its half
+// length c = sqrt(a^2 - y^2) and peak q0 c / a, so the maximum is (H1)'s on the central chord,
+// 0.87301 q0 a / (K sqrt(Pe)), and the mean over the disc is
+//   B(1/2, 9/4) J / (pi sqrt(2 pi)) / sqrt(Pe) = 0.47836 / sqrt(Pe),  J = int_-1^1 I = 32 sqrt(2)/15 (H3)
+// (int c^(5/2) dy = a^(7/2) B(1/2, 9/4); int_-1^1 I(xi) dxi = 2 int_-1^1 sqrt(1 - s^2) sqrt(1 + s) ds).
+// In Archard's form with the heat Q = (2/3) pi a^2 q0: 0.323 Q / (a K) sqrt(kappa / (V a)).
 
 namespace dc::thermal {
 
@@ -76,6 +82,8 @@ struct BlokMaximum {
   double xi = 0.0;
 };
 BlokMaximum blok_line_maximum();
+/// (H3): the mean over the disc of the Hertzian flux at high Pe, units q0 a / K.
+double hertz_circle_mean_high_peclet(double peclet);
 /// (H2): the exact temperature of the Hertzian flux at finite Pe, units q0 b / K.
 double hertz_line_temperature(double xi, double peclet);
 

@@ -269,6 +269,30 @@ TEST(FlashTemperature, BlokHertzianLineContact) {
   }
 }
 
+TEST(FlashTemperature, BlokHertzianCircle) {
+  // 3-D, q = q0 sqrt(1 - r^2/a^2) at the element centres of a 61 x 61 grid over the circle's
+  // square, Pe = 100: the maximum on the central chord against (H1)'s 0.87301 (O(1/Pe), the peak
+  // inside the contact: no edge sampling), the mean over the heated elements against (H3)
+  // (the lateral edges: O(Pe^-1/2); the rasterised rim: O(dx / a) of the mean).
+  const Grid grid = Grid::make(3, 61, 61, -1.0, 1.0, -1.0, 1.0);
+  std::vector<double> q(grid.size(), 0.0);
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      const double r2 = grid.xc(i) * grid.xc(i) + grid.yc(j) * grid.yc(j);
+      if (r2 < 1.0) q[grid.index(i, j)] = std::sqrt(1.0 - r2);
+    }
+  const double pe = 100.0;
+  const FlashTemperature ft(grid, surface_at(pe, 1.0), surface_at(pe, 1.0));
+  const std::vector<double> T = ft.surface_temperature(BodySide::base, q);
+  const double max = *std::max_element(T.begin(), T.end()), mean = heated_mean(T, q);
+  const double max_1d = dc::thermal::blok_line_maximum().coefficient / std::sqrt(pe);
+  const double mean_1d = dc::thermal::hertz_circle_mean_high_peclet(pe);
+  std::printf("Hertzian circle Pe %g: max %.6f (Blok %.6f, %.2e), mean %.6f (1-D %.6f, %.2e)\n", pe, max, max_1d,
+              max / max_1d - 1.0, mean, mean_1d, mean / mean_1d - 1.0);
+  EXPECT_NEAR(max / max_1d, 1.0, 1.0 / pe);
+  EXPECT_NEAR(mean / mean_1d, 1.0, 1.0 / std::sqrt(pe) + grid.dx);
+}
+
 TEST(FlashTemperature, FftEqualsDenseAndIsLinear) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);

@@ -108,4 +108,19 @@ TEST(ThermalClosedForms, StationaryAndHighPecletConstants) {
               1e-10);
 }
 
+TEST(ThermalClosedForms, HertzianCircleMean) {
+  // (H3)'s J = 32 sqrt(2) / 15 against a quadrature of (H1) over the band, and the disc's mean
+  // against a quadrature over the chords (each chord (H1) scaled by c^(3/2), a = 1).
+  const double J = dc::integrate_adaptive([](double xi) { return dc::thermal::hertz_line_high_peclet(xi, 1.0); },
+                                          -1.0, 1.0, {1e-11, 0.0, 400}) *
+                   std::sqrt(2.0 * kPi);
+  EXPECT_NEAR(J, 32.0 * std::sqrt(2.0) / 15.0, 1e-9);
+  const double chords = dc::integrate_adaptive(
+      [J](double y) { return std::pow(std::max(0.0, 1.0 - y * y), 1.25) * J; }, -1.0, 1.0, {1e-12, 0.0, 400});
+  const double mean = chords / (kPi * std::sqrt(2.0 * kPi));  // (1 / pi) int c^(5/2) J dy / sqrt(2 pi), Pe = 1
+  std::printf("Hertzian circle, high Pe: mean %.6f q0 a / (K sqrt(Pe)); Archard's form %.4f\n", mean,
+              mean * 3.0 / (2.0 * kPi) * std::sqrt(2.0));
+  EXPECT_NEAR(dc::thermal::hertz_circle_mean_high_peclet(1.0), mean, 1e-9);
+}
+
 }  // namespace thermal_closed_form_tests
