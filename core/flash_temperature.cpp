@@ -51,12 +51,12 @@ double flash_max(const std::vector<double>& T) {
 }  // namespace
 
 FlashTemperature::FlashTemperature(const Grid& grid, const ThermalSurface& base, const ThermalSurface& body,
-                                   OperatorKind kind)
+                                   OperatorKind kind, const std::string& base_key, const std::string& body_key)
     : grid_(grid),
       base_(base),
       body_(body),
-      base_table_(heat_influence_table(grid, base, "base")),
-      body_table_(heat_influence_table(grid, body, "body")),
+      base_table_(heat_influence_table(grid, base, base_key)),
+      body_table_(heat_influence_table(grid, body, body_key)),
       base_op_(make_convolution_operator(grid, {base_table_}, 1, 1, kind)),
       body_op_(make_convolution_operator(grid, {body_table_}, 1, 1, kind)) {}
 

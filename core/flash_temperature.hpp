@@ -28,6 +28,7 @@
 // rolling or sliding, or one step of a run whose flux changes slowly over the contact time).
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "grid.hpp"
@@ -65,10 +66,12 @@ struct FlashTemperatureResult {
 /// step). Not thread-safe (the operators reuse their buffers).
 class FlashTemperature {
  public:
-  /// Errors (InputError) name "base" / "body" with the failing key (e.g. "base.conductivity",
-  /// "body.speed": 2-D needs both speeds nonzero).
+  /// Errors (InputError) name `base_key` / `body_key` with the failing member (e.g.
+  /// "base.conductivity", "body.speed": 2-D needs both speeds nonzero); a run passes its case's
+  /// keys.
   FlashTemperature(const Grid& grid, const ThermalSurface& base, const ThermalSurface& body,
-                   OperatorKind kind = OperatorKind::automatic);
+                   OperatorKind kind = OperatorKind::automatic, const std::string& base_key = "base",
+                   const std::string& body_key = "body");
 
   /// Both temperature maps for the frictional flux `heat_flux` (grid.size() values >= 0,
   /// std::invalid_argument otherwise) shared by `partition`.

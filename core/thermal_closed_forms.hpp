@@ -33,7 +33,8 @@
 // (int (2c)^(3/2) dy = 2^(3/2) a^(5/2) B(1/2, 7/4); Archard 1958, Wear 2, 438-455, writes the
 // mean as 0.31 Q/(a K) sqrt(kappa/(V a)) with Q = pi a^2 q: 0.68855 sqrt(2)/pi = 0.30997).
 // These limits drop conduction along the surface: their relative error is O(Pe^-1/2) for the
-// square's and the circle's means (the lateral edges) and O(Pe^-1) on the centre line.
+// square's and the circle's means (the lateral edges) and about 1/Pe on the centre line (the
+// band's maximum: 3.6e-3 at Pe = 100, 4.8e-4 at Pe = 1000).
 //
 // Hertzian flux q = q0 sqrt(1 - x^2/b^2) on the band (Blok 1937, Proc. Gen. Discussion on
 // Lubrication 2, 222-235; Blok's flash temperature of a Hertzian line contact), high Pe:

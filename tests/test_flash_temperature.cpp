@@ -77,8 +77,8 @@ TEST(FlashTemperature, CoefficientsMatchPointSourceQuadrature) {
 TEST(FlashTemperature, CoefficientsSlowLimitAndMirror) {
   const Grid grid = Grid::make(3, 9, 6, -1.0, 1.0, -0.5, 0.5);
   const dc::KernelTable still = dc::heat_influence_table(grid, surface_at(0.0, 1.0), "s");
-  // At k dx = 1e-10 the quadrature path meets Love's closed form (the first-order change is
-  // -k dx dy / (2 pi K): relative 1e-10).
+  // At k dx = 5e-11 the quadrature path meets Love's closed form (the first-order change is
+  // -k dx dy / (2 pi K): relative 1e-10 at most).
   const dc::KernelTable slow = dc::heat_influence_table(grid, surface_at(1e-10 * 0.5 / grid.dx, 1.0), "s");
   const dc::KernelTable fast = dc::heat_influence_table(grid, surface_at(3.0, 1.0), "s");
   const dc::KernelTable back = dc::heat_influence_table(grid, ThermalSurface{{1.0, 1.0}, -6.0}, "s");
@@ -406,6 +406,11 @@ TEST(FlashTemperature, BadInputNamesTheKey) {
   EXPECT_EQ(key_of([&] { FlashTemperature(line, surface_at(1.0, 1.0), surface_at(0.0, 1.0)); }), "body.speed");
   EXPECT_EQ(key_of([&] { FlashTemperature(plane, ThermalSurface{{1.0, 1.0}, std::nan("")}, surface_at(1.0, 1.0)); }),
             "base.speed");
+  EXPECT_EQ(key_of([&] {
+              FlashTemperature(line, surface_at(1.0, 1.0), surface_at(0.0, 1.0), dc::OperatorKind::automatic,
+                               "materials.base", "materials.body");
+            }),
+            "materials.body.speed");
   const FlashTemperature ft(plane, surface_at(1.0, 1.0), surface_at(0.0, 1.0));
   std::vector<double> q(plane.size(), 1.0);
   EXPECT_EQ(key_of([&] { ft.compute(q, {HeatPartition::Rule::fixed, 1.5}); }), "partition");
