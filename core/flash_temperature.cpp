@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 
 #include "errors.hpp"
+#include "gmres.hpp"
 #include "number_text.hpp"
 
 namespace dc {
@@ -74,28 +75,46 @@ std::vector<double> FlashTemperature::surface_temperature(BodySide side, const s
 }
 
 std::vector<double> FlashTemperature::pointwise_base_flux(const std::vector<double>& q,
-                                                          const std::vector<double>& body_full) const {
+                                                          const std::vector<double>& body_full, double start_fraction,
+                                                          std::size_t dense_limit) const {
   std::vector<std::size_t> heated;
   for (std::size_t e = 0; e < q.size(); ++e)
     if (q[e] > 0.0) heated.push_back(e);
-  if (heated.size() > kPointwisePartitionLimit)
-    throw std::length_error("pointwise heat partition: " + std::to_string(heated.size()) +
-                            " heated elements exceed the dense solve's " +
-                            std::to_string(kPointwisePartitionLimit) + "; use equal_mean or equal_max");
-  const auto n = static_cast<Eigen::Index>(heated.size());
-  Eigen::MatrixXd m(n, n);
-  Eigen::VectorXd rhs(n);
-  for (Eigen::Index r = 0; r < n; ++r) {
-    const int io = static_cast<int>(heated[r] % grid_.nx), jo = static_cast<int>(heated[r] / grid_.nx);
-    for (Eigen::Index c = 0; c < n; ++c) {
-      const int ii = static_cast<int>(heated[c] % grid_.nx), ji = static_cast<int>(heated[c] / grid_.nx);
-      m(r, c) = base_table_.at(io - ii, jo - ji) + body_table_.at(io - ii, jo - ji);
-    }
-    rhs(r) = body_full[heated[r]];  // (A_body q) on S: all the flux into the body
+  const std::size_t n = heated.size();
+  std::vector<double> rhs(n), g(n);
+  for (std::size_t r = 0; r < n; ++r) {
+    rhs[r] = body_full[heated[r]];  // (A_body q) on S: all the flux into the body
+    g[r] = start_fraction * q[heated[r]];
   }
-  const Eigen::VectorXd g = m.partialPivLu().solve(rhs);
+  if (n <= dense_limit) {
+    Eigen::MatrixXd m(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    for (std::size_t r = 0; r < n; ++r) {
+      const int io = static_cast<int>(heated[r] % grid_.nx), jo = static_cast<int>(heated[r] / grid_.nx);
+      for (std::size_t c = 0; c < n; ++c) {
+        const int ii = static_cast<int>(heated[c] % grid_.nx), ji = static_cast<int>(heated[c] / grid_.nx);
+        m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) =
+            base_table_.at(io - ii, jo - ji) + body_table_.at(io - ii, jo - ji);
+      }
+    }
+    Eigen::Map<Eigen::VectorXd>(g.data(), static_cast<Eigen::Index>(n)) =
+        m.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(rhs.data(), static_cast<Eigen::Index>(n)));
+  } else {
+    std::vector<double> full(grid_.size(), 0.0), t_base(grid_.size()), t_body(grid_.size());
+    const VectorMap apply = [&](const std::vector<double>& in, std::vector<double>& out) {
+      for (std::size_t r = 0; r < n; ++r) full[heated[r]] = in[r];
+      base_op_->apply(full.data(), t_base.data());
+      body_op_->apply(full.data(), t_body.data());
+      out.resize(n);
+      for (std::size_t r = 0; r < n; ++r) out[r] = t_base[heated[r]] + t_body[heated[r]];
+    };
+    const GmresResult result = gmres(apply, VectorMap{}, rhs, g, 1e-12, 60, 3000);
+    if (!result.converged)
+      throw SolverFailure("pointwise heat partition: GMRES stopped at relative residual " +
+                          six_digits(result.relative_residual) + " after " + std::to_string(result.iterations) +
+                          " iterations");
+  }
   std::vector<double> base_flux(q.size(), 0.0);
-  for (Eigen::Index r = 0; r < n; ++r) base_flux[heated[r]] = g(r);
+  for (std::size_t r = 0; r < n; ++r) base_flux[heated[r]] = g[r];
   return base_flux;
 }
 
@@ -142,7 +161,9 @@ FlashTemperatureResult FlashTemperature::compute(const std::vector<double>& heat
   r.body.resize(N);
   r.base_flux_fraction.assign(N, f);
   if (partition.rule == HeatPartition::Rule::pointwise && r.heated_elements > 0) {
-    const std::vector<double> g = pointwise_base_flux(heat_flux, body_full);
+    // The equal-mean share starts GMRES.
+    const double mb = flash_heated_mean(base_full, heat_flux), md = flash_heated_mean(body_full, heat_flux);
+    const std::vector<double> g = pointwise_base_flux(heat_flux, body_full, md / (mb + md), partition.dense_limit);
     std::vector<double> rest(N);
     double into_base = 0.0;
     for (std::size_t e = 0; e < N; ++e) {

@@ -20,9 +20,11 @@
 //   equal_max:   the same with the maxima (each T_s is linear in f, its maximum scales with it);
 //   pointwise:   f per element so that T_base = T_body on every heated element: with g = f q,
 //                (A_base + A_body)_SS g_S = (A_body q)_S on the heated set S, solved densely
-//                (LU with partial pivoting; at most kPointwisePartitionLimit heated elements).
-//                The local fraction may leave [0, 1] near the leading edge (heat flows back
-//                into the body that is cooler there); it is reported as it is;
+//                (LU with partial pivoting) up to `dense_limit` heated elements, beyond by
+//                restarted GMRES (gmres.hpp) with the operators (1), from the equal-mean share,
+//                to 1e-12 relative residual. The local fraction may leave [0, 1] near the
+//                leading edge (heat flows back into the body that is cooler there); it is
+//                reported as it is;
 //   fixed:       f given.
 // The quasi-steady form: the flux field is taken as steady in the contact's frame (steady
 // rolling or sliding, or one step of a run whose flux changes slowly over the contact time).
@@ -44,10 +46,9 @@ namespace dc {
 struct HeatPartition {
   enum class Rule { equal_mean, equal_max, pointwise, fixed } rule = Rule::equal_mean;
   double base_fraction = 0.5;  ///< `fixed`: the fraction of q into the base, in [0, 1]
+  /// `pointwise`: heated elements solved densely at most (2000: a 32 MB matrix); beyond, GMRES.
+  std::size_t dense_limit = 2000;
 };
-
-/// Heated elements the pointwise partition solves densely at most (a 2500^2 matrix: 50 MB).
-inline constexpr std::size_t kPointwisePartitionLimit = 2500;
 
 /// Temperature rises (K) at the element centres, the grid's order.
 struct FlashTemperatureResult {
@@ -87,7 +88,8 @@ class FlashTemperature {
   std::string kind() const { return base_op_->kind(); }  ///< "dense" or "fft"
 
  private:
-  std::vector<double> pointwise_base_flux(const std::vector<double>& q, const std::vector<double>& body_full) const;
+  std::vector<double> pointwise_base_flux(const std::vector<double>& q, const std::vector<double>& body_full,
+                                          double start_fraction, std::size_t dense_limit) const;
 
   Grid grid_;
   ThermalSurface base_, body_;
