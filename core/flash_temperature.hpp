@@ -16,7 +16,7 @@
 // surfaces share the contact's temperature; Jaeger 1942, Archard 1958, Wear 2, 438-455):
 //   equal_mean:  one fraction f with equal mean temperatures over the heated elements (q > 0):
 //                f mean(A_base q) = (1 - f) mean(A_body q), i.e. f = m_body / (m_base + m_body)
-//                (the issue's `partition: auto`);
+//                (a case's `partition: auto`);
 //   equal_max:   the same with the maxima (each T_s is linear in f, its maximum scales with it);
 //   pointwise:   f per element so that T_base = T_body on every heated element: with g = f q,
 //                (A_base + A_body)_SS g_S = (A_body q)_S on the heated set S, solved densely
