@@ -1,6 +1,7 @@
 #pragma once
 // Restarted GMRES for matrix-free non-symmetric systems A x = b (right preconditioned:
-// A M^-1 y = b, x = M^-1 y), used by the steady rolling Newton solver.
+// A M^-1 y = b, x = M^-1 y), used by the steady rolling Newton solver, the contact sensitivity and
+// the pointwise heat partition (flash_temperature.hpp).
 #include <functional>
 #include <vector>
 
