@@ -260,8 +260,10 @@ TEST(ShakedownProgram, SixtyFourDepthsTimesTwoHundredFiftySixPositionsIsFast) {
     std::printf("[ %s, 64 x 256 ] %.3f s, %d Ipopt iterations\n", to_string(y.kind), r.time_s, r.iterations);
     std::printf("[ %s, 64 x 256 ] %d rounds, %d of %d yield conditions in the last program\n", to_string(y.kind),
                 r.rounds, r.constraints, h.n_depths() * h.n_positions());
-    // About 0.1 s on this machine with two cores shared; the bound leaves room for a loaded one.
-    EXPECT_LT(r.time_s, 1.0);
+    // 0.13-0.2 s on this machine with two cores shared; the bound leaves room for a loaded one.
+    // A sanitizer build checks every memory access (6 x slower here): the factor the interrupt
+    // tests allow it (test_cli_interrupt.cpp).
+    EXPECT_LT(r.time_s, DYNCONTACT_SANITIZED ? 3.0 : 1.0);
   }
 }
 
