@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "case_model.hpp"
+#include "errors.hpp"
 #include "dynamic_accuracy.hpp"
 #include "dynamic_run.hpp"
 #include "dynamic_sweep.hpp"
@@ -80,6 +81,12 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
     for (const nlohmann::json& run : out.summary["runs"]) enforce_accuracy_target(run, result, kRunAdvice);
     return result;
   }
+  // The field of a dynamic run's snapshots is computed by the command line's run (dynamic_run.cpp):
+  // refused here rather than left out of the result.
+  if (c.subsurface.enabled || c.yields.base || c.yields.body || c.fatigue.base)
+    throw InputError(c.subsurface.enabled ? "subsurface" : c.fatigue.base ? "materials.base.fatigue" : "materials.base.yield",
+                     "a dynamic run's subsurface field, yield and fatigue are computed by `dyncontact solve`, not yet "
+                     "from Python");
   runs::DynamicOutcome out;
   {
     py::gil_scoped_release release;

@@ -35,3 +35,11 @@ def test_solve_returns_the_shakedown_verdict():
     assert s["status"] == "optimal"
     assert abs(s["shakedown_p0_over_k"] - 4.0) < 0.06  # Johnson & Jefferis, frictionless
     assert s["verdict"] == ("elastic" if s["p0_over_k"] < 3.3 else "shakedown" if s["p0_over_k"] < 4.0 else "beyond")
+
+
+def test_dynamic_subsurface_is_refused_not_dropped():
+    import pytest
+    case = example("ball-impact")
+    case["subsurface"] = {}
+    with pytest.raises(dyncontact.InputError, match="subsurface"):
+        dyncontact.solve(case)
