@@ -201,6 +201,20 @@ TEST_F(CliTable, BadRangesAreInputErrorsNamingTheOption) {
     EXPECT_EQ(r.code, 2) << b.args << "\n" << r.err;
     EXPECT_NE(r.err.find(b.option), std::string::npos) << b.args << "\n" << r.err;
   }
+  // Blocks a table would leave out: refused, naming the block, nothing written.
+  for (const auto& [key, patch] : std::vector<std::pair<std::string, json>>{
+           {"subsurface", {{"subsurface", {{"depths", "0:1e-3:4"}}}}},
+           {"materials.base.yield", {{"materials", {{"base", {{"yield", {{"von_mises", 8e8}}}}}}}}},
+           {"accuracy.target", {{"accuracy", {{"target", 1e-3}}}}}}) {
+    json doc = dc::test::example_json("rolling-sphere");
+    doc["grid"] = {{"nx", 16}, {"ny", 16}, {"extent", 1.1}};
+    doc.merge_patch(patch);
+    std::ofstream(dir_ / "beyond.json") << doc.dump();
+    const auto r = run("table beyond.json --creepage 0,1e-3 -q --out beyond");
+    EXPECT_EQ(r.code, 2) << key << "\n" << r.err;
+    EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "beyond")) << key;
+  }
   // Not a rolling case: the key says why.
   std::ofstream(dir_ / "hertz.json") << dc::test::example_json("hertz-sphere").dump();
   const auto r = run("table hertz.json --creepage 0,1e-3 -q --out tab");

@@ -53,6 +53,18 @@ void check_table_case(const Case& c, const TableAxes& axes) {
       if (v != 0.0) throw InputError("--spin", "a 2-D (plane strain) case has no spin");
   }
   if (axes.size() == 0) throw InputError("--creepage", "the table has no points");
+  // A table holds forces only: blocks that ask for more would be silently left out.
+  const char* beyond_forces = c.subsurface.enabled   ? "subsurface"
+                              : c.yields.base        ? "materials.base.yield"
+                              : c.yields.body        ? "materials.body.yield"
+                              : c.fatigue.base       ? "materials.base.fatigue"
+                              : c.fatigue.body       ? "materials.body.fatigue"
+                              : c.shakedown          ? "shakedown"
+                              : c.accuracy.target    ? "accuracy.target"
+                                                     : nullptr;
+  if (beyond_forces)
+    throw InputError(beyond_forces, "a creep-force table gives the forces of each point only; solve the point "
+                                    "with `dyncontact solve` for this");
 }
 
 nlohmann::json solve_table_line(const Case& c, const TableAxes& axes, std::size_t line) {
