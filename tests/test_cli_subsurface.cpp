@@ -417,6 +417,37 @@ double mcewen_max_von_mises(double mu, double nu) {
 // steel. Its tangential force follows the normal load (full slip: the creepage kept), so first
 // yield is at McEwen's p0 = Y / max(sigma_vm / p0) and, p0 growing as sqrt(P) in 2-D, at the
 // load factor (Y / (max sigma_vm))^2.
+/// A shift history holds the material points in place: Dang Van over its steps (one cycle), not
+/// the rolling passage of its final state. Loaded and then unloaded (1e-9 of the load), a point's
+/// deviatoric path is two points: the ball's centre is their midpoint, the mesoscopic shear half the
+/// loaded state's tau_1 at both instants, and the hydrostatic stress zero when unloaded (largest,
+/// for alpha >= 0), so I_DV = max tau_1 / (2 beta): 0.31 p0 / (2 beta) under Hertz's sphere.
+TEST_F(CliSubsurface, DangVanOfALoadCycleIsOverItsStepsAtFixedPoints) {
+  json c = sphere_case();
+  const dc::MaterialPair m{dc::Elastic::from_E_nu(1.17e11, 0.34), dc::Elastic::from_E_nu(2.1e11, 0.3)};
+  const auto h = dc::hertz::sphere(0.008, 60.0, m.E_star());
+  c["problem"] = "tangential";
+  c["friction"] = {{"law", "coulomb"}, {"mu", 0.3}};
+  c["tangential"] = {{"regime", "shift"},
+                     {"history", {{{"normal", {{"force", 60.0}}}, {"force", {0.0, 0.0}}},
+                                  {{"normal", {{"force", 60e-9}}}, {"force", {0.0, 0.0}}}}}};
+  c["subsurface"] = {{"depths", "0:" + std::to_string(1.5 * h.a) + ":61"}};
+  c["materials"]["base"]["fatigue"] = {{"dang_van", {{"alpha", 0.3}, {"beta", 3.0e8}}}};
+  c["materials"]["body"]["fatigue"] = {{"dang_van", {{"alpha", 0.2}, {"beta", 2.0e8}}}};
+  const auto r = run("solve " + write_case(c) + " --out out -q");
+  ASSERT_EQ(r.code, 0) << r.err;  // the unloaded step's contact is under-resolved: a warning only
+  const json s = json::parse(slurp(dir_ / "out" / "summary.json"));
+  for (const auto& [body, beta] : {std::pair<const char*, double>{"base", 3.0e8}, {"body", 2.0e8}}) {
+    const json& f = s.at("fatigue").at(body);
+    EXPECT_EQ(f.at("snapshots"), 2) << body;
+    const double tau1 = s.at("subsurface").at(body).at("max_tresca").get<double>();  // the loaded step's
+    EXPECT_NEAR(f.at("dang_van_max").get<double>() * 2.0 * beta / tau1, 1.0, 1e-6) << body;
+  }
+  const double base_index = s["fatigue"]["base"]["dang_van_max"].get<double>();
+  EXPECT_NEAR(base_index * 2.0 * 3.0e8 / h.p0, 0.31, 0.005);
+  EXPECT_NEAR(s["fatigue"]["base"]["at"][2].get<double>() / h.a, 0.48, 0.03);
+}
+
 TEST_F(CliSubsurface, FirstYieldOfASlidingLineContactIsMcEwens) {
   const double E = 2.1e11, nu = 0.3, R = 0.02, P = 1e5, mu = 0.2;
   const auto h = dc::hertz::cylinder2d(R, P, E / (2.0 * (1.0 - nu * nu)));

@@ -184,12 +184,12 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
     const SubsurfaceSink write = c.subsurface.enabled ? subsurface_file_sink(images) : SubsurfaceSink();
     const std::vector<SubsurfaceState> states = field_states.states();
     std::optional<FatigueOverRun> fatigue;  // Dang Van on the base's points over the snapshots
-    if (c.fatigue.base) fatigue.emplace(fc, grid, subsurface_series_depths(fc, grid, states), states);
+    if (c.fatigue.base) fatigue.emplace("base", *c.fatigue.base, grid, subsurface_series_depths(fc, grid, states), states);
     series = subsurface_series(fc, grid, states, [&](const SubsurfaceState& st, const SubsurfaceRun& run) {
       if (fatigue) fatigue->add(st, run);
       return write ? write(st, run) : std::string();
     });
-    if (fatigue) summary["fatigue"] = fatigue->to_json();
+    if (fatigue) summary["fatigue"] = {{"base", fatigue->to_json()}};
     summary["subsurface"] = subsurface_series_json(*series, grid.dimension, true);
     for (json& state : summary["subsurface"]["states"])
       if (state["step"] == field_states.peak_step()) state["peak_normal_force"] = true;

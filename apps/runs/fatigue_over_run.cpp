@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "dang_van.hpp"
 
@@ -25,9 +26,9 @@ bool centre_weights(double u, double origin, double step, int n, int& i, double&
 
 }  // namespace
 
-FatigueOverRun::FatigueOverRun(const Case& c, const Grid& grid, const std::vector<double>& depths,
-                               const std::vector<SubsurfaceState>& states)
-    : spec_(*c.fatigue.base), grid_(grid), depths_(depths) {
+FatigueOverRun::FatigueOverRun(std::string body, const FatigueSpec& spec, const Grid& grid,
+                               const std::vector<double>& depths, const std::vector<SubsurfaceState>& states)
+    : body_(std::move(body)), spec_(spec), grid_(grid), depths_(depths) {
   double x_lo = 0.0, x_hi = 0.0, y_lo = 0.0, y_hi = 0.0;
   for (std::size_t k = 0; k < states.size(); ++k) {
     const SubsurfaceState& s = states[k];
@@ -58,11 +59,11 @@ FatigueOverRun::FatigueOverRun(const Case& c, const Grid& grid, const std::vecto
 
 void FatigueOverRun::add(const SubsurfaceState& s, const SubsurfaceRun& run) {
   if (!note_.empty()) return;
-  const BodySubsurface* base = nullptr;
+  const BodySubsurface* field = nullptr;
   for (const BodySubsurface& b : run.bodies)
-    if (b.name == "base") base = &b;
-  if (!base) return;
-  const SubsurfaceResult& f = base->field;
+    if (b.name == body_) field = &b;
+  if (!field) return;
+  const SubsurfaceResult& f = field->field;
   const Grid& g = grid_;
   std::size_t point = 0;
   for (std::size_t k = 0; k < depths_.size(); ++k)
@@ -89,7 +90,7 @@ nlohmann::json FatigueOverRun::to_json() const {
   if (!note_.empty() || paths_.empty() || paths_.front().empty()) {
     base["dang_van_max"] = nullptr;
     base["note"] = note_.empty() ? "no snapshot" : note_;
-    return {{"base", base}};
+    return base;
   }
   DangVanParameters p;
   p.alpha = spec_.alpha;
@@ -126,8 +127,8 @@ nlohmann::json FatigueOverRun::to_json() const {
   base["at_orthogonal_range"] = at_range;
   base["snapshots"] = paths_.front().size();
   base["points"] = xs_.size() * ys_.size();
-  base["frame"] = "world (the base's material points)";
-  return {{"base", base}};
+  base["frame"] = "world (the " + body_ + "'s material points)";
+  return base;
 }
 
 }  // namespace dc::runs

@@ -6,6 +6,7 @@
 
 #include "accuracy_run.hpp"
 #include "finite_run.hpp"
+#include "fatigue_over_run.hpp"
 #include "fatigue_run.hpp"
 #include "first_yield.hpp"
 #include "shakedown_run.hpp"
@@ -218,8 +219,22 @@ StaticRun run_static(const Case& c, bool progress, const SubsurfaceSink& history
     const nlohmann::json& s = run.summary;
     const bool steps = s.contains("steps") && s["steps"].is_array() && !s["steps"].empty();
     const Case fc = with_verdict_bodies(c);
+    // A shift or torsion history holds its material points in place: their fatigue is over the
+    // steps (one load cycle), not a rolling passage (fatigue_over_run.hpp).
+    const bool fixed_points = run.history && c.tangential && c.tangential->regime != TangentialRegime::rolling;
+    std::vector<FatigueOverRun> fatigue_over_steps;
     if (run.history) {  // every state's field, the worst over the history; the final state's at the same depths
-      run.subsurface_series = subsurface_series(fc, run.grid, history_states(c, run), history_sink);
+      const std::vector<SubsurfaceState> states = history_states(c, run);
+      if (fatigue && fixed_points) {
+        const std::vector<double> depths = subsurface_series_depths(fc, run.grid, states);
+        if (c.fatigue.base) fatigue_over_steps.emplace_back("base", *c.fatigue.base, run.grid, depths, states);
+        if (c.fatigue.body) fatigue_over_steps.emplace_back("body", *c.fatigue.body, run.grid, depths, states);
+      }
+      run.subsurface_series =
+          subsurface_series(fc, run.grid, states, [&](const SubsurfaceState& st, const SubsurfaceRun& field) {
+            for (FatigueOverRun& f : fatigue_over_steps) f.add(st, field);
+            return history_sink ? history_sink(st, field) : std::string();
+          });
       const SubsurfaceSeries& series = *run.subsurface_series;
       run.subsurface = compute_subsurface(fc, run.grid, run.fields.back(), series.depths);
       run.summary["subsurface"] = subsurface_series_json(series, run.grid.dimension, false);
@@ -229,7 +244,13 @@ StaticRun run_static(const Case& c, bool progress, const SubsurfaceSink& history
       run.summary["subsurface"] = subsurface_json(*run.subsurface, run.grid.dimension);
       if (yields) run.summary["yield"] = first_yield_json(first_yield(c, run), run.grid.dimension);
     }
-    if (fatigue) run.summary["fatigue"] = fatigue_json(c, *run.subsurface);
+    if (fatigue && fixed_points) {
+      nlohmann::json f = nlohmann::json::object();
+      for (const FatigueOverRun& over : fatigue_over_steps) f[over.body()] = over.to_json();
+      run.summary["fatigue"] = f;
+    } else if (fatigue) {
+      run.summary["fatigue"] = fatigue_json(c, *run.subsurface);
+    }
     if (c.shakedown) run.summary["shakedown"] = shakedown_json(c, *run.subsurface, steps ? s["steps"].back() : s);
   }
   return run;
