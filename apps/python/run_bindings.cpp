@@ -14,6 +14,7 @@
 #include "errors.hpp"
 #include "dynamic_accuracy.hpp"
 #include "dynamic_run.hpp"
+#include "dynamic_subsurface.hpp"
 #include "dynamic_sweep.hpp"
 #include "module_common.hpp"
 #include "paper_cylinder_run.hpp"
@@ -81,16 +82,26 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
     for (const nlohmann::json& run : out.summary["runs"]) enforce_accuracy_target(run, result, kRunAdvice);
     return result;
   }
-  // The field of a dynamic run's snapshots is computed by the command line's run (dynamic_run.cpp):
-  // refused here rather than left out of the result.
-  if (c.subsurface.enabled || c.yields.base || c.yields.body || c.fatigue.base)
-    throw InputError(c.subsurface.enabled ? "subsurface" : c.fatigue.base ? "materials.base.fatigue" : "materials.base.yield",
-                     "a dynamic run's subsurface field, yield and fatigue are computed by `dyncontact solve`, not yet "
-                     "from Python");
+  // The field inside the bodies from the snapshots' and the peak load's tractions, as the
+  // command line's run computes it (dynamic_subsurface.hpp), without its files.
   runs::DynamicOutcome out;
   {
     py::gil_scoped_release release;
-    out = runs::simulate_dynamic_with_accuracy(c, progress);
+    Grid grid = c.grid;  // of the run the states are taken from (an accuracy target chooses it)
+    runs::DynamicSubsurface field(c);
+    const int every = c.output.snapshot_every;
+    std::function<void(const dynamics::DynamicSample&)> observe;
+    if (field.wanted())
+      observe = [&](const dynamics::DynamicSample& s) {
+        if (every > 0 && s.step % every == 0) {
+          const output::StaticFields fields = runs::dynamic_step_fields(grid, s.contact_state);
+          field.observe(grid, s, &fields);
+        } else {
+          field.observe(grid, s, nullptr);
+        }
+      };
+    out = runs::simulate_dynamic_with_accuracy(c, progress, observe, &grid);
+    if (!out.result.interrupted) field.add_entries(grid, {}, out.summary);
   }
   py::dict result = to_python(out.summary);
   result["timeseries"] = csv_columns(out.timeseries);

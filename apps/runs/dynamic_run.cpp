@@ -12,10 +12,9 @@
 #include "dynamic_accuracy.hpp"
 #include "dynamic_peaks.hpp"
 #include "dynamic_series.hpp"
+#include "dynamic_subsurface.hpp"
 #include "dynamic_sweep.hpp"
 #include "exit_codes.hpp"
-#include "fatigue_over_run.hpp"
-#include "first_yield.hpp"
 #include "fe_body_estimate.hpp"
 #include "fields_writer.hpp"
 #include "gnuplot_figures.hpp"
@@ -40,24 +39,6 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-
-/// The contact fields of a step (fields.csv's columns); zero without contact.
-output::StaticFields step_fields(const Grid& grid, const dynamics::ContactState& cs) {
-  if (cs.fields) {
-    const TangentialSolution& t = *cs.fields;
-    output::StaticFields f;
-    f.p = t.normal.pressure;
-    f.tx = t.tx;
-    f.ty = t.ty;
-    f.sx = t.sx;
-    f.sy = t.sy;
-    f.bound = t.bound;
-    f.state = t.state;
-    return f;
-  }
-  if (cs.pressure) return output::normal_fields(*cs.pressure, 1e-9);
-  return output::normal_fields(std::vector<double>(grid.size(), 0.0), 1e-9);
-}
 
 }  // namespace
 
@@ -150,23 +131,23 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   output::BodySnapshots body_series(dir);  // an fe_body: body_NNNN.vtu per snapshot and body.pvd
 #endif
   Grid grid = c.grid;  // of the run the snapshots are taken from (an accuracy target chooses it)
-  SubsurfaceStates field_states;  // the snapshots' and the peak load's tractions (subsurface_series.hpp)
-  const bool subsurface = c.subsurface.enabled || c.yields.base || c.yields.body || c.fatigue.base;
+  DynamicSubsurface field(c);  // the snapshots' and the peak load's tractions, their field after the run
+  const bool subsurface = field.wanted();
   const auto write_snapshot = [&](const dynamics::DynamicSample& s) {
+    const output::StaticFields* kept = nullptr;
+    output::StaticFields fields;
     if (every > 0 && s.step % every == 0) {
       const std::string name = "fields_" + std::to_string(s.step) + ".csv";
-      output::StaticFields fields = step_fields(grid, s.contact_state);
+      fields = dynamic_step_fields(grid, s.contact_state);
       output::write_fields(dir, grid, fields, name);
       json snapshot = {{"step", s.step}, {"time", s.state.time}, {"file", name}};
 #ifdef DYNCONTACT_WITH_FE
       if (s.finite_body) snapshot["body"] = body_series.write(*s.finite_body, s.state);
 #endif
       snapshots.push_back(snapshot);
-      if (subsurface) field_states.keep(s.step, s.state.time, s.state.position.x(), s.state.position.y(), std::move(fields));
+      kept = &fields;
     }
-    if (subsurface && field_states.exceeds_peak(std::abs(s.contact.force.z())))
-      field_states.keep_peak(s.step, s.state.time, s.state.position.x(), s.state.position.y(),
-                             std::abs(s.contact.force.z()), step_fields(grid, s.contact_state));
+    field.observe(grid, s, kept);
   };
   const DynamicOutcome out = simulate_dynamic_with_accuracy(
       c, !quiet, every > 0 || subsurface ? std::function(write_snapshot) : nullptr, &grid);
@@ -177,24 +158,9 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   json files = {{"summary", "summary.json"}, {"timeseries", "timeseries.csv"}};
   if (!snapshots.empty()) files["snapshots"] = snapshots;
   std::optional<SubsurfaceSeries> series;  // the field of the snapshots and the peak load, the worst of them
-  if (subsurface && !r.interrupted && !field_states.empty()) {
-    Case fc = with_verdict_bodies(c);
-    if (c.dynamic && c.dynamic->fe_body) std::erase(fc.subsurface.bodies, std::string("body"));  // its stresses: body.pvd
+  if (subsurface && !r.interrupted) {
     output::SubsurfaceSnapshots images(dir);
-    const SubsurfaceSink write = c.subsurface.enabled ? subsurface_file_sink(images) : SubsurfaceSink();
-    const std::vector<SubsurfaceState> states = field_states.states();
-    std::optional<FatigueOverRun> fatigue;  // Dang Van on the base's points over the snapshots
-    if (c.fatigue.base) fatigue.emplace("base", *c.fatigue.base, grid, subsurface_series_depths(fc, grid, states), states);
-    series = subsurface_series(fc, grid, states, [&](const SubsurfaceState& st, const SubsurfaceRun& run) {
-      if (fatigue) fatigue->add(st, run);
-      return write ? write(st, run) : std::string();
-    });
-    if (fatigue) summary["fatigue"] = {{"base", fatigue->to_json()}};
-    summary["subsurface"] = subsurface_series_json(*series, grid.dimension, true);
-    for (json& state : summary["subsurface"]["states"])
-      if (state["step"] == field_states.peak_step()) state["peak_normal_force"] = true;
-    if (c.dynamic && c.dynamic->fe_body) summary["subsurface"]["body"] = {{"finite_element", true}, {"see", "body.pvd"}};
-    if (c.yields.base || c.yields.body) summary["yield"] = worst_yield_json(c, *series, grid.dimension, true);
+    series = field.add_entries(grid, c.subsurface.enabled ? subsurface_file_sink(images) : SubsurfaceSink(), summary);
     if (images.count() > 0) files["subsurface_series"] = images.collection();
   }
 #ifdef DYNCONTACT_WITH_FE
