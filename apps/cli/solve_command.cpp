@@ -204,9 +204,11 @@ int run_solve(const SolveArgs& args) {
     };
     if (s.contains("yield"))
       for (const auto& [body, y] : s["yield"].items())
-        std::printf("  yield %-5s      utilisation %s (%s); first yield at %s x the load%s\n", body.c_str(),
-                    number(y["utilisation"]).c_str(), y["criterion"].get<std::string>().c_str(),
-                    number(y["first_yield_load_factor"]).c_str(),
+        std::printf("  yield %-5s      utilisation %s (%s); %s%s\n", body.c_str(), number(y["utilisation"]).c_str(),
+                    y["criterion"].get<std::string>().c_str(),
+                    y["first_yield_load_factor"].is_number()
+                        ? ("first yield at " + number(y["first_yield_load_factor"]) + " x the load").c_str()
+                        : "no first-yield load factor",
                     y.contains("note") ? (" (" + y["note"].get<std::string>() + ")").c_str() : "");
     if (s.contains("shakedown")) {
       const nlohmann::json& sd = s["shakedown"];
