@@ -16,6 +16,7 @@
 #include "solve_case.hpp"
 #include "summary_entries.hpp"
 #include "summary_writer.hpp"
+#include "temperature_run.hpp"
 
 namespace dc::runs {
 namespace {
@@ -211,6 +212,9 @@ std::vector<SubsurfaceState> history_states(const Case& c, const StaticRun& run)
 
 StaticRun run_static(const Case& c, bool progress, const SubsurfaceSink& history_sink) {
   StaticRun run = run_static_with_accuracy(c, progress);
+  // The flash temperature of the final state (temperature_run.hpp): rolling cases only (build_case).
+  if (c.thermal.enabled() && run.converged && !run.interrupted && !run.fields.empty())
+    run.summary["temperature"] = add_flash_temperature(c, run.grid, run.fields.back());
   // The field inside the bodies from the final state's tractions (subsurface_run.hpp), also for
   // a yield strength (first_yield.hpp).
   const bool yields = c.yields.body || c.yields.base;
