@@ -60,6 +60,16 @@ json cylinder_case() {
   return c;
 }
 
+/// Steel on steel (both cases' materials): E* for Hertz's closed forms.
+double steel_e_star() {
+  const dc::Elastic steel = dc::Elastic::from_E_nu(2.1e11, 0.3);
+  return dc::MaterialPair{steel, steel}.E_star();
+}
+
+/// Jaeger's Peclet number of the contact's half-length a, and the full-slip flux peak mu p0 V xi.
+double peclet(double a) { return kV * a / (2.0 * kKappa); }
+double full_slip_flux_peak(double p0) { return kMu * p0 * kV * kXi; }
+
 // Equal surfaces and speeds share the heat equally (the two tables are the same), so each gets
 // q0/2 with q0 = mu p0 V xi. 48^2 over +-1.2 a (dx = a/20), Pe = V a / (2 kappa) = 133: the
 // maximum within 1/Pe + 1 % of Blok's 0.87301 (q0/2) a / (K sqrt(Pe)) (-0.3 % measured: the
@@ -68,9 +78,8 @@ json cylinder_case() {
 TEST_F(CliTemperature, FullSlipSphereMeetsBloksHertzianCircle) {
   const json s = solve(sphere_case());
   ASSERT_EQ(s.at("n_stick"), 0) << "not full slip";
-  const dc::Elastic steel = dc::Elastic::from_E_nu(2.1e11, 0.3);
-  const auto h = dc::hertz::sphere(0.01, 100.0, dc::MaterialPair{steel, steel}.E_star());
-  const double pe = kV * h.a / (2.0 * kKappa), q0 = kMu * h.p0 * kV * kXi;
+  const auto h = dc::hertz::sphere(0.01, 100.0, steel_e_star());
+  const double pe = peclet(h.a), q0 = full_slip_flux_peak(h.p0);
   const dc::thermal::BlokMaximum blok = dc::thermal::blok_line_maximum();
   const double expected = blok.coefficient * 0.5 * q0 * h.a / (kK * std::sqrt(pe));
   const json& t = s.at("temperature");
@@ -94,9 +103,8 @@ TEST_F(CliTemperature, FullSlipSphereMeetsBloksHertzianCircle) {
 TEST_F(CliTemperature, FullSlipCylinderMeetsBloksHertzianLineAtItsPeclet) {
   const json s = solve(cylinder_case());
   ASSERT_EQ(s.at("n_stick"), 0) << "not full slip";
-  const dc::Elastic steel = dc::Elastic::from_E_nu(2.1e11, 0.3);
-  const auto h = dc::hertz::cylinder2d(0.02, 1e5, dc::MaterialPair{steel, steel}.E_star());
-  const double pe = kV * h.a / (2.0 * kKappa), q0 = kMu * h.p0 * kV * kXi;
+  const auto h = dc::hertz::cylinder2d(0.02, 1e5, steel_e_star());
+  const double pe = peclet(h.a), q0 = full_slip_flux_peak(h.p0);
   const double dx = 2.4 * h.a / 100;
   double exact = 0.0;
   for (int i = 0; i < 100; ++i) {
