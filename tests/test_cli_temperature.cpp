@@ -137,6 +137,12 @@ TEST_F(CliTemperature, PartitionRulesShareTheHeat) {
   EXPECT_EQ(f.at("partition"), "fixed");
   EXPECT_NEAR(f.at("base").at("max_rise").get<double>(), 1.6 * half, 1e-9 * half);
   EXPECT_NEAR(f.at("body").at("max_rise").get<double>(), 0.4 * half, 1e-9 * half);
+  json stick = sphere_case();  // no creepage: full stick, no heat, no hottest place
+  stick["tangential"]["creepage"] = {0.0, 0.0};
+  const json z = solve(stick).at("temperature");
+  EXPECT_EQ(z.at("heat").get<double>(), 0.0);
+  EXPECT_EQ(z.at("max_rise").get<double>(), 0.0);
+  EXPECT_TRUE(z.at("at").is_null());
   equal["temperature"] = {{"partition", "pointwise"}};
   const json p = solve(equal).at("temperature");
   EXPECT_EQ(p.at("partition"), "pointwise");

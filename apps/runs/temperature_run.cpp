@@ -62,10 +62,12 @@ nlohmann::json add_flash_temperature(const Case& c, const Grid& grid, output::St
   fields.temperature_base = r.base;
   fields.temperature_body = r.body;
   const bool base_hotter = r.base_max >= r.body_max;
+  // Without heat (full stick, or no friction) no place is the hottest.
+  const auto where = [&](std::size_t e) { return r.total_heat > 0.0 ? place(grid, e) : nlohmann::json(); };
   j["max_rise"] = base_hotter ? r.base_max : r.body_max;
-  j["at"] = place(grid, base_hotter ? r.base_max_element : r.body_max_element);
-  j["base"] = {{"max_rise", r.base_max}, {"at", place(grid, r.base_max_element)}, {"mean_rise", r.base_mean}};
-  j["body"] = {{"max_rise", r.body_max}, {"at", place(grid, r.body_max_element)}, {"mean_rise", r.body_mean}};
+  j["at"] = where(base_hotter ? r.base_max_element : r.body_max_element);
+  j["base"] = {{"max_rise", r.base_max}, {"at", where(r.base_max_element)}, {"mean_rise", r.base_mean}};
+  j["body"] = {{"max_rise", r.body_max}, {"at", where(r.body_max_element)}, {"mean_rise", r.body_mean}};
   j["fraction_into_base"] = r.base_fraction;
   j["heat"] = r.total_heat;
   const double L = heated_half_length(grid, q);
