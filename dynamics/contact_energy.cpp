@@ -2,16 +2,6 @@
 
 namespace dc::dynamics {
 
-double frictional_work(const TangentialSolution& s, double area, double slip_per_step) {
-  double work = 0.0;
-  for (std::size_t e = 0; e < s.tx.size(); ++e) {
-    double power = s.tx[e] * (e < s.sx.size() ? s.sx[e] : 0.0);
-    if (e < s.ty.size() && e < s.sy.size()) power += s.ty[e] * s.sy[e];
-    work -= power;
-  }
-  return work * area * slip_per_step;
-}
-
 double elastic_energy(const std::vector<double>* pressure, const std::vector<double>& heights, double approach,
                       bool with_normal, const std::vector<double>& tx, const std::vector<double>& ty,
                       const LinearOperator* tangential_compliance, const LinearOperator* coupling, double area,

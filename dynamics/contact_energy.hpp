@@ -1,19 +1,12 @@
 #pragma once
-// The energy of a dynamic step's contact (docs/wear_energy.md "Dynamic runs"): the frictional
-// work dissipated over the step and the elastic energy the half-space (and an fe_body) stores
-// at its end. Used by ContactWrench::accept for the run's energy audit (dynamic_simulation.hpp).
+// The elastic energy the half-space (and an fe_body) stores at the end of a dynamic step
+// (docs/wear_energy.md "Dynamic runs"; the step's frictional work is nlp's frictional_work).
+// Used by ContactWrench::accept for the run's energy audit (dynamic_simulation.hpp).
 #include <vector>
 
 #include "linear_operator.hpp"
-#include "tangential_problem.hpp"
 
 namespace dc::dynamics {
-
-/// -sum_e tau_e . ds_e A: the work the traction on the body does against the slip of the step
-/// (2.4)-(2.5), >= 0 by the friction law (J; 2-D J/m). `slip_per_step`: ds per the solution's
-/// slip (1 for a transient step, whose sx, sy are the step's; V_x dt / dx for a steady-rolling
-/// solution, whose slip is per dx of travel).
-double frictional_work(const TangentialSolution& s, double area, double slip_per_step);
 
 /// elastic_energy's scratch vectors, kept by the caller (a dynamic step allocates nothing).
 struct EnergyScratch {

@@ -341,10 +341,10 @@ void ContactWrench::audit_energy() {
   state_.frictional_work = state_.elastic_energy = 0.0;
   if (!state_.in_contact) return;
   const double A = case_.grid.area();
-  // The steady model's slip is per dx of travel: the step travels V_x dt.
+  // The step's slip (3.8); the steady model's is per dx of travel, and the step travels V_x dt.
   if (tangential_)
     state_.frictional_work =
-        frictional_work(solution_, A, steady_step_ ? last_.velocity.x() * dt_ / case_.grid.dx : 1.0);
+        frictional_work(solution_, A) * (steady_step_ ? last_.velocity.x() * dt_ / case_.grid.dx : 1.0);
   // The quasi-static normal model holds the body's height: its normal force does no work on the
   // body, and the normal part of the stored energy (with the kappa coupling's share) is left out
   // of the audit with it.

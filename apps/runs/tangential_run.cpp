@@ -57,7 +57,8 @@ nlohmann::json energy_json(const Case& c, const TangentialSolution& sol, const o
   double work = 0.0;
   for (double w : f.dissipation) work += w;
   work *= c.grid.area();
-  nlohmann::json e = {{"dissipated", work}};
+  // A roll over a distance: every marching step's work (the fields are the last step's).
+  nlohmann::json e = {{"dissipated", std::isfinite(sol.marched_frictional_work) ? sol.marched_frictional_work : work}};
   if (sol.rolling && std::isfinite(sol.convective_elastic_work) && c.tangential) {
     const double V = c.tangential->rolling.velocity, rate = V / c.grid.dx;
     const auto& a = sol.amplitudes;
