@@ -23,6 +23,7 @@
 #include "subsurface_plots.hpp"
 #include "subsurface_writer.hpp"
 #include "summary_writer.hpp"
+#include "wear_writer.hpp"
 #include "table_ranks.hpp"
 #include "tangential_run.hpp"
 
@@ -157,6 +158,10 @@ int run_solve(const SolveArgs& args) {
     }
     output::write_fields(dir, solved.grid, run.fields.back(), "fields.csv", c.output.power);
     files["fields"] = "fields.csv";
+  }
+  if (!run.worn_base.empty() || !run.worn_body.empty()) {  // the worn depth of each body (wear_writer.hpp)
+    output::write_wear(dir, solved.grid, run.worn_base, run.worn_body);
+    files["wear"] = "wear.csv";
   }
   std::vector<output::SubsurfaceBody> bodies;  // the subsurface block's field of the final state
   if (run.subsurface && c.subsurface.enabled) {  // subsurface.vti (evenly spaced depths) and the planes through the worst points
