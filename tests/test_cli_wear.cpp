@@ -170,7 +170,11 @@ TEST_F(CliWear, GrossSlipWearsTheWholeContact) {
                      {"history", {{{"shift", {delta, 0.0}}}, {{"shift", {-delta, 0.0}}}, {{"shift", {delta, 0.0}}}}}};
   c["wear"] = {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"bodies", {"base"}}, {"cycle_from_step", 1}};
   const json s = solve(c);
-  for (const json& step : s.at("steps")) EXPECT_EQ(step.at("n_stick"), 0);
+  ASSERT_EQ(s.at("steps").size(), 2u);  // the cycle's steps, named by their step of the history
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(s.at("steps")[k].at("n_stick"), 0);
+    EXPECT_EQ(s.at("steps")[k].at("history_step"), k + 1);
+  }
   const std::vector<WornPoint> pts = worn_base();
   for (const WornPoint& p : pts)
     if (p.r < 0.95 * kA) {
@@ -183,6 +187,34 @@ TEST_F(CliWear, GrossSlipWearsTheWholeContact) {
     });
     EXPECT_NEAR(computed / closed, 1.0, 0.01) << "r/a = " << r_over_a;
   }
+}
+
+TEST_F(CliWear, ATorsionCycleWearsAnAxisymmetricRingAndKeepsTheBookkeeping) {
+  // Moments +-0.5 of Lubkin's full-slip moment 3 pi mu P a / 16 (Johnson 7.4): the slip ring's
+  // wear is axisymmetric (on this symmetric grid: the map's transpose, to the solver's tolerance),
+  // the stick core unworn, and Archard's volume k/(mu H) x the dissipated work (32^2, 1.1 a).
+  const double M = 0.5 * 3.0 * M_PI * kMu * kP * kA / 16.0;
+  json c = sphere(32, 1.1);
+  c["tangential"] = {{"regime", "torsion"},
+                     {"history", {{{"moment", -M}}, {{"moment", M}}, {{"moment", -M}}}}};
+  c["wear"] = {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"bodies", {"base"}}};
+  const json s = solve(c);
+  const double work = s.at("energy").at("dissipated_total").get<double>();
+  EXPECT_NEAR(s.at("wear").at("base").at("volume").get<double>() / (kK / (kMu * kH) * work), 1.0, 1e-9);
+  for (const json& step : s.at("steps")) EXPECT_GT(step.at("n_stick").get<int>(), 0);
+  const std::vector<WornPoint> pts = worn_base();
+  ASSERT_EQ(pts.size(), 32u * 32u);
+  double deepest = 0.0, asymmetry = 0.0, core = 0.0;
+  for (int j = 0; j < 32; ++j)
+    for (int i = 0; i < 32; ++i) {
+      const double d = pts[i + 32 * j].depth;
+      deepest = std::max(deepest, d);
+      asymmetry = std::max(asymmetry, std::abs(d - pts[j + 32 * i].depth));
+      if (pts[i + 32 * j].r < 0.2 * kA) core = std::max(core, d);
+    }
+  EXPECT_GT(deepest, 0.0);
+  EXPECT_LT(asymmetry, 1e-9 * deepest);
+  EXPECT_LT(core, 1e-6 * deepest);
 }
 
 TEST_F(CliWear, CycleJumpingConvergesAndKeepsTheLoad) {

@@ -222,6 +222,16 @@ int run_solve(const SolveArgs& args) {
                   number(sd["shakedown_p0_over_k"]).c_str(), number(sd["elastic_limit_load_factor"]).c_str(),
                   number(sd["p0_over_k"]).c_str(), number(sd["traction_coefficient"]).c_str());
     }
+    if (s.contains("wear")) {  // the worn profile (wear_run.hpp): cycles, updates, each body's scar
+      const nlohmann::json& w = s["wear"];
+      std::printf("  wear (%s)    %s cycles, %s profile updates", w["law"].get<std::string>().c_str(),
+                  number(w["cycles"]).c_str(), number(w["updates"]).c_str());
+      for (const char* body : {"base", "body"})
+        if (w.contains(body))
+          std::printf("; %s max depth %s m, volume %s m^3", body, number(w[body]["max_depth"]).c_str(),
+                      number(w[body]["volume"]).c_str());
+      std::printf("\n");
+    }
     if (r.backend == "none") std::printf("note: %s\n", r.message.c_str());
     std::printf("wrote %s\n", summary_path.c_str());
     std::fflush(stdout);

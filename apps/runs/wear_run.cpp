@@ -132,6 +132,9 @@ StaticRun run_wear(const Case& c, bool progress) {
   TangentialRun run = tangential_run_of(c, std::move(solved), std::move(normals));
   StaticRun out;
   out.summary = std::move(run.summary);
+  // The steps reported are the cycle's: each names its step of tangential.history.
+  if (out.summary.contains("steps"))
+    for (std::size_t k = 0; k < out.summary["steps"].size(); ++k) out.summary["steps"][k]["history_step"] = first + k;
   out.fields = std::move(run.fields);
   out.normal = run.normal.back();
   out.report = run.report();
