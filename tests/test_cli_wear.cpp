@@ -113,6 +113,8 @@ TEST_F(CliWear, ArchardsVolumeIsKOverMuHTimesTheDissipatedEnergy) {
     EXPECT_NEAR(s.at("wear").at(body).at("volume").get<double>() / (kK / (kMu * kH) * work), 1.0, 1e-9) << body;
   EXPECT_EQ(s.at("wear").at("cycles"), 1);
   EXPECT_EQ(s.at("wear").at("updates"), 1);
+  EXPECT_EQ(s.at("files").at("wear"), "wear.csv");
+  EXPECT_EQ(slurp(dir_ / "out" / "wear.csv").substr(0, 14), "x,y,base,body\n");
   // The energy law with alpha = k / (mu H) wears the same.
   c["wear"] = {{"law", "energy"}, {"coefficient", kK / (kMu * kH)}, {"bodies", {"base"}}};
   const json e = solve(c);
@@ -249,6 +251,29 @@ TEST_F(CliWear, CycleJumpingConvergesAndKeepsTheLoad) {
   }
   EXPECT_LT(std::abs(volume[2] - volume[1]), std::abs(volume[1] - volume[0]));
   EXPECT_NEAR(volume[2] / volume[1], 1.0, 0.01);
+}
+
+TEST_F(CliWear, UpdateCyclesBoundsTheJumpsAndTheWornVolumeAddsUp) {
+  // 10 cycles updated every 3 (jumps 3, 3, 3, 1), and without an update block every cycle: the
+  // worn volume is the sum of each solved cycle's volume times its jump, to round-off (32^2).
+  json c = sphere(32, 1.1);
+  c["tangential"] = force_cycle(0.5 * kMu * kP);
+  for (const bool every_three : {true, false}) {
+    c["wear"] = {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"bodies", {"body"}}, {"cycles", every_three ? 10 : 3}};
+    if (every_three) c["wear"]["update"] = {{"cycles", 3}};
+    const json s = solve(c);
+    const json& w = s.at("wear");
+    const std::vector<long long> jumps = every_three ? std::vector<long long>{3, 3, 3, 1} : std::vector<long long>{1, 1, 1};
+    ASSERT_EQ(w.at("history").size(), jumps.size());
+    double sum = 0.0;
+    for (std::size_t k = 0; k < jumps.size(); ++k) {
+      EXPECT_EQ(w.at("history")[k].at("jump").get<long long>(), jumps[k]);
+      sum += jumps[k] * w.at("history")[k].at("cycle_volume").get<double>();
+    }
+    EXPECT_EQ(w.at("updates").get<std::size_t>(), jumps.size());
+    EXPECT_NEAR(w.at("body").at("volume").get<double>() / sum, 1.0, 1e-12);
+    EXPECT_FALSE(w.contains("base"));
+  }
 }
 
 TEST_F(CliWear, GrossSlipRunsInTheContactWidensAndThePeakPressureFalls) {
