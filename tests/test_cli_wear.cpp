@@ -309,6 +309,8 @@ TEST_F(CliWear, BadWearBlocksAreInputErrorsNamingTheKey) {
       {{{"wear", {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"cycles", 0}}}}, "wear.cycles"},
       {{{"wear", {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"bodies", {"rail"}}}}}, "wear.bodies"},
       {{{"wear", {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"update", {{"every", 3}}}}}}, "wear.update.every"},
+      {{{"wear", {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"update", 3}}}}, "wear.update"},
+      {{{"wear", {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"update", json::object()}}}}, "wear.update"},
       {{{"wear", {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"update", {{"max_depth", 0.0}}}}}},
        "wear.update.max_depth"},
       {{{"wear", {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"cycle_from_step", 3}}}}, "wear.cycle_from_step"},

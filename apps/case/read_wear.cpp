@@ -2,7 +2,6 @@
 // profile is updated, and (project extension) the step the repeated cycle starts from. It
 // applies to a shift or torsion history (the grid does not move: both worn depths are maps on
 // it); anywhere else it is an error naming "wear".
-#include <limits>
 #include <string>
 
 #include "case_readers.hpp"
@@ -59,8 +58,7 @@ WearSpec read_wear(const json& j, const Case& c) {
   }
   if (w.has("cycles")) s.cycles = positive_count(w, "cycles");
   if (w.has("update")) {
-    JsonBlock u(w.at("update"), w.key("update"));
-    if (!w.at("update").is_object()) throw InputError(w.key("update"), "expected {\"max_depth\": m} or {\"cycles\": n}");
+    JsonBlock u(w.at("update"), w.key("update"));  // an object (else an error naming wear.update)
     u.allow({"max_depth", "cycles"});
     if (!u.has("max_depth") && !u.has("cycles"))
       throw InputError(w.key("update"), "expected {\"max_depth\": m} or {\"cycles\": n}");
