@@ -131,6 +131,7 @@ Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
   state_ = ContactState{};
   off_axis_ = !travel_along_x(V);
   const bool steady_step = steady_ && !off_axis_;
+  steady_step_ = steady_step;
   if (tangential_) {
     auto solve = [&](const SolverOptions& solver) {
       if (steady_step) {
@@ -336,8 +337,29 @@ double ContactWrench::contact_function() const {
   return centre_height() - last_.position.z() - lowest;
 }
 
+void ContactWrench::audit_energy() {
+  state_.frictional_work = state_.elastic_energy = 0.0;
+  if (!state_.in_contact) return;
+  const double A = case_.grid.area();
+  // The step's slip (3.8); the steady model's is per dx of travel, and the step travels V_x dt.
+  if (tangential_)
+    state_.frictional_work =
+        frictional_work(solution_, A) * (steady_step_ ? last_.velocity.x() * dt_ / case_.grid.dx : 1.0);
+  // The quasi-static normal model holds the body's height: its normal force does no work on the
+  // body, and the normal part of the stored energy (with the kappa coupling's share) is left out
+  // of the audit with it.
+  const bool with_normal = spec_.normal_model == NormalModel::dynamic;
+  const std::vector<double>& heights = finite_ ? finite_->heights() : gap_->heights();
+  static const std::vector<double> none;
+  state_.elastic_energy = elastic_energy(
+      state_.pressure, heights, state_.approach, with_normal, tangential_ ? solution_.tx : none,
+      tangential_ ? solution_.ty : none, tangential_ ? &tangential_->tangential_compliance() : nullptr,
+      tangential_ && with_normal ? tangential_->tangential_from_normal() : nullptr, A, energy_scratch_);
+}
+
 void ContactWrench::accept(const StepKinematics& k, double vertical_load) {
   evaluate_at(k, vertical_load);
+  audit_energy();
   if (tangential_) tangential_->save_memory(committed_);
   if (finite_) {  // the body's deformation at the accepted step (output, max displacement)
     static const std::vector<double> none;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "body_gap.hpp"
+#include "contact_energy.hpp"
 #include "dynamic_spec.hpp"
 #include "contact_sensitivity.hpp"
 #include "finite_body.hpp"
@@ -39,6 +40,11 @@ struct ContactState {
   bool fallback_used = false;    ///< the requested backend (or auto's first) failed and another took over
   const TangentialSolution* fields = nullptr;  ///< the last solution (null without friction or contact)
   const std::vector<double>* pressure = nullptr;  ///< the last pressure field (null without contact)
+  /// Of an accepted step (ContactWrench::accept; 0 before): the frictional work dissipated over
+  /// the step, -sum tau . ds A with ds the step's slip (2.4)-(2.5) (J; 2-D J/m), and the elastic
+  /// energy stored at its end (contact_energy.hpp).
+  double frictional_work = 0.0;
+  double elastic_energy = 0.0;
 };
 
 class ContactWrench {
@@ -89,6 +95,8 @@ class ContactWrench {
 
  private:
   NormalSpec normal_load(const StepKinematics& k, double vertical_load) const;
+  /// The accepted step's frictional work and stored elastic energy into state_.
+  void audit_energy();
   void no_contact();
   /// The undeformed gap at the body's orientation (the problems' heights when it changes).
   void orient(const StepKinematics& k);
@@ -116,6 +124,8 @@ class ContactWrench {
   double lever_ = 0.0;  // height of the centre of mass over the contact plane at the last evaluation
   bool steady_ = false;            // the steady model chosen (or auto resolved to it)
   bool off_axis_ = false;          // the last evaluation's travel was not along +x
+  bool steady_step_ = false;       // the last evaluation was solved by the steady model
+  EnergyScratch energy_scratch_;   // audit_energy's vectors
   bool model_resolved_ = false;
   int steps_in_contact_ = 0;       // accepted steps in contact
   bool accepted_in_contact_ = false;  // the last accepted step was in contact (its answer starts the next)

@@ -141,6 +141,8 @@ bool DynamicSimulation::commit_step(const RigidBodyState& before, const RigidBod
   sums.contact_work +=
       0.5 * ((con_before.force + con.force).dot(dR) + (con_before.moment + con.moment).dot(dTheta));
   sums.contact_before = con;
+  sums.dissipated += cs.frictional_work;
+  sums.duration += h;
   return true;
 }
 
@@ -165,6 +167,21 @@ void DynamicSimulation::record_step(Run& run, const RigidBodyState& state, const
   sample.kinetic_energy = kinetic_energy(stepper_.body(), state);
   sample.external_work = run.external_work;
   sample.contact_work = run.contact_work;
+  run.dissipated += sums.dissipated;
+  run.largest_elastic = std::max(run.largest_elastic, cs.elastic_energy);
+  EnergyAudit& e = sample.energy;
+  e.work_of_loads = run.external_work;
+  e.kinetic_change = sample.kinetic_energy - run.initial_kinetic;
+  e.elastic = cs.elastic_energy;
+  e.dissipated = run.dissipated;
+  e.numerical_damping = e.work_of_loads - e.kinetic_change - e.elastic - e.dissipated;
+  sample.frictional_power = sums.duration > 0.0 ? sums.dissipated / sums.duration : 0.0;
+  if (sample.frictional_power > result.peak_frictional_power) {
+    result.peak_frictional_power = sample.frictional_power;
+    result.peak_power_time = state.time;
+  }
+  result.last_frictional_power = sample.frictional_power;
+  result.energy = e;
   sample.step = result.steps;
   sample.finite_body = contact_.finite_body();
   run.limits.add(sample);
@@ -187,6 +204,7 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
   result.adaptive = spec_.adaptive;
   const RigidBody& body = stepper_.body();
   const double ke0 = kinetic_energy(body, run.state);
+  run.initial_kinetic = ke0;
   if (spec_.adaptive) run_adaptive(run);
   else run_fixed(run);
   const RigidBodyState& state = run.state;
@@ -201,6 +219,9 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
   result.energy_imbalance =
       std::abs(ke - ke0 - run.external_work - run.contact_work) /
       std::max({ke0, ke, std::abs(run.external_work), std::abs(run.contact_work), 1e-300});
+  result.energy_relative_residual =
+      result.energy.numerical_damping / std::max({ke0, ke, std::abs(result.energy.work_of_loads), run.largest_elastic,
+                                                  result.energy.dissipated, 1e-300});
   result.limits = before_limits_;
   for (ResultLimit& l : run.limits.limits(result)) result.limits.push_back(std::move(l));
   return std::move(run.result);

@@ -16,6 +16,20 @@
 
 namespace dc::dynamics {
 
+/// The energy audit of a run from t = 0 (docs/wear_energy.md "Dynamic runs"): the work of the
+/// applied loads goes into the kinetic energy (translational and rotational), the contact's
+/// stored elastic energy, the frictional work dissipated in the contact, and the scheme's own
+/// numerical damping, the residual (bdf1 damps at O(dt), bdf2 at O(dt^2)). The contact starts
+/// unloaded (nothing stored at t = 0).
+struct EnergyAudit {
+  double work_of_loads = 0.0;      ///< of the applied force and moment (trapezoidal over each step; J, 2-D J/m)
+  double kinetic_change = 0.0;     ///< KE - KE(0)
+  double elastic = 0.0;            ///< the contact's stored elastic energy now
+  double dissipated = 0.0;         ///< sum of the steps' frictional work -sum tau . ds A
+  /// work_of_loads - kinetic_change - elastic - dissipated: what the scheme took (> 0) or gave.
+  double numerical_damping = 0.0;
+};
+
 /// One accepted step.
 struct DynamicSample {
   RigidBodyState state;       ///< at the end of the step
@@ -25,6 +39,8 @@ struct DynamicSample {
   double kinetic_energy = 0.0;
   double external_work = 0.0;  ///< of the applied loads since t = 0 (J)
   double contact_work = 0.0;   ///< of the contact wrench since t = 0 (J)
+  EnergyAudit energy;          ///< since t = 0, at the end of this step
+  double frictional_power = 0.0;  ///< this step's frictional work over its length (W; 2-D W/m)
   int newton_iterations = 0;   ///< of this step
   int chord_steps = 0;         ///< of this step: Newton updates with the last sensitivity kept
   int contact_solves = 0;      ///< of this step (retries included)
@@ -65,6 +81,11 @@ struct DynamicResult {
   double worst_certificate = 0.0, last_certificate = 0.0;
   double momentum_imbalance = 0.0;  ///< |m dV - sum dt F| / max(sum dt |F|, m |V|) over the run (bdf1: round-off)
   double energy_imbalance = 0.0;    ///< |KE_end - KE_0 - W_external - W_contact| / max(KE, |W|)
+  EnergyAudit energy;               ///< at the end of the run
+  /// numerical_damping / max(KE_0, KE_end, |work_of_loads|, the largest elastic energy, dissipated)
+  double energy_relative_residual = 0.0;
+  double peak_frictional_power = 0.0, peak_power_time = 0.0;  ///< the largest step's power (W) and its end time (s)
+  double last_frictional_power = 0.0;                         ///< the last step's (W)
   RigidBodyState initial, final;
   /// What is known wrong or outside the model (dynamic_limits.hpp): the warnings found before the
   /// run (its errors are InputErrors of the constructor), then the limits of the steps run.
@@ -99,6 +120,7 @@ class DynamicSimulation {
   struct StepSums {
     Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
     double impulse_size = 0.0, external_work = 0.0, contact_work = 0.0;
+    double dissipated = 0.0, duration = 0.0;  ///< frictional work and length of the step's sub-steps
     Wrench contact_before;  ///< the contact wrench at the step's start, then at its end
   };
 

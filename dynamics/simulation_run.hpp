@@ -18,6 +18,7 @@ struct DynamicSimulation::Run {
   RigidBodyState state;
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
   double impulse_size = 0.0, external_work = 0.0, contact_work = 0.0;
+  double initial_kinetic = 0.0, dissipated = 0.0, largest_elastic = 0.0;
   Wrench contact_at_step_start;  // the last accepted step's contact wrench (none before the first)
 };
 

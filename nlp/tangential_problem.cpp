@@ -187,6 +187,16 @@ void TangentialProblem::steady_rolling(const RollingLoad& load, const SolverOpti
   out = std::move(sol);
 }
 
+double frictional_work(const TangentialSolution& s, double area) {
+  double work = 0.0;
+  for (std::size_t e = 0; e < s.tx.size(); ++e) {
+    double power = s.tx[e] * (e < s.sx.size() ? s.sx[e] : 0.0);
+    if (e < s.ty.size() && e < s.sy.size()) power += s.ty[e] * s.sy[e];
+    work -= power;
+  }
+  return work * area;
+}
+
 TangentialSolution TangentialProblem::roll(const RollingLoad& load, double distance, const SolverOptions& solver,
                                            const ProgressCallback& progress) {
   Impl& s = *impl_;
@@ -212,6 +222,7 @@ TangentialSolution TangentialProblem::roll(const RollingLoad& load, double dista
   sol.marching_steps = march.steps;
   sol.rolling = true;
   sol.distance = march.steps * s.grid.dx;
+  sol.marched_frictional_work = march.frictional_work;
   // The path matters in a transient: one uncertified step leaves the result uncertified.
   if (march.first_unconverged > 0 && sol.report.status == SolveStatus::converged) {
     sol.report.status = SolveStatus::not_converged;

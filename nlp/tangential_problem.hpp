@@ -69,7 +69,15 @@ struct TangentialSolution {
   /// (O(dx): zero in the continuum, where the operator's convective form is antisymmetric).
   /// NaN for other solutions.
   double convective_elastic_work = std::numeric_limits<double>::quiet_NaN();
+  /// roll() over a distance: the frictional work of all its marching steps, the sum of each
+  /// one's frictional_work(step, area) (J; 2-D J/m; the fields above are the last step's). NaN
+  /// for other solutions.
+  double marched_frictional_work = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// The frictional work of a solution's slip, -sum_e tau_e . ds_e A (J; 2-D J/m): >= 0 by the
+/// friction law (2.4)-(2.5), zero where the contact sticks (rolling: per dx of travel).
+double frictional_work(const TangentialSolution& s, double area);
 
 /// Back to a default solution, the storage of its fields and reports kept (solver_report.hpp).
 void reset_keeping_storage(TangentialSolution& solution);

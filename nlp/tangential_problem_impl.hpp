@@ -228,6 +228,7 @@ struct TangentialProblem::Impl {
     int steps = 0;           ///< marching steps done
     bool steady = false;     ///< stopped because a step changed tau by less than steady_tol
     int first_unconverged = 0;  ///< the first step that was not certified (1-based), 0: none
+    double frictional_work = 0.0;  ///< of every step done, -sum tau . ds A each (J)
   };
   /// Rolling in +x from the current state: up to `max_steps` marching steps.
   March march(const RollingLoad& load, int max_steps, double steady_tol, const SolverOptions& solver,

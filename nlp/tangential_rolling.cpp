@@ -167,6 +167,7 @@ TangentialProblem::Impl::March TangentialProblem::Impl::march(const RollingLoad&
     solve_step(load.normal, load.modes, increment, {1.0, 0.0}, step_solver, {}, m.sol);
     if (m.sol.report.status != SolveStatus::converged && m.first_unconverged == 0) m.first_unconverged = m.steps;
     if (m.sol.report.status == SolveStatus::failed) break;
+    m.frictional_work += frictional_work(m.sol, grid.area());
     for (int k = 0; k < 3; ++k) amplitude_prev[k] += m.sol.amplitudes[k];
     const double change = relative_change(tau_prev, input);
     if (progress) progress({m.steps, 0.0, change, steady_tol});

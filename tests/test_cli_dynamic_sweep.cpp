@@ -79,6 +79,10 @@ TEST_F(CliDynamicSweep, RunsAreTheCaseAloneAndHertzPeaksScaleAsVToTheSixFifths) 
     const std::string alone = case_file("alone.json", speeds[k]);
     ASSERT_EQ(run_prefixed("DYNCONTACT_THREADS=1", "solve " + alone + " --out alone -q").code, 0);
     EXPECT_EQ(series[k], slurp(dir_ / "alone" / "timeseries.csv"));
+    // Its energy audit, the run alone's (frictionless: nothing dissipated).
+    const json alone_summary = json::parse(slurp(dir_ / "alone" / "summary.json"));
+    EXPECT_EQ(run["energy"], alone_summary["energy"]);
+    EXPECT_EQ(run["energy"]["dissipated"], 0.0);
   }
   // Hertz impact: F_max proportional to v^(6/5) (the same ball and materials); 16^2 elements
   // and 1 us steps resolve the peak to about 1 %.

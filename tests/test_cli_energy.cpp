@@ -2,7 +2,8 @@
 // rolling, -(F_x xi + F_y eta + M_z phi) V = frictional + scheme power to round-off, the upwind
 // scheme's share vanishing at first order with the element size, so that the dissipation tends
 // to the creep forces' power, Carter's |F| xi V (Johnson 8.4); the power density column of
-// fields.csv; a quasi-static history's dissipation per step and in total.
+// fields.csv; a quasi-static history's dissipation per step and in total; a dynamic run's
+// energy audit in energy.csv and summary.json (docs/wear_energy.md "Dynamic runs").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -119,6 +120,74 @@ TEST_F(CliEnergy, AShiftHistoryDissipatesOnlyWhereItSlipsAndAddsItUp) {
   std::istringstream plain(slurp(dir_ / "out" / "fields.csv"));
   std::getline(plain, line);
   EXPECT_EQ(line, "x,y,p,tx,ty,sx,sy,state");
+}
+
+TEST_F(CliEnergy, ARollOverADistanceDissipatesTheCreepForcesWorkOverIt) {
+  // cattaneo-carter-2d (100 strips, F = -0.5 mu P): after 2a of rolling its last roll (1a, 42
+  // marching steps) is near Carter's steady state, where the creep force's work over the
+  // distance, |F| xi D, is dissipated less the upwind scheme's share (4.1 % on 100 strips, the
+  // Carter test above): the sum over every marching step, 42 times one step's.
+  json c = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "cattaneo-carter-2d.json"));
+  c["accuracy"] = {{"estimate", false}};
+  c["output"] = {{"plots", false}};
+  const json s = solve(c);
+  const json& last = s.at("steps").back();
+  ASSERT_EQ(last.at("marching_steps").get<int>(), 42);
+  const double creep_work = std::abs(last.at("tangential_force")[0].get<double>() * last.at("creepage")[0].get<double>()) *
+                            last.at("distance").get<double>();
+  const double w = last.at("energy").at("dissipated").get<double>();
+  EXPECT_GT(w, 0.93 * creep_work);
+  EXPECT_LT(w, creep_work);
+}
+
+/// energy.csv's columns, parsed (a header line, then numbers).
+std::vector<std::vector<double>> energy_rows(const std::filesystem::path& file) {
+  std::istringstream in(slurp(file));
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "t,kinetic,elastic,work,dissipated,numerical_damping");
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
+    EXPECT_EQ(row.size(), 6u) << line;
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST_F(CliEnergy, ADynamicRunWritesItsAuditStepByStepAndSumsItUp) {
+  // The bowling ball (16^2, quasi-static normal model, mu = 0.2) sliding at 3 m/s for 50 steps:
+  // friction dissipates in every step ((2.4)-(2.5): W_k >= 0), and energy.csv's rows are the
+  // audit: work = kinetic - kinetic(0) + elastic + dissipated + numerical damping (to the
+  // file's 10 digits); its last row is summary.json's audit, and its first the kinetic energy
+  // m v0^2 / 2 at t = 0.
+  json c = dc::test::example_json("bowling-ball");
+  c["time"]["t_end"] = 0.1;
+  c["output"] = {{"plots", false}};
+  const json s = solve(c);
+  EXPECT_EQ(s.at("files").at("energy"), "energy.csv");
+  const json& e = s.at("energy");
+  const json& a = e.at("audit");
+  const auto rows = energy_rows(dir_ / "out" / "energy.csv");
+  ASSERT_EQ(rows.size(), s.at("steps").get<std::size_t>() + 1);
+  const double ke0 = 0.5 * 7.0 * 3.0 * 3.0;
+  EXPECT_DOUBLE_EQ(rows.front()[0], 0.0);
+  EXPECT_NEAR(rows.front()[1], ke0, 1e-9 * ke0);
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    const auto& r = rows[k];
+    EXPECT_GE(r[4], rows[k - 1][4]) << "dissipation is never negative (step " << k << ")";
+    EXPECT_NEAR(r[3], r[1] - ke0 + r[2] + r[4] + r[5], 1e-8 * ke0) << "step " << k;
+  }
+  const auto& last = rows.back();
+  EXPECT_NEAR(last[4], e.at("dissipated").get<double>(), 1e-9 * last[4]);
+  EXPECT_NEAR(last[4], a.at("dissipated").get<double>(), 1e-9 * last[4]);
+  EXPECT_NEAR(last[1] - ke0, a.at("kinetic_change").get<double>(), 1e-8 * ke0);
+  EXPECT_NEAR(last[5], a.at("numerical_damping").get<double>(), 1e-8 * ke0);
+  EXPECT_GT(e.at("frictional_power").get<double>(), 0.0);
+  EXPECT_GE(e.at("frictional_power").get<double>(), e.at("frictional_power_last").get<double>());
+  EXPECT_LT(std::abs(a.at("relative_residual").get<double>()), 0.01);
 }
 
 }  // namespace

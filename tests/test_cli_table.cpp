@@ -205,7 +205,10 @@ TEST_F(CliTable, BadRangesAreInputErrorsNamingTheOption) {
   for (const auto& [key, patch] : std::vector<std::pair<std::string, json>>{
            {"subsurface", {{"subsurface", {{"depths", "0:1e-3:4"}}}}},
            {"materials.base.yield", {{"materials", {{"base", {{"yield", {{"von_mises", 8e8}}}}}}}}},
-           {"accuracy.target", {{"accuracy", {{"target", 1e-3}}}}}}) {
+           {"accuracy.target", {{"accuracy", {{"target", 1e-3}}}}},
+           {"materials.base.thermal",
+            {{"materials", {{"base", {{"thermal", {{"conductivity", 50.0}, {"diffusivity", 1.4e-5}}}}},
+                            {"body", {{"thermal", {{"conductivity", 50.0}, {"diffusivity", 1.4e-5}}}}}}}}}}) {
     json doc = dc::test::example_json("rolling-sphere");
     doc["grid"] = {{"nx", 16}, {"ny", 16}, {"extent", 1.1}};
     doc.merge_patch(patch);

@@ -150,7 +150,7 @@ TEST(TransientRolling, MemoryIsKeptBetweenRolls) {
   const double half = 0.5 * cyl.a;  // 20.8 dx: 21 steps; 1a: 41.7 dx -> 42 steps
   TangentialProblem split = cyl.problem(), whole = cyl.problem(), from_rest = cyl.problem();
   split.roll(cyl.load(), 0.0, test::native_tangential_solver());
-  split.roll(cyl.load(), half, test::native_tangential_solver());
+  const TangentialSolution first = split.roll(cyl.load(), half, test::native_tangential_solver());
   const TangentialSolution s2 = split.roll(cyl.load(), half, test::native_tangential_solver());
   whole.roll(cyl.load(), 0.0, test::native_tangential_solver());
   const TangentialSolution s1 = whole.roll(cyl.load(), 2 * half, test::native_tangential_solver());
@@ -159,6 +159,12 @@ TEST(TransientRolling, MemoryIsKeptBetweenRolls) {
   // Two rolls of 21 steps are the 42 steps of one (the same programs in the same order).
   EXPECT_LT(max_abs_diff(s1.tx, s2.tx), 1e-9 * cyl.mu_p0);
   EXPECT_NEAR(s1.amplitudes[0], s2.amplitudes[0], 1e-9 * std::abs(s1.amplitudes[0]));
+  // The frictional work of a roll is that of all its marching steps: the two halves' add up to
+  // the whole's, and a half's is far above its last step's (each step slips at the trailing edge).
+  const double half_work = first.marched_frictional_work, whole_work = s1.marched_frictional_work;
+  EXPECT_GT(half_work, 0.0);
+  EXPECT_NEAR(half_work + s2.marched_frictional_work, whole_work, 1e-9 * whole_work);
+  EXPECT_GT(s2.marched_frictional_work, 10.0 * frictional_work(s2, cyl.g.area()));
   // Starting from rest instead of Cattaneo's state changes the answer: the state is the memory.
   const TangentialSolution r = from_rest.roll(cyl.load(), 2 * half, test::native_tangential_solver());
   EXPECT_GT(max_abs_diff(r.tx, s1.tx), 0.05 * cyl.mu_p0);

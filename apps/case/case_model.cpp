@@ -62,6 +62,7 @@ const std::vector<BlockUse>& block_uses() {
       {"subsurface", {P::normal, P::tangential, P::dynamic}},
       {"shakedown", {P::normal, P::tangential}},
       {"wear", {P::tangential}},
+      {"temperature", {P::tangential}},
   };
   return uses;
 }
@@ -94,6 +95,23 @@ void check_dense_operator_size(const Case& c) {
   throw InputError("solver.operator", why.str());
 }
 
+/// The flash temperature (apps/runs/temperature_run.hpp) needs the contact's speed over both
+/// surfaces: rolling (its velocity), and both surfaces' thermal constants.
+void check_thermal(const Case& c, bool has_block) {
+  const ThermalSpec& t = c.thermal;
+  if (!t.body && !t.base && !has_block) return;
+  const char* key = t.base ? "materials.base.thermal" : t.body ? "materials.body.thermal" : "temperature";
+  const bool rolling = c.problem == ProblemKind::tangential && c.tangential &&
+                       c.tangential->regime == TangentialRegime::rolling;
+  if (!rolling)
+    throw InputError(key, "the flash temperature is computed for rolling (problem tangential, regime rolling: the "
+                          "contact's speed over the surfaces), not for this case");
+  if (!t.base) throw InputError("materials.base.thermal", "missing: the flash temperature needs both surfaces' "
+                                                          "conductivity and diffusivity");
+  if (!t.body) throw InputError("materials.body.thermal", "missing: the flash temperature needs both surfaces' "
+                                                          "conductivity and diffusivity");
+}
+
 }  // namespace
 
 bool Case::has_block(const std::string& block) const {
@@ -105,7 +123,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   top.allow({"schema", "name", "description", "problem", "dimension", "materials", "profile", "grid", "normal",
              "friction", "tangential", "fe_body", "body", "loads", "time", "traction_model", "dimensionless",
              "solver", "sweep", "output", "normal_model", "contact_model", "accuracy",
-             "subsurface", "shakedown", "wear"});
+             "subsurface", "shakedown", "wear", "temperature"});
   Case c;
   c.source = document;
   for (auto it = document.begin(); it != document.end(); ++it) c.blocks.push_back(it.key());
@@ -160,6 +178,12 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
       throw InputError(c.yields.base ? "materials.base.yield" : "materials.body.yield",
                        std::string("first yield is computed for problems normal, tangential and dynamic, not '") +
                            to_string(c.problem) + "'");
+  }
+  if (top.has("materials") || top.has("temperature")) {
+    static const nlohmann::json none = nlohmann::json::object();
+    c.thermal = read_thermal(top.has("materials") ? top.at("materials") : none,
+                             top.has("temperature") ? &top.at("temperature") : nullptr);
+    check_thermal(c, top.has("temperature"));
   }
   c.shakedown = top.boolean_or("shakedown", false);
   if (c.shakedown && !c.yields.base)

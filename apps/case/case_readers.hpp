@@ -33,6 +33,10 @@ BodyYields read_yields(const nlohmann::json& materials);
 /// materials.body.fatigue and materials.base.fatigue (Dang Van's alpha and beta).
 BodyFatigue read_fatigue_limits(const nlohmann::json& materials);
 
+/// materials.body.thermal, materials.base.thermal and the "temperature" block (may be null):
+/// the surfaces' thermal constants and the heat's partition.
+ThermalSpec read_thermal(const nlohmann::json& materials, const nlohmann::json* temperature);
+
 /// "subsurface": the depths, bodies and planes of the field inside the bodies.
 SubsurfaceSpec read_subsurface(const nlohmann::json& j);
 

@@ -15,7 +15,7 @@ namespace {
 
 Elastic read_elastic(const json& j, const std::string& path) {
   JsonBlock o(j, path);
-  o.allow({"E", "G", "nu", "rigid", "yield", "fatigue"});
+  o.allow({"E", "G", "nu", "rigid", "yield", "fatigue", "thermal"});
   for (const char* k : {"yield", "fatigue"})
     if (o.has(k) && o.boolean_or("rigid", false)) throw InputError(o.key(k), "a rigid body has no stresses");
   if (o.boolean_or("rigid", false)) {

@@ -232,6 +232,13 @@ int run_solve(const SolveArgs& args) {
                       number(w[body]["volume"]).c_str());
       std::printf("\n");
     }
+    if (s.contains("temperature") && s["temperature"]["max_rise"].is_number()) {
+      const nlohmann::json& t = s["temperature"];
+      std::printf("  flash temperature rise %s K (base %s, body %s); %s of the heat %s W into the base (%s)\n",
+                  number(t["max_rise"]).c_str(), number(t["base"]["max_rise"]).c_str(),
+                  number(t["body"]["max_rise"]).c_str(), number(t["fraction_into_base"]).c_str(),
+                  number(t["heat"]).c_str(), t["partition"].get<std::string>().c_str());
+    }
     if (r.backend == "none") std::printf("note: %s\n", r.message.c_str());
     std::printf("wrote %s\n", summary_path.c_str());
     std::fflush(stdout);

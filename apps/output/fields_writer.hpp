@@ -3,7 +3,8 @@
 // i + nx*j; element centres; 2-D: y = 0). state 0 free, 1 stick, 2 slip; a normal problem
 // writes 1 for every element in contact (p above the contact threshold). `work_column` (output.power)
 // with friction: a last column `power` (W/m^2, -tau . ds / dt: rolling and dynamic steps) or
-// `dissipation` (J/m^2, -tau . ds of a quasi-static step).
+// `dissipation` (J/m^2, -tau . ds of a quasi-static step); then, when the flash temperature was
+// computed (StaticFields::temperature_base), `temperature`: the hotter surface's rise (K).
 #include <string>
 
 #include "grid.hpp"

@@ -144,6 +144,22 @@ std::vector<GnuplotFigure> static_plot_figures(const std::string& dir, const Cas
     figures.push_back({stem, b.str()});
   };
   line_plot("pressure_x", "line_x.dat", "reference_x.dat", "x", g.yc(j0), "y");
+  if (!f.temperature_base.empty() && !f.temperature_body.empty()) {  // the flash temperature along x
+    std::ostringstream s;
+    s << "# x T_base T_body (K, rise; row j = " << j0 << ")\n";
+    for (int i = 0; i < g.nx; ++i) {
+      const std::size_t e = g.index(i, j0);
+      s << num(g.xc(i)) << ' ' << num(field(f.temperature_base, e)) << ' ' << num(field(f.temperature_body, e)) << '\n';
+    }
+    write_file_whole(path("temperature_x.dat"), s.str());
+    std::ostringstream b;
+    b << "set grid\nset key top left\nset title \"" << c.name << ": flash temperature along x";
+    if (g.dimension == 3) b << " (y = " << short_num(g.yc(j0) * 1e3) << " mm)";
+    b << "\" noenhanced\nset xlabel \"x (mm)\"\nset ylabel \"temperature rise (K)\"\n"
+      << "plot \"temperature_x.dat\" using ($1*1e3):2 with linespoints pt 7 ps 0.5 lw 1.5 title \"base\""
+      << ", \\\n     \"temperature_x.dat\" using ($1*1e3):3 with linespoints pt 5 ps 0.4 lw 1.5 title \"body\"\n";
+    figures.push_back({"temperature_x", b.str()});
+  }
   if (friction) traction_plot("traction_x", "line_x.dat", "x", g.yc(j0), "y");
   if (g.dimension == 3) {
     line_plot("pressure_y", "line_y.dat", "reference_y.dat", "y", g.xc(i0), "x");

@@ -25,6 +25,9 @@ struct StaticFields {
   /// Per second, the rate turning `dissipation` into the power density (W/m^2): V / dx in
   /// rolling, 1/dt in a dynamic step; 0 for a quasi-static step (fields.csv: "dissipation").
   double dissipation_rate = 0.0;
+  /// The flash temperature rise of each surface (K; apps/runs/temperature_run.hpp); empty: not
+  /// computed (fields.csv then has no `temperature` column).
+  std::vector<double> temperature_base, temperature_body;
 };
 
 /// Normal problem: no tangential traction; state 1 (kStick: "in contact") where

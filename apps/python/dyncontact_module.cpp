@@ -101,6 +101,10 @@ py::dict fields_dict(const dc::Grid& g, const dc::output::StaticFields& f) {
   d["sx"] = grid_array(g, f.sx);
   d["sy"] = grid_array(g, f.sy);
   d["state"] = grid_array(g, f.state);
+  if (!f.temperature_base.empty() && !f.temperature_body.empty()) {  // the flash temperature rise (K) per surface
+    d["temperature_base"] = grid_array(g, f.temperature_base);
+    d["temperature_body"] = grid_array(g, f.temperature_body);
+  }
   return d;
 }
 

@@ -105,6 +105,10 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
   }
   py::dict result = to_python(out.summary);
   result["timeseries"] = csv_columns(out.timeseries);
+  if (result.contains("energy")) {  // the audit's history: energy.csv's columns
+    py::dict energy = result["energy"];
+    energy["series"] = csv_columns(out.energy);
+  }
   enforce_summary_limits(out.summary, result, kRunAdvice);
   enforce_accuracy_target(out.summary, result, kRunAdvice);
   return result;
@@ -149,7 +153,9 @@ void bind_runs(py::module_& m) {
       "balances, solver with the worst certificate) with 'timeseries': {column: NumPy array} for\n"
       "the columns of timeseries.csv (t, x, y, z, vx, ..., Fx, Fy, Fz, Mx, My, Mz, creepage,\n"
       "stick_fraction, approach, contact_area, n_contact, n_stick, n_slip, kinetic_energy,\n"
-      "certificate, newton_iterations, contact_solves, alternations). A run that stops early is not an exception: its status\n"
+      "certificate, newton_iterations, contact_solves, alternations); its 'energy' (summary.json's:\n"
+      "dissipated, frictional_power, audit) also holds 'series': {column: NumPy array} for the\n"
+      "columns of energy.csv (t, kinetic, elastic, work, dissipated, numerical_damping). A run that stops early is not an exception: its status\n"
       "says 'stopped' and its message why. A limit in the summary's 'limits' that is an error (not\n"
       "accepted by the case) raises ResultLimitError with the run as .result, as solve() does.")
       .def(py::init([](const py::object& c) { return PyDynamicSimulation(case_from(c)); }), py::arg("case"))

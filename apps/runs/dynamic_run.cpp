@@ -14,6 +14,7 @@
 #include "dynamic_series.hpp"
 #include "dynamic_subsurface.hpp"
 #include "dynamic_sweep.hpp"
+#include "energy_series.hpp"
 #include "exit_codes.hpp"
 #include "fe_body_estimate.hpp"
 #include "fields_writer.hpp"
@@ -40,6 +41,23 @@ namespace fs = std::filesystem;
 
 json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
+/// summary.json "energy" (docs/wear_energy.md "Dynamic runs"): the dissipated frictional work,
+/// the peak step's frictional power and the audit of the run.
+json energy_json(const dynamics::DynamicResult& r) {
+  const dynamics::EnergyAudit& e = r.energy;
+  return {{"dissipated", e.dissipated},
+          {"frictional_power", r.peak_frictional_power},
+          {"frictional_power_time", r.peak_power_time},
+          {"frictional_power_last", r.last_frictional_power},
+          {"audit",
+           {{"work_of_loads", e.work_of_loads},
+            {"kinetic_change", e.kinetic_change},
+            {"elastic_change", e.elastic},
+            {"dissipated", e.dissipated},
+            {"numerical_damping", e.numerical_damping},
+            {"relative_residual", r.energy_relative_residual}}}};
+}
+
 }  // namespace
 
 DynamicOutcome simulate_dynamic(const Case& c, bool progress,
@@ -51,7 +69,7 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
 #else
   dynamics::DynamicSimulation sim(c);  // an fe_body: an input error saying how to build with it
 #endif
-  std::ostringstream series;
+  std::ostringstream series, energy;
   series << output::kTimeseriesColumns;
   const auto start = std::chrono::steady_clock::now();
   Progress line("dynamic", progress);
@@ -60,6 +78,7 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
   ContactPeaks peaks(sim.finite_body() ? sim.finite_body()->centre_height() : c.dynamic->radius);
   out.result = sim.run([&](const dynamics::DynamicSample& s) {
     output::append_timeseries_row(series, s);
+    output::append_energy_row(energy, s);
     peaks.add(s);
     if (on_step) on_step(s);
     if (progress) line.time(s.state.time, t_end);
@@ -67,6 +86,13 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
   line.finish();
   out.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.timeseries = series.str();
+  {
+    std::ostringstream text;
+    text << output::kEnergyColumns;
+    output::append_energy_start(text, out.result.initial.time, dynamics::kinetic_energy(sim.body(), out.result.initial));
+    text << energy.str();
+    out.energy = text.str();
+  }
 
   const dynamics::DynamicResult& r = out.result;
   const auto& sp = *c.dynamic;
@@ -105,6 +131,7 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
                        {"time_s", out.elapsed},
                        {"certificate", {{"worst", r.worst_certificate}, {"last", r.last_certificate}}}};
   summary["balances"] = {{"momentum", r.momentum_imbalance}, {"energy", r.energy_imbalance}};
+  summary["energy"] = energy_json(r);
   out.limits = r.limits;
   summary["limits"] = output::limits_json(out.limits);
 #ifdef DYNCONTACT_WITH_FE
@@ -154,8 +181,9 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   const dynamics::DynamicResult& r = out.result;
   const double elapsed = out.elapsed;
   output::write_file_whole((fs::path(dir) / "timeseries.csv").string(), out.timeseries);
+  output::write_file_whole((fs::path(dir) / "energy.csv").string(), out.energy);
   json summary = out.summary;
-  json files = {{"summary", "summary.json"}, {"timeseries", "timeseries.csv"}};
+  json files = {{"summary", "summary.json"}, {"timeseries", "timeseries.csv"}, {"energy", "energy.csv"}};
   if (!snapshots.empty()) files["snapshots"] = snapshots;
   std::optional<SubsurfaceSeries> series;  // the field of the snapshots and the peak load, the worst of them
   if (subsurface && !r.interrupted) {

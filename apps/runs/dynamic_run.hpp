@@ -23,6 +23,7 @@ struct DynamicOutcome {
   dynamics::DynamicResult result;
   nlohmann::json summary;  ///< summary.json without "files" (CASES.md "dynamic")
   std::string timeseries;  ///< timeseries.csv: a header line, one row per accepted step
+  std::string energy;      ///< energy.csv: a header line, the row of t = 0, one row per accepted step
   double elapsed = 0.0;    ///< wall time of the run (s)
   std::vector<ResultLimit> limits;  ///< before and after the run (dynamic_limits.hpp); also summary["limits"]
   std::vector<QuantityValue> peaks;  ///< summary["peaks"] as results for an error estimate (dynamic_peaks.hpp)

@@ -17,6 +17,7 @@
 #include "summary_entries.hpp"
 #include "summary_writer.hpp"
 #include "wear_run.hpp"
+#include "temperature_run.hpp"
 
 namespace dc::runs {
 namespace {
@@ -57,7 +58,8 @@ nlohmann::json energy_json(const Case& c, const TangentialSolution& sol, const o
   double work = 0.0;
   for (double w : f.dissipation) work += w;
   work *= c.grid.area();
-  nlohmann::json e = {{"dissipated", work}};
+  // A roll over a distance: every marching step's work (the fields are the last step's).
+  nlohmann::json e = {{"dissipated", std::isfinite(sol.marched_frictional_work) ? sol.marched_frictional_work : work}};
   if (sol.rolling && std::isfinite(sol.convective_elastic_work) && c.tangential) {
     const double V = c.tangential->rolling.velocity, rate = V / c.grid.dx;
     const auto& a = sol.amplitudes;
@@ -220,6 +222,9 @@ std::vector<SubsurfaceState> history_states(const Case& c, const StaticRun& run)
 StaticRun run_static(const Case& c, bool progress, const SubsurfaceSink& history_sink) {
   // A worn profile is solved on the case's grid, its cycles in an outer loop (wear_run.hpp).
   StaticRun run = c.wear ? run_wear(c, progress) : run_static_with_accuracy(c, progress);
+  // The flash temperature of the final state (temperature_run.hpp): rolling cases only (build_case).
+  if (c.thermal.enabled() && run.converged && !run.interrupted && !run.fields.empty())
+    run.summary["temperature"] = add_flash_temperature(c, run.grid, run.fields.back());
   // The field inside the bodies from the final state's tractions (subsurface_run.hpp), also for
   // a yield strength (first_yield.hpp).
   const bool yields = c.yields.body || c.yields.base;

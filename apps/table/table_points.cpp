@@ -60,6 +60,8 @@ void check_table_case(const Case& c, const TableAxes& axes) {
                               : c.fatigue.base       ? "materials.base.fatigue"
                               : c.fatigue.body       ? "materials.body.fatigue"
                               : c.shakedown          ? "shakedown"
+                              : c.thermal.base       ? "materials.base.thermal"
+                              : c.thermal.body       ? "materials.body.thermal"
                               : c.accuracy.target    ? "accuracy.target"
                                                      : nullptr;
   if (beyond_forces)

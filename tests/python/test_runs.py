@@ -1,5 +1,5 @@
 """The runs in time from Python: a dynamic impact against Hertz's contact duration, the paper's
-Section 5 sweep (gross sliding where its quasi-static limit says), a dynamic sweep, the Fig. 4 example script,
+Section 5 sweep (gross sliding where its quasi-static limit says), a dynamic sweep, a dynamic run's energy audit, the Fig. 4 example script,
 and the module working from an interpreter that has no NumPy of its own."""
 import math
 import os
@@ -97,3 +97,25 @@ def test_import_without_numpy_on_the_path_takes_the_build_interpreters():
     r = subprocess.run([sys.executable, "-S", "-c", code, module_dir], capture_output=True, text=True, timeout=60)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip() == "(16,)"
+
+
+def test_dynamic_run_returns_its_energy_audit_and_series():
+    # The bowling ball sliding at v0 = 3 m/s (mu = 0.2) for 50 steps: energy.csv's columns in
+    # 'energy'['series'], from t = 0 (m v0^2 / 2) to the summary's audit; friction dissipates in
+    # every step, and work = kinetic change + elastic + dissipated + numerical damping.
+    case = example("bowling-ball")
+    case["time"]["t_end"] = 0.1
+    case["output"] = {"plots": False}
+    r = dyncontact.DynamicSimulation(case).run()
+    assert r["status"] == "completed", r["message"]
+    e = r["energy"]
+    s = e["series"]
+    assert list(s) == ["t", "kinetic", "elastic", "work", "dissipated", "numerical_damping"]
+    assert len(s["t"]) == r["steps"] + 1
+    ke0 = 0.5 * 7.0 * 3.0**2
+    assert s["kinetic"][0] == pytest.approx(ke0, rel=1e-9)
+    assert np.all(np.diff(s["dissipated"]) >= 0)
+    assert s["dissipated"][-1] == pytest.approx(e["dissipated"], rel=1e-9) and e["dissipated"] > 0
+    balance = s["kinetic"] - ke0 + s["elastic"] + s["dissipated"] + s["numerical_damping"]
+    assert np.allclose(s["work"], balance, rtol=0, atol=1e-8 * ke0)
+    assert e["audit"]["numerical_damping"] == pytest.approx(s["numerical_damping"][-1], abs=1e-8 * ke0)

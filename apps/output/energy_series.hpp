@@ -1,0 +1,18 @@
+#pragma once
+// energy.csv of a "dynamic" run: the energy audit (dynamics/dynamic_simulation.hpp EnergyAudit)
+// at t = 0 and after every accepted step (docs/wear_energy.md "Dynamic runs").
+#include <ostream>
+
+#include "dynamic_simulation.hpp"
+
+namespace dc::output {
+
+/// energy.csv's header line.
+inline constexpr const char* kEnergyColumns = "t,kinetic,elastic,work,dissipated,numerical_damping\n";
+
+/// The row of t = 0 (the kinetic energy of the initial state; the contact unloaded).
+void append_energy_start(std::ostream& out, double time, double kinetic);
+/// The row of an accepted step.
+void append_energy_row(std::ostream& out, const dynamics::DynamicSample& s);
+
+}  // namespace dc::output

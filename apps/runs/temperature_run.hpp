@@ -1,0 +1,22 @@
+#pragma once
+// The flash temperature of a rolling run (CASES.md "temperature"): the frictional power density
+// of the final state, q = -tau . ds / dt (W/m^2; dt = dx / V, output::StaticFields), shared
+// between the base and the body by the case's partition, each surface's quasi-steady
+// temperature rise from Jaeger's moving source (core/flash_temperature.hpp). Both surfaces
+// move through the contact at the rolling speed V (the library's V_s = V: the contact moves
+// along +x over both); the creepage's O(xi) difference of the body's surface speed is
+// neglected.
+#include <nlohmann/json.hpp>
+
+#include "case_model.hpp"
+#include "static_fields.hpp"
+
+namespace dc::runs {
+
+/// Computes the maps into `fields` (temperature_base, temperature_body) and returns summary.json's
+/// "temperature": {max_rise, at, base {max_rise, at, mean_rise}, body {...}, partition,
+/// fraction_into_base, heat, peclet {base, body}, heated_elements, operator}. A state without a
+/// rate (a quasi-static step) has no flux: {"max_rise": null, "note"}.
+nlohmann::json add_flash_temperature(const Case& c, const Grid& grid, output::StaticFields& fields);
+
+}  // namespace dc::runs

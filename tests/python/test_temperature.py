@@ -1,0 +1,27 @@
+"""The flash temperature from Python (issue 30): the result dict carries summary.json's
+"temperature" block and the fields both surfaces' maps, against Blok's Hertzian circle."""
+import math
+
+import dyncontact
+
+from example_cases import example
+
+
+def test_solve_returns_the_flash_temperature_and_its_maps():
+    case = example("rolling-sphere")
+    case["tangential"]["creepage"] = [0.3, 0.0]  # full slip at mu = 0.3: the flux mu p V xi
+    case["tangential"]["velocity"] = 20.0
+    case["accuracy"] = {"estimate": False}
+    for body in ("base", "body"):
+        case["materials"][body]["thermal"] = {"conductivity": 50.0, "diffusivity": 1.4e-5}
+    r = dyncontact.solve(case)
+    t = r["temperature"]
+    h = r["hertz"]
+    a, p0 = h["semi_axis_x"], h["max_pressure"]
+    pe = 20.0 * a / (2 * 1.4e-5)
+    blok = 0.87301 * 0.5 * (0.3 * p0 * 20.0 * 0.3) * a / (50.0 * math.sqrt(pe))  # each surface q0/2
+    assert abs(t["max_rise"] / blok - 1) < 1 / pe + 0.01  # 48^2 over +-1.2 a: -0.3 % measured
+    f = r["fields"]
+    assert math.isclose(f["temperature_base"].max(), t["base"]["max_rise"], rel_tol=1e-12)
+    assert math.isclose(f["temperature_body"].max(), t["body"]["max_rise"], rel_tol=1e-12)
+    assert "temperature_base" not in dyncontact.solve(example("rolling-sphere"))["fields"]
