@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -170,6 +171,47 @@ TEST_F(CliTemperature, FieldsColumnOnlyWhenComputed) {
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "x,y,p,tx,ty,sx,sy,state");
 }
 
+// A dynamic run, quasi-steady at its snapshots: the bowling ball (7 kg, R = 109 mm, mu = 0.2)
+// sliding on a lane, all its heat into the lane (partition 1): at a snapshot of the sliding phase
+// the flux is mu p |v_x - omega_y R| (gross sliding) and the lane's rise is Blok's Hertzian circle
+// at the lane's Pe = v_x a / (2 kappa) (2.1e4), the velocities read from timeseries.csv, p0 and a
+// Hertz's under the quasi-static normal force m g. 32^2 over +-1.3 a: within 1 % (-0.36 %
+// measured; -1.2, -0.11, -0.08 % on 16^2, 64^2, 96^2).
+TEST_F(CliTemperature, SlidingBallsLaneMeetsBlokAtItsSnapshots) {
+  json c = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "bowling-ball.json"));
+  c["grid"] = {{"nx", 32}, {"ny", 32}, {"extent", 1.3}};
+  c["time"]["t_end"] = 0.05;
+  c["output"] = {{"plots", false}, {"snapshot_every", 10}};
+  c["materials"]["base"]["thermal"] = thermal(0.16, 1e-7);
+  c["materials"]["body"]["thermal"] = thermal(0.25, 1.2e-7);
+  c["temperature"] = {{"partition", 1.0}};
+  const json s = solve(c);
+  const json& t = s.at("temperature");
+  ASSERT_EQ(t.at("states").size(), 2u);  // steps 10 and 20
+  ASSERT_EQ(t.at("step"), 10);           // the faster sliding is the hotter
+  EXPECT_EQ(t.at("body").at("max_rise").get<double>(), 0.0);
+  EXPECT_TRUE(t.at("body").at("at").is_null());
+  // The snapshot's velocities: timeseries.csv's row of step 10 (t,x,y,z,vx,vy,vz,wx,wy,...).
+  std::istringstream rows(slurp(dir_ / "out" / "timeseries.csv"));
+  std::string row;
+  for (int k = 0; k <= 10; ++k) std::getline(rows, row);
+  std::vector<double> v;
+  std::istringstream cells(row);
+  for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::stod(cell));
+  ASSERT_NEAR(v.at(0), 0.02, 1e-12);
+  const double vx = v.at(4), wy = v.at(8), R = 0.109, P = 7.0 * 9.81;
+  const dc::MaterialPair m{dc::Elastic::from_E_nu(2.0e9, 0.4), dc::Elastic::from_E_nu(1.2e10, 0.3)};
+  const auto h = dc::hertz::sphere(R, P, m.E_star());
+  const double slip = std::abs(vx - wy * R), pe = vx * h.a / (2.0 * 1e-7);
+  EXPECT_NEAR(t.at("heat").get<double>() / (0.2 * P * slip), 1.0, 2e-3);  // the elastic part of the slip
+  const double blok = dc::thermal::blok_line_maximum().coefficient * 0.2 * h.p0 * slip * h.a / (0.16 * std::sqrt(pe));
+  EXPECT_NEAR(t.at("max_rise").get<double>() / blok, 1.0, 0.01) << t.dump();
+  std::printf("[ info ] sliding ball's lane, Pe %.0f: max rise %.4g K, Blok %.4g K (%+.2e)\n", pe,
+              t.at("max_rise").get<double>(), blok, t.at("max_rise").get<double>() / blok - 1.0);
+  const std::string csv = slurp(dir_ / "out" / "fields_10.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "x,y,p,tx,ty,sx,sy,state,temperature");
+}
+
 TEST_F(CliTemperature, BadInputIsAnErrorNamingTheKey) {
   auto expect = [&](const json& c, const std::string& key) {
     expect_input_error("validate " + write_case(c), key);
@@ -195,6 +237,9 @@ TEST_F(CliTemperature, BadInputIsAnErrorNamingTheKey) {
   c = sphere_case();
   c["tangential"] = {{"regime", "shift"}, {"force", {10.0, 0.0}}};  // no speed: no flash temperature
   expect(c, "materials.base.thermal");
+  json dynamic = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "bowling-ball.json"));
+  for (const char* b : {"base", "body"}) dynamic["materials"][b]["thermal"] = thermal();
+  expect(dynamic, "materials.base.thermal");  // no snapshots: output.snapshot_every
   json normal = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "hertz-sphere.json"));
   normal["temperature"] = {{"partition", "auto"}};
   expect(normal, "temperature");

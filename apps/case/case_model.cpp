@@ -62,7 +62,7 @@ const std::vector<BlockUse>& block_uses() {
       {"subsurface", {P::normal, P::tangential, P::dynamic}},
       {"shakedown", {P::normal, P::tangential}},
       {"wear", {P::tangential}},
-      {"temperature", {P::tangential}},
+      {"temperature", {P::tangential, P::dynamic}},
   };
   return uses;
 }
@@ -103,9 +103,12 @@ void check_thermal(const Case& c, bool has_block) {
   const char* key = t.base ? "materials.base.thermal" : t.body ? "materials.body.thermal" : "temperature";
   const bool rolling = c.problem == ProblemKind::tangential && c.tangential &&
                        c.tangential->regime == TangentialRegime::rolling;
-  if (!rolling)
-    throw InputError(key, "the flash temperature is computed for rolling (problem tangential, regime rolling: the "
-                          "contact's speed over the surfaces), not for this case");
+  const bool dynamic = c.problem == ProblemKind::dynamic;
+  if (!rolling && !dynamic)
+    throw InputError(key, "the flash temperature is computed for rolling (problem tangential, regime rolling) and "
+                          "dynamic runs (the contact's speed over the surfaces), not for this case");
+  if (dynamic && c.output.snapshot_every <= 0)
+    throw InputError(key, "a dynamic run's flash temperature is computed at its snapshots: set output.snapshot_every");
   if (!t.base) throw InputError("materials.base.thermal", "missing: the flash temperature needs both surfaces' "
                                                           "conductivity and diffusivity");
   if (!t.body) throw InputError("materials.body.thermal", "missing: the flash temperature needs both surfaces' "
@@ -191,6 +194,9 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   if (c.problem == ProblemKind::dynamic && c.fatigue.base && c.output.snapshot_every <= 0)
     throw InputError("materials.base.fatigue", "a dynamic run's fatigue index follows the base's points over its "
                                                "snapshots: set output.snapshot_every");
+  if (top.has("sweep") && (c.thermal.base || c.thermal.body))
+    throw InputError(c.thermal.base ? "materials.base.thermal" : "materials.body.thermal",
+                     "the flash temperature is computed for single runs, not a sweep's (run the values one by one)");
   if (top.has("sweep") && (c.subsurface.enabled || c.yields.body || c.yields.base || c.fatigue.base))
     throw InputError(c.subsurface.enabled ? "subsurface" : "materials.base.yield",
                      "the subsurface field is computed for single runs, not a sweep's (run the values one by one)");

@@ -15,6 +15,7 @@
 #include "dynamic_accuracy.hpp"
 #include "dynamic_run.hpp"
 #include "dynamic_subsurface.hpp"
+#include "dynamic_temperature.hpp"
 #include "dynamic_sweep.hpp"
 #include "module_common.hpp"
 #include "paper_cylinder_run.hpp"
@@ -89,18 +90,21 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
     py::gil_scoped_release release;
     Grid grid = c.grid;  // of the run the states are taken from (an accuracy target chooses it)
     runs::DynamicSubsurface field(c);
+    runs::DynamicTemperature temperature(c);
     const int every = c.output.snapshot_every;
     std::function<void(const dynamics::DynamicSample&)> observe;
-    if (field.wanted())
+    if (field.wanted() || temperature.wanted())
       observe = [&](const dynamics::DynamicSample& s) {
         if (every > 0 && s.step % every == 0) {
-          const output::StaticFields fields = runs::dynamic_step_fields(grid, s.contact_state);
+          output::StaticFields fields = runs::dynamic_step_fields(grid, s.contact_state);
+          temperature.observe(grid, s, fields);
           field.observe(grid, s, &fields);
         } else {
           field.observe(grid, s, nullptr);
         }
       };
     out = runs::simulate_dynamic_with_accuracy(c, progress, observe, &grid);
+    temperature.add_entries(out.summary);
     if (!out.result.interrupted) field.add_entries(grid, {}, out.summary);
   }
   py::dict result = to_python(out.summary);

@@ -13,6 +13,7 @@
 #include "dynamic_peaks.hpp"
 #include "dynamic_series.hpp"
 #include "dynamic_subsurface.hpp"
+#include "dynamic_temperature.hpp"
 #include "dynamic_sweep.hpp"
 #include "energy_series.hpp"
 #include "exit_codes.hpp"
@@ -159,6 +160,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
 #endif
   Grid grid = c.grid;  // of the run the snapshots are taken from (an accuracy target chooses it)
   DynamicSubsurface field(c);  // the snapshots' and the peak load's tractions, their field after the run
+  DynamicTemperature temperature(c);  // the flash temperature at the snapshots
   const bool subsurface = field.wanted();
   const auto write_snapshot = [&](const dynamics::DynamicSample& s) {
     const output::StaticFields* kept = nullptr;
@@ -166,6 +168,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
     if (every > 0 && s.step % every == 0) {
       const std::string name = "fields_" + std::to_string(s.step) + ".csv";
       fields = dynamic_step_fields(grid, s.contact_state);
+      temperature.observe(grid, s, fields);
       output::write_fields(dir, grid, fields, name);
       json snapshot = {{"step", s.step}, {"time", s.state.time}, {"file", name}};
 #ifdef DYNCONTACT_WITH_FE
@@ -185,6 +188,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   json summary = out.summary;
   json files = {{"summary", "summary.json"}, {"timeseries", "timeseries.csv"}, {"energy", "energy.csv"}};
   if (!snapshots.empty()) files["snapshots"] = snapshots;
+  temperature.add_entries(summary);
   std::optional<SubsurfaceSeries> series;  // the field of the snapshots and the peak load, the worst of them
   if (subsurface && !r.interrupted) {
     output::SubsurfaceSnapshots images(dir);
@@ -220,6 +224,10 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
                 r.final.velocity.y(), r.final.velocity.z(), r.final.omega.x(), r.final.omega.y(), r.final.omega.z());
     if (summary.contains("accuracy")) print_accuracy(summary["accuracy"]);
     if (series) print_subsurface_series(*series, true);
+    if (summary.contains("temperature") && summary["temperature"]["max_rise"].is_number())
+      std::printf("  flash temperature rise %.4g K at step %d (t = %.4g s; quasi-steady at the snapshots)\n",
+                  summary["temperature"]["max_rise"].get<double>(), summary["temperature"]["step"].get<int>(),
+                  summary["temperature"]["time"].get<double>());
     std::printf("wrote %s\n", path.c_str());
     std::fflush(stdout);
   }

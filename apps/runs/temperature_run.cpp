@@ -41,8 +41,8 @@ double heated_half_length(const Grid& g, const std::vector<double>& q) {
 
 }  // namespace
 
-nlohmann::json add_flash_temperature(const Case& c, const Grid& grid, output::StaticFields& fields) {
-  const ThermalSpec& t = c.thermal;
+nlohmann::json flash_temperature(const ThermalSpec& t, const Grid& grid, output::StaticFields& fields,
+                                 double base_speed, double body_speed) {
   nlohmann::json j;
   j["partition"] = partition_name(t.partition.rule);
   if (fields.dissipation.empty() || !(fields.dissipation_rate > 0.0)) {
@@ -54,20 +54,19 @@ nlohmann::json add_flash_temperature(const Case& c, const Grid& grid, output::St
   // negative one of its tolerance's size: no heat there.
   std::vector<double> q(fields.dissipation.size());
   for (std::size_t e = 0; e < q.size(); ++e) q[e] = std::max(0.0, fields.dissipation[e] * fields.dissipation_rate);
-  const double V = c.tangential->rolling.velocity;
-  const ThermalSurface base{*t.base, V}, body{*t.body, V};
+  const ThermalSurface base{*t.base, base_speed}, body{*t.body, body_speed};
   const FlashTemperature flash(grid, base, body, OperatorKind::automatic, "materials.base.thermal",
                                "materials.body.thermal");
   const FlashTemperatureResult r = flash.compute(q, t.partition);
   fields.temperature_base = r.base;
   fields.temperature_body = r.body;
   const bool base_hotter = r.base_max >= r.body_max;
-  // Without heat (full stick, or no friction) no place is the hottest.
-  const auto where = [&](std::size_t e) { return r.total_heat > 0.0 ? place(grid, e) : nlohmann::json(); };
+  // A surface without heat (full stick, no friction, or a partition of 0 or 1) has no hottest place.
+  const auto where = [&](std::size_t e, double rise) { return rise > 0.0 ? place(grid, e) : nlohmann::json(); };
   j["max_rise"] = base_hotter ? r.base_max : r.body_max;
-  j["at"] = where(base_hotter ? r.base_max_element : r.body_max_element);
-  j["base"] = {{"max_rise", r.base_max}, {"at", where(r.base_max_element)}, {"mean_rise", r.base_mean}};
-  j["body"] = {{"max_rise", r.body_max}, {"at", where(r.body_max_element)}, {"mean_rise", r.body_mean}};
+  j["at"] = base_hotter ? where(r.base_max_element, r.base_max) : where(r.body_max_element, r.body_max);
+  j["base"] = {{"max_rise", r.base_max}, {"at", where(r.base_max_element, r.base_max)}, {"mean_rise", r.base_mean}};
+  j["body"] = {{"max_rise", r.body_max}, {"at", where(r.body_max_element, r.body_max)}, {"mean_rise", r.body_mean}};
   j["fraction_into_base"] = r.base_fraction;
   j["heat"] = r.total_heat;
   const double L = heated_half_length(grid, q);
@@ -75,6 +74,11 @@ nlohmann::json add_flash_temperature(const Case& c, const Grid& grid, output::St
   j["heated_elements"] = r.heated_elements;
   j["operator"] = flash.kind();
   return j;
+}
+
+nlohmann::json add_flash_temperature(const Case& c, const Grid& grid, output::StaticFields& fields) {
+  const double V = c.tangential->rolling.velocity;
+  return flash_temperature(c.thermal, grid, fields, V, V);
 }
 
 }  // namespace dc::runs

@@ -13,10 +13,16 @@
 
 namespace dc::runs {
 
-/// Computes the maps into `fields` (temperature_base, temperature_body) and returns summary.json's
-/// "temperature": {max_rise, at, base {max_rise, at, mean_rise}, body {...}, partition,
-/// fraction_into_base, heat, peclet {base, body}, heated_elements, operator}. A state without a
-/// rate (a quasi-static step) has no flux: {"max_rise": null, "note"}.
+/// Computes the maps into `fields` (temperature_base, temperature_body) from its power density
+/// (dissipation x dissipation_rate), the contact moving over the base at `base_speed` and over
+/// the body's surface at `body_speed` (m/s along +x, the library's V_s), and returns the entry:
+/// {max_rise, at, base {max_rise, at, mean_rise}, body {...}, partition, fraction_into_base, heat,
+/// peclet {base, body, length}, heated_elements, operator}. A state without a rate (a
+/// quasi-static step) has no flux: {"max_rise": null, "note"}.
+nlohmann::json flash_temperature(const ThermalSpec& t, const Grid& grid, output::StaticFields& fields,
+                                 double base_speed, double body_speed);
+
+/// summary.json's "temperature" of a rolling case's final state: both surfaces at the rolling speed.
 nlohmann::json add_flash_temperature(const Case& c, const Grid& grid, output::StaticFields& fields);
 
 }  // namespace dc::runs

@@ -25,3 +25,22 @@ def test_solve_returns_the_flash_temperature_and_its_maps():
     assert math.isclose(f["temperature_base"].max(), t["base"]["max_rise"], rel_tol=1e-12)
     assert math.isclose(f["temperature_body"].max(), t["body"]["max_rise"], rel_tol=1e-12)
     assert "temperature_base" not in dyncontact.solve(example("rolling-sphere"))["fields"]
+
+
+def test_dynamic_run_returns_the_snapshots_flash_temperature():
+    """A dynamic run's temperature at its snapshots (dynamic_temperature.hpp), as the command line's:
+    the sliding bowling ball's lane, all the heat into it, its heat the friction's mu m g |v_slip|."""
+    case = example("bowling-ball")
+    case["time"]["t_end"] = 0.05
+    case["output"] = {"plots": False, "snapshot_every": 10}
+    case["materials"]["base"]["thermal"] = {"conductivity": 0.16, "diffusivity": 1e-7}
+    case["materials"]["body"]["thermal"] = {"conductivity": 0.25, "diffusivity": 1.2e-7}
+    case["temperature"] = {"partition": 1.0}
+    r = dyncontact.solve(case)
+    t = r["temperature"]
+    assert [s["step"] for s in t["states"]] == [10, 20]
+    ts = r["timeseries"]
+    k = t["step"] - 1  # the rows are the accepted steps from step 1
+    slip = abs(ts["vx"][k] - ts["wy"][k] * 0.109)
+    assert abs(t["heat"] / (0.2 * 7.0 * 9.81 * slip) - 1) < 2e-3
+    assert t["body"]["max_rise"] == 0.0 and t["max_rise"] > 0.0
