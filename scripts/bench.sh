@@ -43,6 +43,9 @@
 #                               (native), and the sparse saddle form (Ipopt) for the bodies of
 #                               --sparse-dofs on 32^2: factorisation, solve, iterations, peak memory,
 #                               p0 against Hertz (medians of --repeat runs; docs/finite.md)
+#   scripts/bench.sh wear       one thread: 1e5 fretting cycles of a 64^2 sphere with cycle jumping
+#                               (examples/bench/fretting-sphere-wear.json): time, profile updates,
+#                               worn depth and volume; exit 1 beyond 60 s (docs/wear_energy.md "Wear")
 # --sizes/--backends override the defaults; other arguments go to dyncontact_bench (e.g. --repeat 3, --force, --csv out/bench.csv).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -95,6 +98,22 @@ if [[ "${1:-}" == "subsurface" ]]; then
   shift
   scripts/setup.sh
   DYNCONTACT_THREADS=1 exec "$BUILD_DIR/bin/dyncontact_subsurface_bench" "$@"
+fi
+if [[ "${1:-}" == "wear" ]]; then
+  DYNCONTACT_BUILD_TARGET=dyncontact DYNCONTACT_SKIP_PYTHON_INSTALL=1 scripts/setup.sh
+  out="$(mktemp -d)"
+  trap 'rm -rf "$out"' EXIT
+  start=$(date +%s.%N)
+  DYNCONTACT_THREADS=1 "$BUILD_DIR/bin/dyncontact" solve examples/bench/fretting-sphere-wear.json --out "$out/wear" -q >/dev/null
+  seconds=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.2f", b - a }')
+  /usr/bin/env python3 - "$out/wear/summary.json" "$seconds" <<'PY'
+import json, sys
+w = json.load(open(sys.argv[1]))["wear"]
+print(f"fretting-sphere-wear 64^2: {w['cycles']} cycles in {sys.argv[2]} s, {w['updates']} profile updates, "
+      f"max depth {w['base']['max_depth']:.3g} m, volume {w['base']['volume']:.3g} m^3 per body")
+PY
+  awk -v s="$seconds" 'BEGIN { exit !(s <= 60) }' || { echo "bench: wear took $seconds s (target <= 60 s)" >&2; exit 1; }
+  exit 0
 fi
 if [[ "${1:-}" == "finite" ]]; then
   shift

@@ -61,6 +61,7 @@ const std::vector<BlockUse>& block_uses() {
       {"accuracy", {P::normal, P::tangential, P::dynamic}},
       {"subsurface", {P::normal, P::tangential, P::dynamic}},
       {"shakedown", {P::normal, P::tangential}},
+      {"wear", {P::tangential}},
       {"temperature", {P::tangential, P::dynamic}},
   };
   return uses;
@@ -125,7 +126,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   top.allow({"schema", "name", "description", "problem", "dimension", "materials", "profile", "grid", "normal",
              "friction", "tangential", "fe_body", "body", "loads", "time", "traction_model", "dimensionless",
              "solver", "sweep", "output", "normal_model", "contact_model", "accuracy",
-             "subsurface", "shakedown", "temperature"});
+             "subsurface", "shakedown", "wear", "temperature"});
   Case c;
   c.source = document;
   for (auto it = document.begin(); it != document.end(); ++it) c.blocks.push_back(it.key());
@@ -165,6 +166,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   if (top.has("output")) c.output = read_output(top.at("output"));
   if (top.has("accuracy")) c.accuracy = read_accuracy(top.at("accuracy"), c.problem);
   if (top.has("subsurface")) c.subsurface = read_subsurface(top.at("subsurface"));
+  if (top.has("wear")) c.wear = read_wear(top.at("wear"), c);
   if (top.has("materials")) {
     c.yields = read_yields(top.at("materials"));
     c.fatigue = read_fatigue_limits(top.at("materials"));

@@ -3,6 +3,7 @@
 #include "solve_case.hpp"
 
 #include <chrono>
+#include <stdexcept>
 
 #include "errors.hpp"
 #include "interrupt.hpp"
@@ -10,16 +11,25 @@
 
 namespace dc {
 
+std::vector<double> contact_heights(const ContactSpec& c, const std::vector<double>& worn_depth) {
+  std::vector<double> h = profile_heights(c.profile, c.grid);
+  if (!worn_depth.empty()) {
+    if (worn_depth.size() != h.size()) throw std::invalid_argument("contact_heights: one worn depth per element");
+    for (std::size_t e = 0; e < h.size(); ++e) h[e] += worn_depth[e];  // worn material opens the gap (2.6)
+  }
+  return h;
+}
+
 NormalSolution solve_normal_case(const ContactSpec& c, const ProgressCallback& progress,
                                  const std::vector<double>* warm_pressure) {
-  NormalProblem problem(c.grid, c.materials, profile_heights(c.profile, c.grid), c.solver.operator_kind);
+  NormalProblem problem(c.grid, c.materials, contact_heights(c), c.solver.operator_kind);
   if (warm_pressure && warm_pressure->size() == c.grid.size()) problem.set_warm_start(*warm_pressure);
   return problem.solve(c.normal, c.solver, progress);
 }
 
-TangentialProblem make_tangential_problem(const ContactSpec& c) {
+TangentialProblem make_tangential_problem(const ContactSpec& c, const std::vector<double>& worn_depth) {
   if (!c.friction) throw InputError("friction", "required for a tangential problem");
-  return TangentialProblem(c.grid, c.materials, profile_heights(c.profile, c.grid), FrictionLaw::from_spec(*c.friction),
+  return TangentialProblem(c.grid, c.materials, contact_heights(c, worn_depth), FrictionLaw::from_spec(*c.friction),
                            c.solver.operator_kind);
 }
 

@@ -23,6 +23,7 @@
 #include "subsurface_plots.hpp"
 #include "subsurface_writer.hpp"
 #include "summary_writer.hpp"
+#include "wear_writer.hpp"
 #include "table_ranks.hpp"
 #include "tangential_run.hpp"
 
@@ -158,6 +159,10 @@ int run_solve(const SolveArgs& args) {
     output::write_fields(dir, solved.grid, run.fields.back(), "fields.csv", c.output.power);
     files["fields"] = "fields.csv";
   }
+  if (!run.worn_base.empty() || !run.worn_body.empty()) {  // the worn depth of each body (wear_writer.hpp)
+    output::write_wear(dir, solved.grid, run.worn_base, run.worn_body);
+    files["wear"] = "wear.csv";
+  }
   std::vector<output::SubsurfaceBody> bodies;  // the subsurface block's field of the final state
   if (run.subsurface && c.subsurface.enabled) {  // subsurface.vti (evenly spaced depths) and the planes through the worst points
     if (subsurface_series.count() > 0) files["subsurface_series"] = subsurface_series.collection();
@@ -216,6 +221,16 @@ int run_solve(const SolveArgs& args) {
                   sd["verdict"].get<std::string>().c_str(), number(sd["load_factor"]).c_str(),
                   number(sd["shakedown_p0_over_k"]).c_str(), number(sd["elastic_limit_load_factor"]).c_str(),
                   number(sd["p0_over_k"]).c_str(), number(sd["traction_coefficient"]).c_str());
+    }
+    if (s.contains("wear")) {  // the worn profile (wear_run.hpp): cycles, updates, each body's scar
+      const nlohmann::json& w = s["wear"];
+      std::printf("  wear (%s)    %s cycles, %s profile updates", w["law"].get<std::string>().c_str(),
+                  number(w["cycles"]).c_str(), number(w["updates"]).c_str());
+      for (const char* body : {"base", "body"})
+        if (w.contains(body))
+          std::printf("; %s max depth %s m, volume %s m^3", body, number(w[body]["max_depth"]).c_str(),
+                      number(w[body]["volume"]).c_str());
+      std::printf("\n");
     }
     if (s.contains("temperature") && s["temperature"]["max_rise"].is_number()) {
       const nlohmann::json& t = s["temperature"];

@@ -19,6 +19,7 @@
 #include "case_model.hpp"
 #include "errors.hpp"
 #include "fields_writer.hpp"
+#include "wear_writer.hpp"
 #include "linear_operator.hpp"
 #include "module_common.hpp"
 #include "output_files.hpp"
@@ -67,6 +68,10 @@ StaticSolve solve_static_case(const Case& c, const py::object& out, bool progres
     nlohmann::json files = {{"summary", "summary.json"}, {"fields", "fields.csv"}};
     if (series && series->count() > 0) files["subsurface_series"] = series->collection();
     if (r.run.subsurface) runs::write_subsurface_files(folder.dir, c, *r.run.subsurface, files);
+    if (!r.run.worn_base.empty() || !r.run.worn_body.empty()) {  // as `dyncontact solve` writes it
+      output::write_wear(folder.dir, r.solved.grid, r.run.worn_base, r.run.worn_body);
+      files["wear"] = "wear.csv";
+    }
     r.summary["files"] = files;
     output::write_summary(folder.dir, r.summary);
     r.advice = "; the results are written to " + folder.dir + " and are in this exception's .result";
@@ -130,7 +135,11 @@ py::dict solve(const py::object& case_arg, const py::object& out, bool progress,
   const dc::runs::StaticRun& run = r.run;
   const std::string& advice = r.advice;
   py::dict result = to_python(summary);
-  result["fields"] = fields_dict(solved.grid, run.fields.back());
+  py::dict fields = fields_dict(solved.grid, run.fields.back());
+  // A "wear" block: each worn body's depth (m), wear.csv's columns.
+  if (!run.worn_base.empty()) fields["wear_base"] = grid_array(solved.grid, run.worn_base);
+  if (!run.worn_body.empty()) fields["wear_body"] = grid_array(solved.grid, run.worn_body);
+  result["fields"] = fields;
   enforce_summary_limits(summary, result, advice);
   enforce_accuracy_target(summary, result, advice);
   return result;

@@ -16,6 +16,7 @@
 #include "solve_case.hpp"
 #include "summary_entries.hpp"
 #include "summary_writer.hpp"
+#include "wear_run.hpp"
 #include "temperature_run.hpp"
 
 namespace dc::runs {
@@ -155,13 +156,20 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
 }
 
 TangentialRun run_tangential(const Case& c, bool progress) {
-  TangentialRun run;
+  std::vector<TangentialSolution> steps;
   {
     Progress reporter("solving " + c.name + " (" + to_string(c.solver.backend) + ")", progress);
-    run.steps = solve_tangential_case(c, reporter.callback());
+    steps = solve_tangential_case(c, reporter.callback());
     reporter.finish();
   }
-  run.normal = c.tangential->step_normals();
+  return tangential_run_of(c, std::move(steps), c.tangential->step_normals());
+}
+
+TangentialRun tangential_run_of(const Case& c, std::vector<TangentialSolution> solutions,
+                                std::vector<NormalSpec> normals) {
+  TangentialRun run;
+  run.steps = std::move(solutions);
+  run.normal = std::move(normals);
   run.normal.resize(run.steps.size(), c.normal);
   run.interrupted = interrupt_requested();
   nlohmann::json steps = nlohmann::json::array();
@@ -212,7 +220,8 @@ std::vector<SubsurfaceState> history_states(const Case& c, const StaticRun& run)
 }  // namespace
 
 StaticRun run_static(const Case& c, bool progress, const SubsurfaceSink& history_sink) {
-  StaticRun run = run_static_with_accuracy(c, progress);
+  // A worn profile is solved on the case's grid, its cycles in an outer loop (wear_run.hpp).
+  StaticRun run = c.wear ? run_wear(c, progress) : run_static_with_accuracy(c, progress);
   // The flash temperature of the final state (temperature_run.hpp): rolling cases only (build_case).
   if (c.thermal.enabled() && run.converged && !run.interrupted && !run.fields.empty())
     run.summary["temperature"] = add_flash_temperature(c, run.grid, run.fields.back());

@@ -32,6 +32,10 @@ struct TangentialRun {
 /// Solves with dc::solve_tangential_case, a progress line on stderr when `progress` and the
 /// solve takes over a second.
 TangentialRun run_tangential(const Case& c, bool progress);
+/// The run (fields, summary) of solutions already solved for case `c`, `normals` the normal
+/// load of each (the wear run's last cycle, wear_run.hpp).
+TangentialRun tangential_run_of(const Case& c, std::vector<TangentialSolution> solutions,
+                                std::vector<NormalSpec> normals);
 
 /// The contact fields of one tangential step: pressure, traction, slip, friction bound, and
 /// the states 0 free / 1 stick / 2 slip. An element is in contact when p exceeds
@@ -59,6 +63,8 @@ struct StaticRun {
   Grid grid;                                 ///< the grid solved (an accuracy target chooses it)
   std::optional<SubsurfaceRun> subsurface;   ///< the "subsurface" block's field (final state)
   std::optional<SubsurfaceSeries> subsurface_series;  ///< a history's: the worst over its states
+  /// "wear" (wear_run.hpp): each body's worn depth (m per element of `grid`; empty: not worn).
+  std::vector<double> worn_base, worn_body;
 };
 
 /// Runs a static case (normal, tangential, finite) with its accuracy block

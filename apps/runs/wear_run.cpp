@@ -1,0 +1,165 @@
+#include "wear_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "interrupt.hpp"
+#include "progress.hpp"
+#include "solve_case.hpp"
+
+namespace dc::runs {
+namespace {
+
+/// One profile update: the cycles done after it, the cycles its cycle's wear was extrapolated
+/// over, the deepest wear of that cycle, and the state the cycle was solved in.
+struct WearUpdate {
+  long long cycles_done = 0, jump = 0;
+  double cycle_max_depth = 0.0, cycle_volume = 0.0, max_depth = 0.0, volume = 0.0;
+  double max_pressure = 0.0, contact_area = 0.0;
+  std::vector<double> normal_force;  ///< each step of the cycle (N)
+};
+
+double largest(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()); }
+
+/// The cycles one solved cycle stands for: all that remain, bounded by update.cycles and by the
+/// cycles that wear update.max_depth at the deepest element (at least one); neither given: one.
+long long cycles_to_jump(const WearSpec& w, long long remaining, double cycle_depth) {
+  if (w.update_cycles == 0 && w.update_max_depth == 0.0) return 1;
+  long long n = remaining;
+  if (w.update_cycles > 0) n = std::min(n, w.update_cycles);
+  if (w.update_max_depth > 0.0 && cycle_depth > 0.0) {
+    const double by_depth = std::floor(w.update_max_depth / cycle_depth);
+    if (by_depth < static_cast<double>(n)) n = std::max(1LL, static_cast<long long>(by_depth));
+  }
+  return std::max(1LL, n);
+}
+
+nlohmann::json body_json(const std::vector<double>& worn, double area) {
+  double volume = 0.0;
+  for (double d : worn) volume += d;
+  return {{"max_depth", largest(worn)}, {"volume", volume * area}};
+}
+
+}  // namespace
+
+StaticRun run_wear(const Case& c, bool progress) {
+  const WearSpec& w = *c.wear;
+  const TangentialSpec& t = *c.tangential;
+  const std::size_t n = c.grid.size();
+  const int n_steps = static_cast<int>(t.history.size());
+  const int first = w.cycle_from_step;
+  // One body's worn depth (each listed body loses the law's depth); the gap opens by their sum.
+  std::vector<double> worn(n, 0.0), gap_worn(n, 0.0), cycle_depth(n, 0.0);
+  const double bodies = static_cast<double>(w.base) + static_cast<double>(w.body);
+  auto update_gap = [&](TangentialProblem& problem) {
+    for (std::size_t e = 0; e < n; ++e) gap_worn[e] = bodies * worn[e];
+    problem.set_heights(contact_heights(c, gap_worn));
+  };
+
+  Progress reporter("solving " + c.name + " with wear (" + to_string(c.solver.backend) + ")", progress);
+  ProgressCallback callback = reporter.callback();
+  TangentialProblem problem = make_tangential_problem(c);
+  // Steps [from, to) of the history, each timed whole, their wear summed into cycle_depth.
+  auto solve_steps = [&](int from, int to, std::vector<TangentialSolution>& out) {
+    for (int k = from; k < to; ++k) {
+      ProgressCallback step_progress;
+      if (callback)
+        step_progress = [&, k](ProgressInfo info) {
+          info.step = k;
+          info.steps = n_steps;
+          callback(info);
+        };
+      const auto start = std::chrono::steady_clock::now();
+      out.push_back(problem.step(t.history[k], c.solver, step_progress));
+      TangentialSolution& s = out.back();
+      s.report.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const std::vector<double>& p = s.normal.pressure;
+      for (std::size_t e = 0; e < n; ++e)
+        cycle_depth[e] += w.law.depth(p[e], s.tx[e], e < s.ty.size() ? s.ty[e] : 0.0, s.sx[e],
+                                      e < s.sy.size() ? s.sy[e] : 0.0);
+    }
+  };
+
+  std::vector<TangentialSolution> cycle, solved;
+  std::vector<WearUpdate> updates;
+  long long done = 0;
+  bool interrupted = false;
+  try {
+    if (first > 0) {  // the first loading, once
+      solve_steps(0, first, solved);
+      for (std::size_t e = 0; e < n; ++e) worn[e] += cycle_depth[e];
+      update_gap(problem);
+    }
+    while (done < w.cycles) {
+      cycle.clear();
+      cycle_depth.assign(n, 0.0);
+      solve_steps(first, n_steps, cycle);
+      const bool converged = std::all_of(cycle.begin(), cycle.end(), [](const TangentialSolution& s) {
+        return s.report.status == SolveStatus::converged;
+      });
+      solved = std::move(cycle);
+      WearUpdate u;
+      u.cycle_max_depth = largest(cycle_depth);
+      for (double d : cycle_depth) u.cycle_volume += d * c.grid.area();
+      u.jump = cycles_to_jump(w, w.cycles - done, u.cycle_max_depth);
+      for (std::size_t e = 0; e < n; ++e) worn[e] += static_cast<double>(u.jump) * cycle_depth[e];
+      done += u.jump;
+      u.cycles_done = done;
+      u.max_depth = largest(worn);
+      for (double d : worn) u.volume += d * c.grid.area();
+      for (const TangentialSolution& s : solved) {
+        u.normal_force.push_back(s.normal.force);
+        u.max_pressure = std::max(u.max_pressure, largest(s.normal.pressure));
+      }
+      const std::vector<double>& p = solved.back().normal.pressure;
+      const double peak = largest(p);
+      u.contact_area = static_cast<double>(std::count_if(p.begin(), p.end(), [&](double v) {
+                         return v > std::max(c.solver.certificate_tol, 1e-12) * peak;
+                       })) * c.grid.area();
+      updates.push_back(std::move(u));
+      if (!converged) break;  // a cycle the solver failed on wears nothing more: reported as is
+      if (done < w.cycles) update_gap(problem);
+    }
+  } catch (const Interrupted&) {
+    if (updates.empty()) throw;  // else: the cycles finished (interrupt_requested() says why no more)
+    interrupted = true;
+  }
+  reporter.finish();
+
+  std::vector<NormalSpec> normals;
+  for (int k = first; k < n_steps; ++k) normals.push_back(t.history[k].normal);
+  TangentialRun run = tangential_run_of(c, std::move(solved), std::move(normals));
+  StaticRun out;
+  out.summary = std::move(run.summary);
+  // The steps reported are the cycle's: each names its step of tangential.history.
+  if (out.summary.contains("steps"))
+    for (std::size_t k = 0; k < out.summary["steps"].size(); ++k) out.summary["steps"][k]["history_step"] = first + k;
+  out.fields = std::move(run.fields);
+  out.normal = run.normal.back();
+  out.report = run.report();
+  out.report.time_s = run.total_time_s();
+  out.converged = run.converged() && done == w.cycles;
+  out.history = true;
+  out.interrupted = interrupted || run.interrupted;
+  out.grid = c.grid;
+  if (w.base) out.worn_base = worn;
+  if (w.body) out.worn_body = worn;
+
+  nlohmann::json j = {{"law", to_string(w.law.kind)}, {"cycles", done}, {"updates", updates.size()},
+                      {"cycle_from_step", first}};
+  if (w.base) j["base"] = body_json(worn, c.grid.area());
+  if (w.body) j["body"] = body_json(worn, c.grid.area());
+  nlohmann::json history = nlohmann::json::array();
+  for (const WearUpdate& u : updates)
+    history.push_back({{"cycles", u.cycles_done}, {"jump", u.jump}, {"cycle_max_depth", u.cycle_max_depth},
+                       {"cycle_volume", u.cycle_volume},
+                       {"max_depth", u.max_depth}, {"volume", u.volume}, {"max_pressure", u.max_pressure},
+                       {"contact_area", u.contact_area}, {"normal_force", u.normal_force}});
+  j["history"] = history;
+  if (done < w.cycles) j["cycles_requested"] = w.cycles;
+  out.summary["wear"] = j;
+  return out;
+}
+
+}  // namespace dc::runs
