@@ -19,6 +19,7 @@ const std::vector<BundledExample>& bundled_examples() {
         {"bearing-accuracy", "a ball-bearing contact asked for 1e-3 instead of a grid: the grid is chosen (3-D, accuracy target)"},
         {"bearing-subsurface", "a ball on a bearing race, 1.5 kN: von Mises field to subsurface.vti, first yield (3-D, subsurface)"},
         {"cattaneo-sphere", "Cattaneo-Mindlin: steel sphere, 100 N, tangential force 0.5 mu P (3-D, shift)"},
+        {"fretting-wear", "Mindlin-Deresiewicz fretting: steel sphere at +-0.5 mu P for 1e5 cycles, Archard wear: the ring scar (3-D, wear)"},
         {"torsion-sphere", "Lubkin: steel sphere, 100 N, twisting moment half the full-slip value (3-D, torsion)"},
         {"carter-2d", "Carter: steel cylinder rolling on steel, 100 kN/m, force 0.5 mu P (2-D, rolling)"},
         {"rail-shakedown", "a wheel rolling on a rail with traction 0.2 P: shakedown map point, Dang Van, first yield (2-D, subsurface)"},
