@@ -5,6 +5,7 @@
 // input errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -310,7 +311,25 @@ TEST_F(CliWear, AnAnnularPunchTwistedInFullSlipWearsToTheSteadyPressure) {
   c["tangential"] = {{"regime", "torsion"}, {"history", {{{"angle", theta}}, {{"angle", -theta}}, {{"angle", theta}}}}};
   c["wear"] = {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"cycles", 3000},
                {"update", {{"max_depth", 2e-7}}}, {"cycle_from_step", 1}};
+  c["output"] = {{"plots", true}};  // the figure wear_x: its data, the centre row of each body's depth
   const json s = solve(c);
+  {
+    std::istringstream data(slurp(dir_ / "out" / "wear_x.dat"));
+    std::string line;
+    int rows = 0;
+    double deepest = 0.0;
+    while (std::getline(data, line))
+      if (line[0] != '#') {
+        double x = 0, base = 0, body = 0;
+        std::istringstream(line) >> x >> base >> body;
+        EXPECT_EQ(base, body);  // both bodies wear alike
+        deepest = std::max(deepest, base);
+        ++rows;
+      }
+    EXPECT_EQ(rows, n);
+    EXPECT_GT(deepest, 0.5 * s.at("wear").at("base").at("max_depth").get<double>());
+    EXPECT_LE(deepest, s.at("wear").at("base").at("max_depth").get<double>() * (1.0 + 1e-8));  // 9 printed digits
+  }
   const json& history = s.at("wear").at("history");
   ASSERT_GT(history.size(), 10u);
   const double rate = kK / kH * 4.0 * theta * C, area = annulus * dx * dx;

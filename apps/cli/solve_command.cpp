@@ -172,9 +172,11 @@ int run_solve(const SolveArgs& args) {
     Case plotted = solved;
     plotted.normal = run.normal;  // the closed-form curve of the last step's load
     nlohmann::json plots = nlohmann::json::array();
-    std::vector<output::GnuplotFigure> planes;
+    std::vector<output::GnuplotFigure> planes;  // the subsurface planes, the worn depth
     if (!bodies.empty() && c.subsurface.planes && run.subsurface->depths.size() > 1)
       planes = output::subsurface_plane_figures(dir, c.name, bodies);
+    if (!run.worn_base.empty() || !run.worn_body.empty())
+      planes.push_back(output::wear_figure(dir, c.name, solved.grid, run.worn_base, run.worn_body));
     for (const auto& p : output::write_static_plots(dir, plotted, run.fields.back(), planes))
       plots.push_back(std::filesystem::path(p).filename().string());
     files["plots"] = plots;
