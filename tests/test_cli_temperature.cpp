@@ -240,6 +240,10 @@ TEST_F(CliTemperature, BadInputIsAnErrorNamingTheKey) {
   json dynamic = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "bowling-ball.json"));
   for (const char* b : {"base", "body"}) dynamic["materials"][b]["thermal"] = thermal();
   expect(dynamic, "materials.base.thermal");  // no snapshots: output.snapshot_every
+  json fe = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "fe-hemisphere-drop.json"));
+  fe["output"] = {{"plots", false}, {"snapshot_every", 10}};
+  fe["materials"]["base"]["thermal"] = thermal();
+  expect(fe, "materials.base.thermal");  // an fe_body: no rigid profile's radius for its surface speed
   json normal = json::parse(slurp(std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "examples" / "hertz-sphere.json"));
   normal["temperature"] = {{"partition", "auto"}};
   expect(normal, "temperature");

@@ -97,7 +97,7 @@ void check_dense_operator_size(const Case& c) {
 
 /// The flash temperature (apps/runs/temperature_run.hpp) needs the contact's speed over both
 /// surfaces: rolling (its velocity), and both surfaces' thermal constants.
-void check_thermal(const Case& c, bool has_block) {
+void check_thermal(const Case& c, bool has_block, bool fe_body) {
   const ThermalSpec& t = c.thermal;
   if (!t.body && !t.base && !has_block) return;
   const char* key = t.base ? "materials.base.thermal" : t.body ? "materials.body.thermal" : "temperature";
@@ -107,6 +107,8 @@ void check_thermal(const Case& c, bool has_block) {
   if (!rolling && !dynamic)
     throw InputError(key, "the flash temperature is computed for rolling (problem tangential, regime rolling) and "
                           "dynamic runs (the contact's speed over the surfaces), not for this case");
+  if (dynamic && fe_body)  // the body's surface speed omega_y R needs the rigid profile's radius
+    throw InputError(key, "a dynamic run's flash temperature is computed for a rigid-profile body, not an fe_body");
   if (dynamic && c.output.snapshot_every <= 0)
     throw InputError(key, "a dynamic run's flash temperature is computed at its snapshots: set output.snapshot_every");
   if (!t.base) throw InputError("materials.base.thermal", "missing: the flash temperature needs both surfaces' "
@@ -186,7 +188,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
     static const nlohmann::json none = nlohmann::json::object();
     c.thermal = read_thermal(top.has("materials") ? top.at("materials") : none,
                              top.has("temperature") ? &top.at("temperature") : nullptr);
-    check_thermal(c, top.has("temperature"));
+    check_thermal(c, top.has("temperature"), fe);
   }
   c.shakedown = top.boolean_or("shakedown", false);
   if (c.shakedown && !c.yields.base)
