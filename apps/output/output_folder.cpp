@@ -34,19 +34,22 @@ bool is_result_file(const std::string& name) {
       "table.csv", "table.json", "table_Fx.dat", "table_Fy.dat", "body.vtu", "body.pvd",
       "subsurface.vti", "subsurface_base_xz.csv", "subsurface_base_yz.csv", "subsurface_body_xz.csv",
       "subsurface_body_yz.csv", "subsurface_base_xz.dat", "subsurface_base_yz.dat", "subsurface_body_xz.dat",
-      "subsurface_body_yz.dat", "subsurface.pvd"};
+      "subsurface_body_yz.dat", "subsurface.pvd", "fields.vti", "fields.pvd", "energy.csv", "wear.csv",
+      "wear_x.dat", "temperature_x.dat"};
   static const char* figures[] = {"pressure_x", "pressure_y", "traction_x", "traction_y", "pressure_map",
                                   "contact_map", "subsurface_base_xz", "subsurface_base_yz", "subsurface_body_xz",
                                   "subsurface_body_yz", "F_bar", "l_bar", "v_bar",
                                   // dynamic
                                   "position", "velocity", "omega", "force", "moment", "creepage", "stick",
-                                  "approach", "contact_area", "energy", "table_Fx", "table_Fy"};
+                                  "approach", "contact_area", "energy", "table_Fx", "table_Fy",
+                                  // heat and wear
+                                  "temperature_x", "wear_x"};
   if (fixed.count(name)) return true;
   for (const char* f : figures)
     for (const char* ext : {".svg", ".png"})
       if (name == std::string(f) + ext) return true;
   return numbered(name, "fields_", ".csv") || numbered(name, "timeseries_", ".csv") || numbered(name, "body_", ".vtu") ||
-         numbered(name, "subsurface_", ".vti");
+         numbered(name, "subsurface_", ".vti") || numbered(name, "fields_", ".vti");
 }
 
 OutputFolder open_output_folder(const Case& c, const std::string& cli_out, const std::string& out_key) {
