@@ -14,7 +14,7 @@
 #include "commands.hpp"
 #include "dynamic_limits.hpp"
 #include "dynamic_run.hpp"
-#include "fields_writer.hpp"
+#include "static_field_files.hpp"
 #include "interrupt.hpp"
 #include "interrupt_handler.hpp"
 #include "plot_writer.hpp"
@@ -145,24 +145,9 @@ int run_solve(const SolveArgs& args) {
   nlohmann::json& s = run.summary;
   if (run.interrupted) s["status"] = "interrupted";
   nlohmann::json files = {{"summary", "summary.json"}};
-  if (c.output.fields) {
-    if (run.history) {  // one file per step; fields.csv is the last
-      nlohmann::json per_step = nlohmann::json::array();
-      for (std::size_t k = 0; k < run.fields.size(); ++k) {
-        const std::string name = "fields_" + std::to_string(k) + ".csv";
-        output::write_fields(dir, solved.grid, run.fields[k], name, c.output.power);
-        per_step.push_back(name);
-        s["steps"][k]["fields"] = name;
-      }
-      files["fields_steps"] = per_step;
-    }
-    output::write_fields(dir, solved.grid, run.fields.back(), "fields.csv", c.output.power);
-    files["fields"] = "fields.csv";
-  }
-  if (!run.worn_base.empty() || !run.worn_body.empty()) {  // the worn depth of each body (wear_writer.hpp)
-    output::write_wear(dir, solved.grid, run.worn_base, run.worn_body);
-    files["wear"] = "wear.csv";
-  }
+  output::StaticFieldFiles surface{&run.fields, c.output.fields, run.history, c.output.power, &run.worn_base,
+                                   &run.worn_body};
+  output::write_static_field_files(dir, solved.grid, surface, files, s);
   std::vector<output::SubsurfaceBody> bodies;  // the subsurface block's field of the final state
   if (run.subsurface && c.subsurface.enabled) {  // subsurface.vti (evenly spaced depths) and the planes through the worst points
     if (subsurface_series.count() > 0) files["subsurface_series"] = subsurface_series.collection();

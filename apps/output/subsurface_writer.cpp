@@ -1,41 +1,15 @@
 #include "subsurface_writer.hpp"
 
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <string>
 
 #include "output_files.hpp"
+#include "vti_image.hpp"
 
 namespace dc::output {
 namespace {
-
-void append_base64(std::string& out, const unsigned char* bytes, std::size_t size) {
-  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  for (std::size_t k = 0; k < size; k += 3) {
-    const unsigned v = (unsigned{bytes[k]} << 16) | (k + 1 < size ? unsigned{bytes[k + 1]} << 8 : 0u) |
-                       (k + 2 < size ? unsigned{bytes[k + 2]} : 0u);
-    out += table[(v >> 18) & 63];
-    out += table[(v >> 12) & 63];
-    out += k + 1 < size ? table[(v >> 6) & 63] : '=';
-    out += k + 2 < size ? table[v & 63] : '=';
-  }
-}
-
-/// One inline binary DataArray (VTK XML: the UInt32 byte count, then the Float32 values, each
-/// base64-encoded on its own; little-endian as the file says).
-void append_array(std::string& out, const std::string& name, int components, const std::vector<float>& values) {
-  out += "<DataArray type=\"Float32\" Name=\"" + name + "\" NumberOfComponents=\"" + std::to_string(components) +
-         "\" format=\"binary\">\n";
-  const std::uint32_t bytes = static_cast<std::uint32_t>(values.size() * sizeof(float));
-  unsigned char header[4];
-  std::memcpy(header, &bytes, 4);
-  append_base64(out, header, 4);
-  append_base64(out, reinterpret_cast<const unsigned char*>(values.data()), bytes);
-  out += "\n</DataArray>\n";
-}
 
 /// One point's row of the planes' CSV after its coordinate and depth.
 void append_row(std::string& out, double along, double depth, const SubsurfaceResult& f, std::size_t k,
@@ -67,15 +41,8 @@ std::string write_subsurface_vti(const std::string& dir, const std::vector<Subsu
   const std::vector<double>& d = first.depths;
   const double dz = d.size() > 1 ? (d.back() - d.front()) / static_cast<double>(d.size() - 1) : g.dx;
   const std::size_t n = g.size();
-  std::string out;
-  char head[512];
-  std::snprintf(head, sizeof head,
-                "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                "<ImageData WholeExtent=\"0 %d 0 %d 0 %zu\" Origin=\"%.9g %.9g %.9g\" Spacing=\"%.9g %.9g %.9g\">\n"
-                "<Piece Extent=\"0 %d 0 %d 0 %zu\">\n<PointData>\n",
-                g.nx - 1, g.ny - 1, d.size() - 1, g.xc(0), g.yc(0), d.front(), g.dx, g.dimension == 3 ? g.dy : g.dx, dz,
-                g.nx - 1, g.ny - 1, d.size() - 1);
-  out += head;
+  VtiImage image({g.nx, g.ny, static_cast<int>(d.size())}, {g.xc(0), g.yc(0), d.front()},
+                 {g.dx, g.dimension == 3 ? g.dy : g.dx, dz});
   // Voigt order (voigt_stress.hpp) from the field's components.
   const int voigt[6] = {kSxx, kSyy, kSzz, kSyz, kSxz, kSxy};
   std::vector<float> values;
@@ -85,19 +52,18 @@ std::string write_subsurface_vti(const std::string& dir, const std::vector<Subsu
     for (std::size_t k = 0; k < d.size(); ++k)
       for (std::size_t e = 0; e < n; ++e)
         for (int c : voigt) values.push_back(static_cast<float>(f.component(k, c)[e]));
-    append_array(out, b.name + "_stress", 6, values);
+    image.add(b.name + "_stress", 6, values);
     values.clear();
     for (std::size_t k = 0; k < d.size(); ++k)
       for (std::size_t e = 0; e < n; ++e)
         for (int c : {kUx, kUy, kUz}) values.push_back(static_cast<float>(f.component(k, c)[e]));
-    append_array(out, b.name + "_displacement", 3, values);
+    image.add(b.name + "_displacement", 3, values);
     for (const auto& [label, measure] : {std::pair{"_von_mises", &b.measures->von_mises}, {"_tresca", &b.measures->tresca}}) {
       values.assign(measure->begin(), measure->end());
-      append_array(out, b.name + label, 1, values);
+      image.add(b.name + label, 1, values);
     }
   }
-  out += "</PointData>\n</Piece>\n</ImageData>\n</VTKFile>\n";
-  write_file_whole((std::filesystem::path(dir) / name).string(), out);
+  write_file_whole((std::filesystem::path(dir) / name).string(), image.text());
   return name;
 }
 

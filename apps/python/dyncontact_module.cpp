@@ -18,8 +18,7 @@
 #include "blas_threads.hpp"
 #include "case_model.hpp"
 #include "errors.hpp"
-#include "fields_writer.hpp"
-#include "wear_writer.hpp"
+#include "static_field_files.hpp"
 #include "linear_operator.hpp"
 #include "module_common.hpp"
 #include "output_files.hpp"
@@ -64,14 +63,12 @@ StaticSolve solve_static_case(const Case& c, const py::object& out, bool progres
   runs::attach_result_limits(r.solved, r.summary);  // as `dyncontact solve` writes them
   r.advice = "; the result is in this exception's .result";
   if (folder.lock) {  // summary.json last: complete or absent
-    output::write_fields(folder.dir, r.solved.grid, r.run.fields.back(), "fields.csv", r.solved.output.power);
-    nlohmann::json files = {{"summary", "summary.json"}, {"fields", "fields.csv"}};
+    nlohmann::json files = {{"summary", "summary.json"}};
+    output::StaticFieldFiles surface{&r.run.fields, true, r.run.history, r.solved.output.power, &r.run.worn_base,
+                                     &r.run.worn_body};
+    output::write_static_field_files(folder.dir, r.solved.grid, surface, files, r.summary);
     if (series && series->count() > 0) files["subsurface_series"] = series->collection();
     if (r.run.subsurface) runs::write_subsurface_files(folder.dir, c, *r.run.subsurface, files);
-    if (!r.run.worn_base.empty() || !r.run.worn_body.empty()) {  // as `dyncontact solve` writes it
-      output::write_wear(folder.dir, r.solved.grid, r.run.worn_base, r.run.worn_body);
-      files["wear"] = "wear.csv";
-    }
     r.summary["files"] = files;
     output::write_summary(folder.dir, r.summary);
     r.advice = "; the results are written to " + folder.dir + " and are in this exception's .result";

@@ -18,6 +18,7 @@
 #include "energy_series.hpp"
 #include "exit_codes.hpp"
 #include "fe_body_estimate.hpp"
+#include "fields_vti.hpp"
 #include "fields_writer.hpp"
 #include "gnuplot_figures.hpp"
 #include "interrupt_handler.hpp"
@@ -159,6 +160,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   output::BodySnapshots body_series(dir);  // an fe_body: body_NNNN.vtu per snapshot and body.pvd
 #endif
   Grid grid = c.grid;  // of the run the snapshots are taken from (an accuracy target chooses it)
+  output::FieldsSnapshots surface_series(dir);  // fields_NNNN.vti per snapshot and fields.pvd
   DynamicSubsurface field(c);  // the snapshots' and the peak load's tractions, their field after the run
   DynamicTemperature temperature(c);  // the flash temperature at the snapshots
   const bool subsurface = field.wanted();
@@ -170,7 +172,8 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
       fields = dynamic_step_fields(grid, s.contact_state);
       temperature.observe(grid, s, fields);
       output::write_fields(dir, grid, fields, name);
-      json snapshot = {{"step", s.step}, {"time", s.state.time}, {"file", name}};
+      json snapshot = {{"step", s.step}, {"time", s.state.time}, {"file", name},
+                       {"image", surface_series.write(grid, fields, s.step, s.state.time)}};
 #ifdef DYNCONTACT_WITH_FE
       if (s.finite_body) snapshot["body"] = body_series.write(*s.finite_body, s.state);
 #endif
@@ -188,6 +191,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   json summary = out.summary;
   json files = {{"summary", "summary.json"}, {"timeseries", "timeseries.csv"}, {"energy", "energy.csv"}};
   if (!snapshots.empty()) files["snapshots"] = snapshots;
+  if (surface_series.count() > 0) files["fields_series"] = surface_series.collection();
   temperature.add_entries(summary);
   std::optional<SubsurfaceSeries> series;  // the field of the snapshots and the peak load, the worst of them
   if (subsurface && !r.interrupted) {

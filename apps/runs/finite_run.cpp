@@ -13,7 +13,7 @@
 #include "interrupt.hpp"
 
 #ifdef DYNCONTACT_WITH_FE
-#include "fields_writer.hpp"
+#include "static_field_files.hpp"
 #include "finite_contact.hpp"
 #include "plot_writer.hpp"
 #include "progress.hpp"
@@ -184,10 +184,8 @@ int run_finite(const Case& c, const std::string& dir, bool quiet) {
   const SolverReport& report = f.run.report;
   const FiniteContact& fc = *f.contact;
   nlohmann::json files = {{"summary", "summary.json"}, {"body", "body.vtu"}};
-  if (c.output.fields) {
-    output::write_fields(dir, c.grid, f.run.fields.back());
-    files["fields"] = "fields.csv";
-  }
+  output::StaticFieldFiles surface{&f.run.fields, c.output.fields};
+  output::write_static_field_files(dir, c.grid, surface, files, s);
   output::write_body_vtu((std::filesystem::path(dir) / "body.vtu").string(), fc.body().mesh(), f.body_u,
                  fc.body().element_stress(f.body_u));
   if (c.output.plots && !f.run.interrupted) {  // as for the local problems: the contact fields
