@@ -1,6 +1,6 @@
 // `dyncontact solve` of a dynamic case with a `sweep`: one run per value, spread over threads or
 // mpirun ranks with the same bytes, each run the same as the case run alone with that value,
-// summary.json with the runs; checked on Hertz impacts at two drop speeds (peak force grows as
+// summary.json with the runs and each run's energy_<k>.csv; checked on Hertz impacts at two drop speeds (peak force grows as
 // v^(6/5), Johnson 11.4). Bad sweep values name their key.
 #include <gtest/gtest.h>
 
@@ -83,6 +83,10 @@ TEST_F(CliDynamicSweep, RunsAreTheCaseAloneAndHertzPeaksScaleAsVToTheSixFifths) 
     const json alone_summary = json::parse(slurp(dir_ / "alone" / "summary.json"));
     EXPECT_EQ(run["energy"], alone_summary["energy"]);
     EXPECT_EQ(run["energy"]["dissipated"], 0.0);
+    // Its energy.csv too: the same bytes as the run alone's, named in files.energy beside its series.
+    const std::string energy = s["files"]["energy"][k].get<std::string>();
+    EXPECT_EQ(energy, "energy_" + std::to_string(k) + ".csv");
+    EXPECT_EQ(slurp(dir_ / "sweep" / energy), slurp(dir_ / "alone" / "energy.csv"));
   }
   // Hertz impact: F_max proportional to v^(6/5) (the same ball and materials); 16^2 elements
   // and 1 us steps resolve the peak to about 1 %.

@@ -49,7 +49,8 @@ bool is_result_file(const std::string& name) {
     for (const char* ext : {".svg", ".png"})
       if (name == std::string(f) + ext) return true;
   return numbered(name, "fields_", ".csv") || numbered(name, "timeseries_", ".csv") || numbered(name, "body_", ".vtu") ||
-         numbered(name, "subsurface_", ".vti") || numbered(name, "fields_", ".vti");
+         numbered(name, "subsurface_", ".vti") || numbered(name, "fields_", ".vti") ||
+         numbered(name, "energy_", ".csv");
 }
 
 OutputFolder open_output_folder(const Case& c, const std::string& cli_out, const std::string& out_key) {

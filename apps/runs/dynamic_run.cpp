@@ -264,8 +264,10 @@ int run_dynamic_sweep(const Case& c, const std::string& dir, bool quiet) {
   if (!out.root) return kExitOk;
   for (std::size_t k = 0; k < out.files.size(); ++k)
     output::write_file_whole((fs::path(dir) / out.files[k]).string(), out.texts[k]);
+  for (std::size_t k = 0; k < out.energy_files.size(); ++k)
+    output::write_file_whole((fs::path(dir) / out.energy_files[k]).string(), out.energy_texts[k]);
   json& summary = out.summary;
-  json files = {{"summary", "summary.json"}, {"timeseries", out.files}};
+  json files = {{"summary", "summary.json"}, {"timeseries", out.files}, {"energy", out.energy_files}};
   if (c.output.plots && !out.interrupted) {  // an interrupted sweep writes its data, not figures
     std::vector<std::pair<std::string, std::string>> runs;
     for (std::size_t k = 0; k < out.files.size(); ++k) runs.emplace_back(out.files[k], out.labels[k]);

@@ -31,6 +31,7 @@ DynamicSweepOutcome simulate_dynamic_sweep(const Case& c, bool quiet) {
         const DynamicOutcome run = simulate_dynamic_with_accuracy(points[k].run, false);
         return {{"summary", run.summary},
                 {"timeseries", run.timeseries},
+                {"energy", run.energy},
                 {"completed", run.result.completed},
                 {"interrupted", run.result.interrupted},
                 {"input_error", run.result.input_error}};
@@ -68,6 +69,8 @@ DynamicSweepOutcome simulate_dynamic_sweep(const Case& c, bool quiet) {
     runs.push_back(run);
     out.files.push_back(file);
     out.texts.push_back(u["timeseries"].get<std::string>());
+    out.energy_files.push_back("energy_" + std::to_string(k) + ".csv");
+    out.energy_texts.push_back(u["energy"].get<std::string>());
     out.labels.push_back(points[k].label);
     out.all_completed = out.all_completed && u["completed"].get<bool>();
     if (accuracy_target_missed(u["summary"])) out.targets_missed.push_back(points[k].label);

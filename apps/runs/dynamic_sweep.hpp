@@ -18,6 +18,7 @@ struct DynamicSweepOutcome {
   nlohmann::json summary;           ///< summary.json without "files": the sweep and its "runs"
   std::vector<std::string> files;   ///< timeseries file name of every run that ran
   std::vector<std::string> texts;   ///< their CSV texts
+  std::vector<std::string> energy_files, energy_texts;  ///< each run's energy audit: energy_<k>.csv and its text
   std::vector<std::string> labels;  ///< their labels ("key = value")
   bool all_completed = true;        ///< every run reached t_end
   bool interrupted = false;         ///< a signal stopped the sweep (the runs before it are kept)
