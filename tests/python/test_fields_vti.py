@@ -16,25 +16,12 @@ import pytest
 import dyncontact
 
 from example_cases import SOURCE, example
-
+from vtk_files import read_vti
 
 
 def binary():
     """The command line (ctest sets DYNCONTACT_BINARY; else the source tree's build/)."""
     return os.environ.get("DYNCONTACT_BINARY", os.path.join(SOURCE, "build", "bin", "dyncontact"))
-
-
-def read_vti(path):
-    vtk = pytest.importorskip("vtk")
-    from vtk.util.numpy_support import vtk_to_numpy
-
-    reader = vtk.vtkXMLImageDataReader()
-    reader.SetFileName(str(path))
-    reader.Update()
-    image = reader.GetOutput()
-    data = image.GetPointData()
-    arrays = {data.GetArrayName(k): vtk_to_numpy(data.GetArray(k)) for k in range(data.GetNumberOfArrays())}
-    return image, arrays
 
 
 def read_csv(path):

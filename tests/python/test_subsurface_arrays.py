@@ -11,6 +11,7 @@ import pytest
 import dyncontact
 
 from example_cases import example
+from vtk_files import read_vti
 
 
 def hertz_sphere(nx=65, extent=1.5):
@@ -81,20 +82,6 @@ def test_a_contact_cut_by_the_grid_raises_with_the_field():
         dyncontact.subsurface(case)
     assert e.value.key == "grid"
     assert e.value.result["bodies"]["base"]["stress"].shape == (32, 16, 16, 6)
-
-
-def read_vti(path):
-    """subsurface.vti through VTK's XML reader, as ParaView's Python opens it."""
-    vtk = pytest.importorskip("vtk")
-    from vtk.util.numpy_support import vtk_to_numpy
-
-    reader = vtk.vtkXMLImageDataReader()
-    reader.SetFileName(str(path))
-    reader.Update()
-    image = reader.GetOutput()
-    data = image.GetPointData()
-    arrays = {data.GetArrayName(k): vtk_to_numpy(data.GetArray(k)) for k in range(data.GetNumberOfArrays())}
-    return image, arrays
 
 
 @pytest.mark.parametrize("name", ["bearing-subsurface", "rail-shakedown"])
