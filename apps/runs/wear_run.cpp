@@ -17,6 +17,7 @@ struct WearUpdate {
   long long cycles_done = 0, jump = 0;
   double cycle_max_depth = 0.0, cycle_volume = 0.0, max_depth = 0.0, volume = 0.0;
   double max_pressure = 0.0, contact_area = 0.0;
+  double time_s = 0.0;  ///< the cycle's solves, its wear map and the profile update after it (s)
   std::vector<double> normal_force;  ///< each step of the cycle (N)
 };
 
@@ -125,6 +126,7 @@ StaticRun run_wear(const Case& c, bool progress) {
       update_gap(problem);
     }
     while (done < w.cycles) {
+      const auto cycle_start = std::chrono::steady_clock::now();
       cycle.clear();
       cycle_depth.assign(n, 0.0);
       solve_cycle(cycle);
@@ -151,8 +153,9 @@ StaticRun run_wear(const Case& c, bool progress) {
                          return v > std::max(c.solver.certificate_tol, 1e-12) * peak;
                        })) * c.grid.area();
       updates.push_back(std::move(u));
+      if (converged && done < w.cycles) update_gap(problem);
+      updates.back().time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - cycle_start).count();
       if (!converged) break;  // a cycle the solver failed on wears nothing more: reported as is
-      if (done < w.cycles) update_gap(problem);
     }
   } catch (const Interrupted&) {
     if (updates.empty()) throw;  // else: the cycles finished (interrupt_requested() says why no more)
@@ -195,7 +198,8 @@ StaticRun run_wear(const Case& c, bool progress) {
     history.push_back({{"cycles", u.cycles_done}, {"jump", u.jump}, {"cycle_max_depth", u.cycle_max_depth},
                        {"cycle_volume", u.cycle_volume},
                        {"max_depth", u.max_depth}, {"volume", u.volume}, {"max_pressure", u.max_pressure},
-                       {"contact_area", u.contact_area}, {"normal_force", u.normal_force}});
+                       {"contact_area", u.contact_area}, {"normal_force", u.normal_force},
+                       {"time_s", u.time_s}});
   j["history"] = history;
   if (done < w.cycles) j["cycles_requested"] = w.cycles;
   out.summary["wear"] = j;
