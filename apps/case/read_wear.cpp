@@ -26,8 +26,9 @@ long long positive_count(const JsonBlock& b, const char* k) {
 }  // namespace
 
 WearSpec read_wear(const json& j, const Case& c) {
-  if (c.problem != ProblemKind::tangential)
-    throw InputError("wear", std::string("computed for problem 'tangential' (a shift or torsion history), not '") +
+  if (c.problem != ProblemKind::tangential && c.problem != ProblemKind::dynamic)
+    throw InputError("wear", std::string("computed for problems 'tangential' (a shift or torsion history, steady "
+                                         "rolling) and 'dynamic', not '") +
                                  to_string(c.problem) + "'");
   JsonBlock w(j, "wear");
   w.allow({"law", "k", "hardness", "coefficient", "bodies", "cycles", "update", "cycle_from_step", "rolling_radius"});
@@ -67,10 +68,18 @@ WearSpec read_wear(const json& j, const Case& c) {
     if (u.has("max_depth")) s.update_max_depth = u.positive("max_depth");
     if (u.has("cycles")) s.update_cycles = positive_count(u, "cycles");
   }
+  if (c.accuracy.target) throw InputError("wear", "not with accuracy.target (the worn profile is on the case's grid)");
+  // A dynamic run wears over its own steps (apps/runs/dynamic_wear.hpp): no cycles to repeat.
+  if (c.problem == ProblemKind::dynamic) {
+    for (const char* k : {"cycles", "update", "cycle_from_step", "rolling_radius"})
+      if (w.has(k))
+        throw InputError(w.key(k), "belongs to a tangential case (a dynamic run wears over its own steps; its "
+                                   "rolling radius is body.radius)");
+    return s;
+  }
   // Where the wear applies: a shift or torsion history, or steady rolling, on the case's own grid.
   const TangentialSpec* t = c.tangential ? &*c.tangential : nullptr;
   if (!t) throw InputError("wear", "needs a tangential block: a shift or torsion history, or steady rolling");
-  if (c.accuracy.target) throw InputError("wear", "not with accuracy.target (the worn profile is on the case's grid)");
   if (t->regime == TangentialRegime::rolling) {
     if (t->has_history)
       throw InputError("wear", "computed for steady rolling or a shift or torsion history, not a rolling history "
