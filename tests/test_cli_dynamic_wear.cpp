@@ -2,7 +2,8 @@
 // wheel of wheel-drive rolling under a growing driving moment until it slides. Archard's volume
 // of both maps against k/(mu H) x the energy audit's dissipation (round-off), the track's wear
 // per unit length under every step against that step's dissipation over its travel (the frame
-// bookkeeping), growing with the slip; the input errors of a dynamic wear block.
+// bookkeeping), growing with the slip; the worn circumference raising the approach of the
+// following revolutions (the worn depth in the gap); the input errors of a dynamic wear block.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -71,7 +72,7 @@ TEST_F(CliDynamicWear, AWheelDrivenToSlidingWearsTheTrackWhereItSlipsByTheDissip
     EXPECT_NEAR(w.at(body).at("volume").get<double>() / (kK / (kMu * kH) * dissipated), 1.0, 1e-9) << body;
   EXPECT_EQ(s.at("files").at("wear"), "wear.csv");
   EXPECT_EQ(s.at("files").at("wear_body"), "wear_body.csv");
-  EXPECT_FALSE(w.at("gap_feedback").get<bool>());
+  EXPECT_TRUE(w.at("gap_feedback").get<bool>());  // the default
   // The body turned ~9.7 times over ~6 m (omega R ~ v until it slides).
   const json& final = s.at("final");
   EXPECT_NEAR(w.at("travel").get<double>(), final.at("position")[0].get<double>(), 1e-12);
@@ -124,6 +125,62 @@ TEST_F(CliDynamicWear, AWheelDrivenToSlidingWearsTheTrackWhereItSlipsByTheDissip
   EXPECT_FALSE(e.at("files").contains("wear"));
 }
 
+TEST_F(CliDynamicWear, AWheelsWornCircumferenceRaisesTheApproachByItsDepthOnceARevolution) {
+  // cylinder-dynamic-2d (R = 0.5 m, 60 kN/m, 10 m/s) under a constant driving moment 6750 N m/m:
+  // F = (2/3) M / R = 0.5 mu P, a steady creepage (-1.0058e-4) as it accelerates, so every step
+  // wears the wheel's circumference by the same depth per length, d = k/(mu H) W_k / (R omega dt),
+  // the track being fresh ahead. Force control in 2-D: a gap raised uniformly over the contact
+  // raises the approach by the same amount. With the worn depth in the gap (the default) the
+  // approach is the unworn run's during the first revolution, and then n d higher in revolution
+  // n + 1 (the contact's 2b = 2.4 mm against 0.2 m of arc per step; revolutions counted as
+  // sum omega_y dt, steps within 0.1 revolution of a boundary left out). timeseries.csv's 8
+  // digits of the approach: 1e-3 of d (k = 0.1: d = 1.45e-10 m).
+  json c = dc::test::example_json("cylinder-dynamic-2d");
+  c["output"] = {{"plots", false}};
+  c["loads"]["moment"]["y"] = {{"value", 6750.0}, {"rate", 0.0}};
+  c["time"]["t_end"] = 1.0;
+  const double k = 0.1, R = 0.5, dt = 0.02;
+  c["wear"] = {{"law", "archard"}, {"k", k}, {"hardness", kH}, {"bodies", {"body"}}};
+  const json worn = solve(c);
+  ASSERT_EQ(worn.at("status"), "completed");
+  EXPECT_TRUE(worn.at("wear").at("gap_feedback").get<bool>());
+  const auto series = csv_rows(slurp(dir_ / "out" / "timeseries.csv"));
+  const auto energy = csv_rows(slurp(dir_ / "out" / "energy.csv"));
+  c["wear"]["gap_feedback"] = false;
+  const json plain = solve(c);
+  EXPECT_FALSE(plain.at("wear").at("gap_feedback").get<bool>());
+  const auto unworn = csv_rows(slurp(dir_ / "out" / "timeseries.csv"));
+  ASSERT_EQ(series.size(), unworn.size());
+  auto step_depth = [&](std::size_t s) {
+    const double work = energy[s + 1].at("dissipated") - energy[s].at("dissipated");
+    return k / (kMu * kH) * work / (R * series[s].at("wy") * dt);
+  };
+  const double d = step_depth(5);  // steady from the third step
+  double turns = 0.0;
+  int checked[4] = {};
+  for (std::size_t s = 0; s < series.size(); ++s) {
+    turns += series[s].at("wy") * dt / (2.0 * M_PI);
+    if (s > 2) {
+      EXPECT_NEAR(step_depth(s) / d, 1.0, 1e-6) << "step " << s + 1;
+    }
+    const double fraction = turns - std::floor(turns);
+    if (fraction < 0.1 || fraction > 0.9) continue;
+    const int n = static_cast<int>(std::floor(turns));
+    const double rise = series[s].at("approach") - unworn[s].at("approach");
+    if (n == 0) {
+      EXPECT_EQ(rise, 0.0) << "step " << s + 1;
+    } else {
+      EXPECT_NEAR(rise / (n * d), 1.0, 1e-3) << "step " << s + 1 << ", revolution " << n + 1;
+    }
+    if (n < 4) ++checked[n];
+  }
+  for (int n = 0; n < 3; ++n) EXPECT_GE(checked[n], 8) << "revolution " << n + 1;
+  // The worn wheel's volume is still k/(mu H) x the dissipated energy.
+  EXPECT_NEAR(worn.at("wear").at("body").at("volume").get<double>() /
+                  (k / (kMu * kH) * worn.at("energy").at("dissipated").get<double>()),
+              1.0, 1e-9);
+}
+
 TEST_F(CliDynamicWear, BadDynamicWearBlocksAreInputErrorsNamingTheKey) {
   const json law = {{"law", "archard"}, {"k", kK}, {"hardness", kH}};
   for (const char* key : {"cycles", "update", "cycle_from_step", "rolling_radius"}) {
@@ -141,6 +198,16 @@ TEST_F(CliDynamicWear, BadDynamicWearBlocksAreInputErrorsNamingTheKey) {
   json fe = dc::test::example_json("fe-hemisphere-drop");
   fe["wear"] = law;
   expect_input_error("validate " + write_case(fe), "wear");
+  // The worn gap with an accuracy estimate (its coarser runs would wear too); a history's key.
+  json estimate = wheel(law);
+  estimate["accuracy"] = {{"estimate", true}};
+  expect_input_error("validate " + write_case(estimate), "wear.gap_feedback");
+  json history = dc::test::example_json("cattaneo-sphere");
+  history["tangential"] = {{"regime", "shift"}, {"history", {{{"force", {-15.0, 0.0}}}, {{"force", {15.0, 0.0}}}}}};
+  json w = law;
+  w["gap_feedback"] = false;
+  history["wear"] = w;
+  expect_input_error("validate " + write_case(history), "wear.gap_feedback");
 }
 
 }  // namespace cli_dynamic_wear_test

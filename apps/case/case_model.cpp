@@ -212,6 +212,9 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
     if (fe) throw InputError("wear", "a dynamic run's wear is computed for a rigid profile, not an fe_body");
     if (top.has("sweep")) throw InputError("wear", "computed for single runs, not a sweep's (run the values one by one)");
     if (!c.friction) throw InputError("wear", "needs friction (the laws wear by the slip)");
+    if (c.wear->gap_feedback && c.accuracy.estimate)
+      throw InputError("wear.gap_feedback", "not with accuracy.estimate (its coarser runs would wear the same "
+                                            "surfaces): set it false, or the estimate off");
   }
   if ((required("grid") || c.accuracy.target) && !fe) {
     if (!has_profile) throw InputError("profile", "missing required key (the grid needs a profile)");

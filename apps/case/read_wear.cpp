@@ -31,7 +31,7 @@ WearSpec read_wear(const json& j, const Case& c) {
                                          "rolling) and 'dynamic', not '") +
                                  to_string(c.problem) + "'");
   JsonBlock w(j, "wear");
-  w.allow({"law", "k", "hardness", "coefficient", "bodies", "cycles", "update", "cycle_from_step", "rolling_radius"});
+  w.allow({"law", "k", "hardness", "coefficient", "bodies", "cycles", "update", "cycle_from_step", "rolling_radius", "gap_feedback"});
   WearSpec s;
   if (!w.has("law")) throw InputError(w.key("law"), "required: \"archard\" or \"energy\"");
   const std::string law = w.choice("law", "", {"archard", "energy"});
@@ -75,8 +75,12 @@ WearSpec read_wear(const json& j, const Case& c) {
       if (w.has(k))
         throw InputError(w.key(k), "belongs to a tangential case (a dynamic run wears over its own steps; its "
                                    "rolling radius is body.radius)");
+    s.gap_feedback = w.boolean_or("gap_feedback", true);
     return s;
   }
+  if (w.has("gap_feedback"))
+    throw InputError(w.key("gap_feedback"), "belongs to a dynamic run (a history's and steady rolling's worn depth "
+                                            "always enters the gap)");
   // Where the wear applies: a shift or torsion history, or steady rolling, on the case's own grid.
   const TangentialSpec* t = c.tangential ? &*c.tangential : nullptr;
   if (!t) throw InputError("wear", "needs a tangential block: a shift or torsion history, or steady rolling");

@@ -24,6 +24,9 @@ struct WearSpec {
   /// default the profile's 1/(2A) of h ~ A x^2 + B y^2): a cycle is one revolution, a travel of
   /// 2 pi R, and the track is passed once per cycle. 0 for a history.
   double rolling_radius = 0.0;
+  /// A dynamic run (wear.gap_feedback, a project extension, default true): the worn depth under
+  /// the contact enters the gap (2.6) of the following steps; false: reported only.
+  bool gap_feedback = true;
 };
 
 }  // namespace dc

@@ -107,7 +107,11 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
           field.observe(grid, s, nullptr);
         }
       };
-    out = runs::simulate_dynamic_with_accuracy(c, progress, observe, &grid);
+    if (wear.feeds_back())  // the worn depth in the gap (build_case refuses it with an accuracy estimate)
+      out = runs::simulate_dynamic(c, progress, observe,
+                                   [&wear](const dynamics::StepKinematics& k, std::vector<double>& depth) { wear.worn_depth(k, depth); });
+    else
+      out = runs::simulate_dynamic_with_accuracy(c, progress, observe, &grid);
     temperature.add_entries(out.summary);
     wear.add_entries(out.summary);
     if (!out.result.interrupted) field.add_entries(grid, {}, out.summary);

@@ -64,7 +64,8 @@ json energy_json(const dynamics::DynamicResult& r) {
 }  // namespace
 
 DynamicOutcome simulate_dynamic(const Case& c, bool progress,
-                                const std::function<void(const dynamics::DynamicSample&)>& on_step) {
+                                const std::function<void(const dynamics::DynamicSample&)>& on_step,
+                                const dynamics::ContactWrench::WornGap& worn_gap) {
   DynamicOutcome out;
   check_fe_body_fits(c);
 #ifdef DYNCONTACT_WITH_FE
@@ -72,6 +73,7 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
 #else
   dynamics::DynamicSimulation sim(c);  // an fe_body: an input error saying how to build with it
 #endif
+  if (worn_gap) sim.set_worn_gap(worn_gap);
   std::ostringstream series, energy;
   series << output::kTimeseriesColumns;
   const auto start = std::chrono::steady_clock::now();
@@ -183,8 +185,13 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
     }
     field.observe(grid, s, kept);
   };
-  const DynamicOutcome out = simulate_dynamic_with_accuracy(
-      c, !quiet, every > 0 || subsurface || wear.wanted() ? std::function(write_snapshot) : nullptr, &grid);
+  // A worn gap (wear.gap_feedback; build_case refuses it with an accuracy estimate): one run.
+  const DynamicOutcome out =
+      wear.feeds_back()
+          ? simulate_dynamic(c, !quiet, write_snapshot,
+                             [&wear](const dynamics::StepKinematics& k, std::vector<double>& depth) { wear.worn_depth(k, depth); })
+          : simulate_dynamic_with_accuracy(
+                c, !quiet, every > 0 || subsurface || wear.wanted() ? std::function(write_snapshot) : nullptr, &grid);
   const dynamics::DynamicResult& r = out.result;
   const double elapsed = out.elapsed;
   output::write_file_whole((fs::path(dir) / "timeseries.csv").string(), out.timeseries);

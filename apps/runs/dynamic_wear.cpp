@@ -126,6 +126,36 @@ void DynamicWear::observe(const Grid& grid, const dynamics::DynamicSample& s) {
     }
 }
 
+double DynamicWear::sample(const Cells& cells, double at, int j, int ny) {
+  if (cells.count == 0) return 0.0;
+  const double u = at / cells.width - 0.5, k0 = std::floor(u), f = u - k0;
+  auto depth = [&](long long k) {
+    if (cells.wrap > 0) k = ((k % cells.wrap) + cells.wrap) % cells.wrap;
+    else if (k < cells.first || k >= cells.first + cells.count) return 0.0;
+    return cells.depth[static_cast<std::size_t>((k - cells.first) * ny + j)];
+  };
+  const long long k = static_cast<long long>(k0);
+  return (1.0 - f) * depth(k) + f * depth(k + 1);
+}
+
+void DynamicWear::worn_depth(const dynamics::StepKinematics& k, std::vector<double>& depth) const {
+  depth.assign(grid_.size(), 0.0);
+  if (!wanted()) return;
+  const WearSpec& w = *case_.wear;
+  // The trial's rotation about y from the last accepted one (as observe unwraps it).
+  const double angle = 2.0 * std::atan2(k.orientation.y(), k.orientation.w());
+  const double phi = phi_ + std::remainder(angle - last_angle_, 2.0 * M_PI), R = case_.dynamic->radius;
+  const double xc = k.position.x();
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = 0; i < grid_.nx; ++i) {
+      const double x = grid_.xc(i);
+      double d = 0.0;
+      if (w.base) d += sample(base_, xc + x, j, grid_.ny);
+      if (w.body) d += sample(body_, R * phi + x, j, grid_.ny);
+      depth[grid_.index(i, j)] = d;
+    }
+}
+
 WornStrip DynamicWear::strip(const Cells& cells) const {
   WornStrip out;
   if (cells.count == 0) return out;
@@ -151,7 +181,7 @@ void DynamicWear::add_entries(nlohmann::json& summary) const {
                       {"cycles", std::abs(phi_) / (2.0 * M_PI)},  // the body's revolutions
                       {"travel", x_end_ - x_start_},
                       {"rolling_radius", case_.dynamic->radius},
-                      {"gap_feedback", false}};
+                      {"gap_feedback", w.gap_feedback}};
   if (w.base) {
     const WornStrip b = base();
     j["base"] = {{"max_depth", b.max_depth()}, {"volume", b.volume()}, {"frame", "world x along the track"},

@@ -18,8 +18,11 @@
 // at most 16384, round the circumference) by overlap, which keeps the
 // volume: a steady-rolling step travelling many contact lengths wears the whole path, as steady
 // rolling's pass does (wear_run.hpp); a body that does not move wears in place (the two cells
-// around the centre, shared linearly). The worn depth is reported, not fed back into the
-// following steps' gap.
+// around the centre, shared linearly). With wear.gap_feedback (default) the worn depth enters the
+// gap (2.6) of the following steps: at every evaluation of a step the contact grid samples both
+// maps (linear between cell centres) at the trial position and rotation (worn_depth), their sum
+// added to the body's gap (dynamics::ContactWrench::set_worn_gap); the step's own wear is added
+// when it is accepted.
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -45,6 +48,10 @@ class DynamicWear {
   bool wanted() const { return case_.wear.has_value(); }
   /// Every accepted step: its wear added to both maps.
   void observe(const Grid& grid, const dynamics::DynamicSample& s);
+  /// wear.gap_feedback: the worn depth enters the following steps' gap.
+  bool feeds_back() const { return wanted() && case_.wear->gap_feedback; }
+  /// Both maps' depth under each grid element at trial kinematics k (m, summed), for the gap.
+  void worn_depth(const dynamics::StepKinematics& k, std::vector<double>& depth) const;
   /// summary["wear"]: law, base / body {max_depth, volume}, cycles (the body's revolutions),
   /// travel (m), rolling_radius, the frames.
   void add_entries(nlohmann::json& summary) const;
@@ -63,6 +70,8 @@ class DynamicWear {
   };
   /// Adds the volume per unit y `volume` of an element whose centre went from a to b in row j.
   void deposit(Cells& cells, double a, double b, int j, double volume);
+  /// The depth at `at` in row j, linear between cell centres (0 off the track).
+  static double sample(const Cells& cells, double at, int j, int ny);
   WornStrip strip(const Cells& cells) const;
   const Case& case_;
   Cells base_, body_;
