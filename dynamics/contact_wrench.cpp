@@ -92,11 +92,25 @@ void ContactWrench::orient(const StepKinematics& k) {
     heights = &finite_->heights();
   }
   if (gap_) {
-    if (!gap_->update(k.orientation, k.time)) return;
+    const bool turned = gap_->update(k.orientation, k.time);
     heights = &gap_->heights();
+    if (worn_gap_) {  // the worn depth under the contact at k (it moves with the body: every trial)
+      worn_gap_(k, worn_depth_);
+      worn_heights_.resize(heights->size());
+      for (std::size_t e = 0; e < heights->size(); ++e)
+        worn_heights_[e] = (*heights)[e] + (e < worn_depth_.size() ? worn_depth_[e] : 0.0);
+      heights = &worn_heights_;
+    } else if (!turned) {
+      return;
+    }
   }
   if (tangential_) tangential_->set_heights(*heights);
   if (normal_) normal_->set_heights(*heights);
+}
+
+const std::vector<double>& ContactWrench::heights() const {
+  if (finite_) return finite_->heights();
+  return worn_gap_ && !worn_heights_.empty() ? worn_heights_ : gap_->heights();
 }
 
 Wrench ContactWrench::evaluate(const StepKinematics& k, double vertical_load) {
@@ -332,7 +346,7 @@ void ContactWrench::evaluate_at(const StepKinematics& k, double vertical_load) {
 
 double ContactWrench::contact_function() const {
   if (spec_.normal_model == NormalModel::quasi_static) return std::numeric_limits<double>::quiet_NaN();
-  const std::vector<double>& heights = finite_ ? finite_->heights() : gap_->heights();
+  const std::vector<double>& heights = this->heights();
   const double lowest = heights.empty() ? 0.0 : *std::min_element(heights.begin(), heights.end());
   return centre_height() - last_.position.z() - lowest;
 }
@@ -349,7 +363,7 @@ void ContactWrench::audit_energy() {
   // body, and the normal part of the stored energy (with the kappa coupling's share) is left out
   // of the audit with it.
   const bool with_normal = spec_.normal_model == NormalModel::dynamic;
-  const std::vector<double>& heights = finite_ ? finite_->heights() : gap_->heights();
+  const std::vector<double>& heights = this->heights();
   static const std::vector<double> none;
   state_.elastic_energy = elastic_energy(
       state_.pressure, heights, state_.approach, with_normal, tangential_ ? solution_.tx : none,

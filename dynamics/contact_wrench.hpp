@@ -6,6 +6,7 @@
 // the memory of the previous step carried over the step's travel (V_x dt, V_y dt), and the resultant force
 // and moment about the centre of mass. The memory is committed only when the step is accepted.
 // Operators and plans are set up once (constructor); solves are warm-started from the last.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -53,6 +54,12 @@ class ContactWrench {
   /// with an fe_body, `finite` its body (finite_body.hpp; InputError("fe_body") when null).
   explicit ContactWrench(const DynamicContactSpec& c, std::unique_ptr<FiniteBody> finite = nullptr);
   ~ContactWrench();
+
+  /// The worn depth (m, both bodies summed) on the grid at trial kinematics k, written into
+  /// `depth` (one per element): it is added to the body's undeformed gap (2.6) at every
+  /// evaluation (a rigid profile's; wear over a dynamic run, apps/runs/dynamic_wear.hpp).
+  using WornGap = std::function<void(const StepKinematics& k, std::vector<double>& depth)>;
+  void set_worn_gap(WornGap worn) { worn_gap_ = std::move(worn); }
 
   /// Starts a step of length dt at time t (the memory of the accepted state is kept).
   void begin_step(double dt);
@@ -102,11 +109,15 @@ class ContactWrench {
   void orient(const StepKinematics& k);
   /// Height of the centre of mass over the body's lowest point (the approach's reference).
   double centre_height() const;
+  /// The gap the problems hold: the body's (or fe_body's), plus the worn depth when set.
+  const std::vector<double>& heights() const;
 
   const DynamicContactSpec& case_;
   const DynamicSpec& spec_;
   SolverOptions solver_;
   std::optional<BodyGap> gap_;                     // the profile's gap (rigid-body profile)
+  WornGap worn_gap_;                               // the worn depth added to it (none: unworn)
+  std::vector<double> worn_depth_, worn_heights_;  // its last value, and gap_ + it
   std::unique_ptr<FiniteBody> finite_;             // or the fe_body's (finite contact in each step)
   std::unique_ptr<NormalProblem> own_normal_;
   std::unique_ptr<TangentialProblem> own_tangential_;

@@ -102,6 +102,8 @@ class DynamicSimulation {
   /// non-convergence, an interrupt or input a step cannot take: the result says where and why
   /// it stopped, with the steps before it, and its result limits (DynamicResult::limits).
   DynamicResult run(const std::function<void(const DynamicSample&)>& on_step);
+  /// The worn depth added to the body's gap at every evaluation (ContactWrench::set_worn_gap).
+  void set_worn_gap(ContactWrench::WornGap worn) { contact_.set_worn_gap(std::move(worn)); }
 
   const RigidBody& body() const { return stepper_.body(); }
   /// The applied force and moment at time t (loads: value + rate t).

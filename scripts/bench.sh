@@ -45,7 +45,10 @@
 #                               p0 against Hertz (medians of --repeat runs; docs/finite.md)
 #   scripts/bench.sh wear       one thread: 1e5 fretting cycles of a 64^2 sphere with cycle jumping
 #                               (examples/bench/fretting-sphere-wear.json): time, profile updates,
-#                               worn depth and volume; exit 1 beyond 60 s (docs/wear_energy.md "Wear")
+#                               worn depth and volume; exit 1 beyond 60 s (docs/wear_energy.md "Wear");
+#                               then one rolling pass with wear update of a 64^2 sphere
+#                               (examples/bench/rolling-sphere-wear.json, the mean of 20 passes)
+#                               against one steady rolling solve of the same case: exit 1 beyond 2x
 # --sizes/--backends override the defaults; other arguments go to dyncontact_bench (e.g. --repeat 3, --force, --csv out/bench.csv).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -113,6 +116,23 @@ print(f"fretting-sphere-wear 64^2: {w['cycles']} cycles in {sys.argv[2]} s, {w['
       f"max depth {w['base']['max_depth']:.3g} m, volume {w['base']['volume']:.3g} m^3 per body")
 PY
   awk -v s="$seconds" 'BEGIN { exit !(s <= 60) }' || { echo "bench: wear took $seconds s (target <= 60 s)" >&2; exit 1; }
+  # One rolling pass with wear update (its steady solve on the worn gap, the row integrals, the gap
+  # update: wear.history's time_s) against the steady solve of the case without its wear block.
+  rolling=examples/bench/rolling-sphere-wear.json
+  /usr/bin/env python3 -c 'import json, sys; c = json.load(open(sys.argv[1])); del c["wear"]; json.dump(c, open(sys.argv[2], "w"))' \
+    "$rolling" "$out/rolling-plain.json"
+  DYNCONTACT_THREADS=1 "$BUILD_DIR/bin/dyncontact" solve "$rolling" --out "$out/rolling-wear" -q >/dev/null
+  DYNCONTACT_THREADS=1 "$BUILD_DIR/bin/dyncontact" solve "$out/rolling-plain.json" --out "$out/rolling-plain" -q >/dev/null
+  /usr/bin/env python3 - "$out/rolling-wear/summary.json" "$out/rolling-plain/summary.json" <<'PY'
+import json, sys
+h = json.load(open(sys.argv[1]))["wear"]["history"]
+plain = json.load(open(sys.argv[2]))["solver"]["time_s"]
+per_pass = sum(u["time_s"] for u in h) / len(h)
+ratio = per_pass / plain
+print(f"rolling-sphere-wear 64^2: one pass with wear update {per_pass:.3f} s (mean of {len(h)}; first {h[0]['time_s']:.3f} s), "
+      f"steady rolling solve {plain:.3f} s: ratio {ratio:.2f} (target <= 2)")
+sys.exit(0 if ratio <= 2.0 else 1)
+PY
   exit 0
 fi
 if [[ "${1:-}" == "finite" ]]; then

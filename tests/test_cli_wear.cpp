@@ -407,9 +407,9 @@ TEST_F(CliWear, BadWearBlocksAreInputErrorsNamingTheKey) {
       {{{"wear", {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"cycle_from_step", 3}}}}, "wear.cycle_from_step"},
       {{{"wear", {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"speed", 1}}}}, "wear.speed"},
       {{{"wear", 3}}, "wear"},
-      // Where it does not apply: one step without a history, a rolling one, the normal problem.
+      // Where it does not apply: one step without a history, the normal problem (rolling:
+      // test_cli_rolling_wear.cpp).
       {{{"tangential", {{"regime", "shift"}, {"force", {-15.0, 0.0}}, {"history", nullptr}}}}, "wear"},
-      {{{"tangential", {{"regime", "rolling"}, {"creepage", {1e-3, 0.0}}, {"history", nullptr}}}}, "wear"},
       {{{"problem", "normal"}, {"tangential", nullptr}, {"friction", nullptr}}, "wear"},
       {{{"accuracy", {{"estimate", true}, {"target", 1e-3}}}}, "wear"},
   };

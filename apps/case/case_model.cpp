@@ -61,7 +61,7 @@ const std::vector<BlockUse>& block_uses() {
       {"accuracy", {P::normal, P::tangential, P::dynamic}},
       {"subsurface", {P::normal, P::tangential, P::dynamic}},
       {"shakedown", {P::normal, P::tangential}},
-      {"wear", {P::tangential}},
+      {"wear", {P::tangential, P::dynamic}},
       {"temperature", {P::tangential, P::dynamic}},
   };
   return uses;
@@ -208,6 +208,14 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
     if (!has_normal && !fe) has_normal = dynamics::dynamic_sizing_load(*c.dynamic, c, c.normal);
   }
   if (fe) read_finite_blocks(document, c, base_dir);  // read_fe_body.cpp
+  if (c.wear && c.problem == ProblemKind::dynamic) {  // the body's circumference is body.radius's
+    if (fe) throw InputError("wear", "a dynamic run's wear is computed for a rigid profile, not an fe_body");
+    if (top.has("sweep")) throw InputError("wear", "computed for single runs, not a sweep's (run the values one by one)");
+    if (!c.friction) throw InputError("wear", "needs friction (the laws wear by the slip)");
+    if (c.wear->gap_feedback && c.accuracy.estimate)
+      throw InputError("wear.gap_feedback", "not with accuracy.estimate (its coarser runs would wear the same "
+                                            "surfaces): set it false, or the estimate off");
+  }
   if ((required("grid") || c.accuracy.target) && !fe) {
     if (!has_profile) throw InputError("profile", "missing required key (the grid needs a profile)");
     // An accuracy target sizes the grid itself: the block (its extent or bounds) is optional.

@@ -66,7 +66,7 @@ struct Case : DynamicContactSpec {
   BodyYields yields;                                ///< materials.*.yield (problems normal, tangential)
   BodyFatigue fatigue;                              ///< materials.*.fatigue (problems normal, tangential)
   bool shakedown = false;                           ///< "shakedown": Melan's limit of the rolling load
-  std::optional<WearSpec> wear;                     ///< "wear": a shift or torsion history's worn profile
+  std::optional<WearSpec> wear;                     ///< "wear": a history's, steady rolling's or a dynamic run's worn depth
   ThermalSpec thermal;                              ///< materials.*.thermal, "temperature" (rolling: the flash temperature)
   std::vector<std::string> blocks;  ///< the top-level keys the case file gave
   nlohmann::json source;            ///< the (overridden) JSON the case was read from (sweeps re-read it)

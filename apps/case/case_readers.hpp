@@ -63,8 +63,8 @@ void check_contact_in_grid(const Case& c);
 TangentialSpec read_tangential(const nlohmann::json& j, int dimension, const NormalSpec& normal);
 
 /// "wear" of case `c` (its problem, tangential block and accuracy already read): the law,
-/// bodies, cycles, update and cycle_from_step. A case it cannot apply to (not a shift or
-/// torsion history) is an InputError naming "wear".
+/// bodies, cycles, update, cycle_from_step and rolling_radius. A case it cannot apply to (not a
+/// shift or torsion history, steady rolling or a dynamic run) is an InputError naming "wear".
 WearSpec read_wear(const nlohmann::json& j, const Case& c);
 
 /// The dynamic blocks of `document` (body, loads, time, normal_model, contact_model); `c` holds

@@ -1,12 +1,14 @@
 // The "wear" block (CASES.md): the law, the bodies, the number of cycles, how often the
-// profile is updated, and (project extension) the step the repeated cycle starts from. It
-// applies to a shift or torsion history (the grid does not move: both worn depths are maps on
-// it); anywhere else it is an error naming "wear".
+// profile is updated, and (project extensions) the step the repeated cycle starts from and the
+// rolling radius. It applies to a shift or torsion history (the grid does not move: both worn
+// depths are maps on it) and to steady rolling (each pass wears the track and the body's
+// circumference along the rows: a map uniform in x); anywhere else it is an error naming "wear".
 #include <string>
 
 #include "case_readers.hpp"
 #include "errors.hpp"
 #include "json_block.hpp"
+#include "profile.hpp"
 
 namespace dc {
 
@@ -24,11 +26,12 @@ long long positive_count(const JsonBlock& b, const char* k) {
 }  // namespace
 
 WearSpec read_wear(const json& j, const Case& c) {
-  if (c.problem != ProblemKind::tangential)
-    throw InputError("wear", std::string("computed for problem 'tangential' (a shift or torsion history), not '") +
+  if (c.problem != ProblemKind::tangential && c.problem != ProblemKind::dynamic)
+    throw InputError("wear", std::string("computed for problems 'tangential' (a shift or torsion history, steady "
+                                         "rolling) and 'dynamic', not '") +
                                  to_string(c.problem) + "'");
   JsonBlock w(j, "wear");
-  w.allow({"law", "k", "hardness", "coefficient", "bodies", "cycles", "update", "cycle_from_step"});
+  w.allow({"law", "k", "hardness", "coefficient", "bodies", "cycles", "update", "cycle_from_step", "rolling_radius", "gap_feedback"});
   WearSpec s;
   if (!w.has("law")) throw InputError(w.key("law"), "required: \"archard\" or \"energy\"");
   const std::string law = w.choice("law", "", {"archard", "energy"});
@@ -65,12 +68,45 @@ WearSpec read_wear(const json& j, const Case& c) {
     if (u.has("max_depth")) s.update_max_depth = u.positive("max_depth");
     if (u.has("cycles")) s.update_cycles = positive_count(u, "cycles");
   }
-  // Where the wear applies: a shift or torsion history solved on the case's own grid.
-  const TangentialSpec* t = c.tangential ? &*c.tangential : nullptr;
-  if (!t || t->regime == TangentialRegime::rolling)
-    throw InputError("wear", "computed for a shift or torsion history, not a rolling one (the worn surface would move)");
-  if (!t->has_history) throw InputError("wear", "needs a load cycle: tangential.history (its steps are one cycle)");
   if (c.accuracy.target) throw InputError("wear", "not with accuracy.target (the worn profile is on the case's grid)");
+  // A dynamic run wears over its own steps (apps/runs/dynamic_wear.hpp): no cycles to repeat.
+  if (c.problem == ProblemKind::dynamic) {
+    for (const char* k : {"cycles", "update", "cycle_from_step", "rolling_radius"})
+      if (w.has(k))
+        throw InputError(w.key(k), "belongs to a tangential case (a dynamic run wears over its own steps; its "
+                                   "rolling radius is body.radius)");
+    s.gap_feedback = w.boolean_or("gap_feedback", true);
+    return s;
+  }
+  if (w.has("gap_feedback"))
+    throw InputError(w.key("gap_feedback"), "belongs to a dynamic run (a history's and steady rolling's worn depth "
+                                            "always enters the gap)");
+  // Where the wear applies: a shift or torsion history, or steady rolling, on the case's own grid.
+  const TangentialSpec* t = c.tangential ? &*c.tangential : nullptr;
+  if (!t) throw InputError("wear", "needs a tangential block: a shift or torsion history, or steady rolling");
+  if (t->regime == TangentialRegime::rolling) {
+    if (t->has_history)
+      throw InputError("wear", "computed for steady rolling or a shift or torsion history, not a rolling history "
+                               "(transient rolling: not yet)");
+    if (w.has("cycle_from_step")) throw InputError(w.key("cycle_from_step"), "belongs to a history (a rolling pass has no steps)");
+    if (w.has("rolling_radius")) {
+      s.rolling_radius = w.positive("rolling_radius");
+    } else {
+      double A = 0.0, B = 0.0;
+      try {
+        c.profile.quadratic_coefficients(A, B);
+      } catch (const InputError&) {
+        A = 0.0;
+      }
+      if (!(A > 0.0))
+        throw InputError(w.key("rolling_radius"), "required: the profile has no curvature along x to give the rolling "
+                                                  "radius (m, > 0; a cycle is one revolution)");
+      s.rolling_radius = 0.5 / A;
+    }
+    return s;
+  }
+  if (w.has("rolling_radius")) throw InputError(w.key("rolling_radius"), "belongs to steady rolling");
+  if (!t->has_history) throw InputError("wear", "needs a load cycle: tangential.history (its steps are one cycle)");
   const int steps = static_cast<int>(t->history.size());
   if (w.has("cycle_from_step")) {
     s.cycle_from_step = w.integer("cycle_from_step");

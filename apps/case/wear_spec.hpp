@@ -1,7 +1,7 @@
 #pragma once
 // The "wear" block (CASES.md): a local wear law (core/wear_law.hpp) applied over a repeated
-// load cycle of a shift or torsion history, the worn depth added to the gap (2.6) between
-// profile updates (apps/runs/wear_run.hpp).
+// load cycle of a shift or torsion history, or over repeated passes of steady rolling, the worn
+// depth added to the gap (2.6) between profile updates (apps/runs/wear_run.hpp).
 #include <vector>
 
 #include "wear_law.hpp"
@@ -20,6 +20,13 @@ struct WearSpec {
   /// wear.cycle_from_step (project extension): the history's steps before it are solved once
   /// (the first loading), those from it on form the repeated cycle. Default 0: every step.
   int cycle_from_step = 0;
+  /// Steady rolling: the body's rolling radius R (m; wear.rolling_radius, a project extension,
+  /// default the profile's 1/(2A) of h ~ A x^2 + B y^2): a cycle is one revolution, a travel of
+  /// 2 pi R, and the track is passed once per cycle. 0 for a history.
+  double rolling_radius = 0.0;
+  /// A dynamic run (wear.gap_feedback, a project extension, default true): the worn depth under
+  /// the contact enters the gap (2.6) of the following steps; false: reported only.
+  bool gap_feedback = true;
 };
 
 }  // namespace dc

@@ -12,9 +12,9 @@
 namespace dc::output {
 
 std::string write_wear(const std::string& dir, const Grid& grid, const std::vector<double>& base,
-                       const std::vector<double>& body) {
-  const std::string path = (std::filesystem::path(dir) / "wear.csv").string();
-  std::string text = "x,y";
+                       const std::vector<double>& body, const std::string& file, const std::string& x_name) {
+  const std::string path = (std::filesystem::path(dir) / file).string();
+  std::string text = x_name + ",y";
   if (!base.empty()) text += ",base";
   if (!body.empty()) text += ",body";
   text += '\n';
@@ -41,30 +41,31 @@ std::string write_wear(const std::string& dir, const Grid& grid, const std::vect
 }
 
 GnuplotFigure wear_figure(const std::string& dir, const std::string& case_name, const Grid& grid,
-                          const std::vector<double>& base, const std::vector<double>& body) {
+                          const std::vector<double>& base, const std::vector<double>& body, const std::string& name,
+                          const std::string& x_label) {
   const int j0 = grid.dimension == 2 ? 0
                                      : std::clamp(static_cast<int>(std::floor((0.0 - grid.y0) / grid.dy)), 0, grid.ny - 1);
   auto at = [](const std::vector<double>& v, std::size_t e) { return e < v.size() ? v[e] : 0.0; };
   std::ostringstream data;
-  data << "# x base body (m; row j = " << j0 << ")\n";
+  data << "# " << x_label << " base body (m; row j = " << j0 << ")\n";
   for (int i = 0; i < grid.nx; ++i) {
     const std::size_t e = grid.index(i, j0);
     data << gnuplot_number(grid.xc(i)) << ' ' << gnuplot_number(at(base, e)) << ' ' << gnuplot_number(at(body, e)) << '\n';
   }
-  write_file_whole((std::filesystem::path(dir) / "wear_x.dat").string(), data.str());
+  write_file_whole((std::filesystem::path(dir) / (name + ".dat")).string(), data.str());
   std::ostringstream b;
-  b << "set grid\nset key top right\nset title \"" << case_name << ": worn depth along x";
+  b << "set grid\nset key top right\nset title \"" << case_name << ": worn depth along " << x_label;
   if (grid.dimension == 3) b << " (y = " << gnuplot_number(grid.yc(j0) * 1e3, 4) << " mm)";
-  b << "\" noenhanced\nset xlabel \"x (mm)\"\nset ylabel \"worn depth (um)\"\nplot ";
+  b << "\" noenhanced\nset xlabel \"" << x_label << " (mm)\"\nset ylabel \"worn depth (um)\"\nplot ";
   bool first = true;
-  for (const auto& [column, name, v] : {std::tuple{2, "base", &base}, std::tuple{3, "body", &body}}) {
+  for (const auto& [column, label, v] : {std::tuple{2, "base", &base}, std::tuple{3, "body", &body}}) {
     if (v->empty()) continue;
-    b << (first ? "" : ", \\\n     ") << "\"wear_x.dat\" using ($1*1e3):($" << column
-      << "*1e6) with linespoints pt 7 ps 0.5 lw 1.5 title \"" << name << "\"";
+    b << (first ? "" : ", \\\n     ") << "\"" << name << ".dat\" using ($1*1e3):($" << column
+      << "*1e6) with linespoints pt 7 ps 0.5 lw 1.5 title \"" << label << "\"";
     first = false;
   }
   b << "\n";
-  return {"wear_x", b.str()};
+  return {name, b.str()};
 }
 
 }  // namespace dc::output

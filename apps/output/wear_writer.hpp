@@ -10,13 +10,17 @@
 
 namespace dc::output {
 
-/// Writes dir/wear.csv; an empty depth map leaves its body's column out. Returns the path.
+/// Writes dir/`file` (default wear.csv); an empty depth map leaves its body's column out; the
+/// first column is named `x_name` (a dynamic run's body map: its arc length "s"). Returns the path.
 std::string write_wear(const std::string& dir, const Grid& grid, const std::vector<double>& base,
-                       const std::vector<double>& body);
+                       const std::vector<double>& body, const std::string& file = "wear.csv",
+                       const std::string& x_name = "x");
 
-/// The figure `wear_x`: each wearing body's worn depth (um) along the x centre line (the row
-/// nearest y = 0), its data written to dir/wear_x.dat; not yet drawn (render_gnuplot).
+/// The figure `name` (default wear_x): each wearing body's worn depth (um) along the x centre
+/// line (the row nearest y = 0), its data written to dir/<name>.dat; `x_label` the abscissa
+/// (mm); not yet drawn (render_gnuplot).
 GnuplotFigure wear_figure(const std::string& dir, const std::string& case_name, const Grid& grid,
-                          const std::vector<double>& base, const std::vector<double>& body);
+                          const std::vector<double>& base, const std::vector<double>& body,
+                          const std::string& name = "wear_x", const std::string& x_label = "x");
 
 }  // namespace dc::output

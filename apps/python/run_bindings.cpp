@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "case_model.hpp"
@@ -16,6 +17,7 @@
 #include "dynamic_run.hpp"
 #include "dynamic_subsurface.hpp"
 #include "dynamic_temperature.hpp"
+#include "dynamic_wear.hpp"
 #include "dynamic_sweep.hpp"
 #include "module_common.hpp"
 #include "paper_cylinder_run.hpp"
@@ -86,6 +88,7 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
   // The field inside the bodies from the snapshots' and the peak load's tractions, as the
   // command line's run computes it (dynamic_subsurface.hpp), without its files.
   runs::DynamicOutcome out;
+  runs::DynamicWear wear(c);  // every step's wear in each body's frame (dynamic_wear.hpp)
   {
     py::gil_scoped_release release;
     Grid grid = c.grid;  // of the run the states are taken from (an accuracy target chooses it)
@@ -93,8 +96,9 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
     runs::DynamicTemperature temperature(c);
     const int every = c.output.snapshot_every;
     std::function<void(const dynamics::DynamicSample&)> observe;
-    if (field.wanted() || temperature.wanted())
+    if (field.wanted() || temperature.wanted() || wear.wanted())
       observe = [&](const dynamics::DynamicSample& s) {
+        wear.observe(grid, s);
         if (every > 0 && s.step % every == 0) {
           output::StaticFields fields = runs::dynamic_step_fields(grid, s.contact_state);
           temperature.observe(grid, s, fields);
@@ -103,11 +107,31 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
           field.observe(grid, s, nullptr);
         }
       };
-    out = runs::simulate_dynamic_with_accuracy(c, progress, observe, &grid);
+    if (wear.feeds_back())  // the worn depth in the gap (build_case refuses it with an accuracy estimate)
+      out = runs::simulate_dynamic(c, progress, observe,
+                                   [&wear](const dynamics::StepKinematics& k, std::vector<double>& depth) { wear.worn_depth(k, depth); });
+    else
+      out = runs::simulate_dynamic_with_accuracy(c, progress, observe, &grid);
     temperature.add_entries(out.summary);
+    wear.add_entries(out.summary);
     if (!out.result.interrupted) field.add_entries(grid, {}, out.summary);
   }
   py::dict result = to_python(out.summary);
+  // The worn depths (m) as wear.csv and wear_body.csv hold them: fields["wear_base"] (rows y,
+  // columns the track's world x, fields["wear_base_x"]) and fields["wear_body"] (columns the arc
+  // s round the circumference, fields["wear_body_s"]); 2-D: one row.
+  if (wear.wanted()) {
+    py::dict fields;
+    for (const auto& [name, axis, strip] : {std::tuple{"wear_base", "wear_base_x", wear.base()},
+                                            std::tuple{"wear_body", "wear_body_s", wear.body()}}) {
+      if (strip.depth.empty()) continue;
+      std::vector<double> at(static_cast<std::size_t>(strip.grid.nx));
+      for (int i = 0; i < strip.grid.nx; ++i) at[static_cast<std::size_t>(i)] = strip.grid.xc(i);
+      fields[name] = grid_array(strip.grid, strip.depth);
+      fields[axis] = py::array_t<double>(static_cast<py::ssize_t>(at.size()), at.data());
+    }
+    result["fields"] = fields;
+  }
   result["timeseries"] = csv_columns(out.timeseries);
   if (result.contains("energy")) {  // the audit's history: energy.csv's columns
     py::dict energy = result["energy"];

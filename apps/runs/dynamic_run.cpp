@@ -14,6 +14,7 @@
 #include "dynamic_series.hpp"
 #include "dynamic_subsurface.hpp"
 #include "dynamic_temperature.hpp"
+#include "dynamic_wear.hpp"
 #include "dynamic_sweep.hpp"
 #include "energy_series.hpp"
 #include "exit_codes.hpp"
@@ -29,6 +30,7 @@
 #include "summary_entries.hpp"
 #include "subsurface_series.hpp"
 #include "summary_writer.hpp"
+#include "wear_writer.hpp"
 #ifdef DYNCONTACT_WITH_FE
 #include "body_snapshots.hpp"
 #include "elastic_body.hpp"
@@ -63,7 +65,8 @@ json energy_json(const dynamics::DynamicResult& r) {
 }  // namespace
 
 DynamicOutcome simulate_dynamic(const Case& c, bool progress,
-                                const std::function<void(const dynamics::DynamicSample&)>& on_step) {
+                                const std::function<void(const dynamics::DynamicSample&)>& on_step,
+                                const dynamics::ContactWrench::WornGap& worn_gap) {
   DynamicOutcome out;
   check_fe_body_fits(c);
 #ifdef DYNCONTACT_WITH_FE
@@ -71,6 +74,7 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
 #else
   dynamics::DynamicSimulation sim(c);  // an fe_body: an input error saying how to build with it
 #endif
+  if (worn_gap) sim.set_worn_gap(worn_gap);
   std::ostringstream series, energy;
   series << output::kTimeseriesColumns;
   const auto start = std::chrono::steady_clock::now();
@@ -163,8 +167,10 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   output::FieldsSnapshots surface_series(dir);  // fields_NNNN.vti per snapshot and fields.pvd
   DynamicSubsurface field(c);  // the snapshots' and the peak load's tractions, their field after the run
   DynamicTemperature temperature(c);  // the flash temperature at the snapshots
+  DynamicWear wear(c);                // every step's wear, in each body's frame
   const bool subsurface = field.wanted();
   const auto write_snapshot = [&](const dynamics::DynamicSample& s) {
+    wear.observe(grid, s);
     const output::StaticFields* kept = nullptr;
     output::StaticFields fields;
     if (every > 0 && s.step % every == 0) {
@@ -182,8 +188,13 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
     }
     field.observe(grid, s, kept);
   };
-  const DynamicOutcome out = simulate_dynamic_with_accuracy(
-      c, !quiet, every > 0 || subsurface ? std::function(write_snapshot) : nullptr, &grid);
+  // A worn gap (wear.gap_feedback; build_case refuses it with an accuracy estimate): one run.
+  const DynamicOutcome out =
+      wear.feeds_back()
+          ? simulate_dynamic(c, !quiet, write_snapshot,
+                             [&wear](const dynamics::StepKinematics& k, std::vector<double>& depth) { wear.worn_depth(k, depth); })
+          : simulate_dynamic_with_accuracy(
+                c, !quiet, every > 0 || subsurface || wear.wanted() ? std::function(write_snapshot) : nullptr, &grid);
   const dynamics::DynamicResult& r = out.result;
   const double elapsed = out.elapsed;
   output::write_file_whole((fs::path(dir) / "timeseries.csv").string(), out.timeseries);
@@ -193,6 +204,18 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   if (!snapshots.empty()) files["snapshots"] = snapshots;
   if (surface_series.count() > 0) files["fields_series"] = surface_series.collection();
   temperature.add_entries(summary);
+  wear.add_entries(summary);
+  // The worn depths (dynamic_wear.hpp): the track's along world x in wear.csv, the body's along
+  // its circumference in wear_body.csv.
+  const WornStrip worn_base = wear.base(), worn_body = wear.body();
+  if (!worn_base.depth.empty()) {
+    output::write_wear(dir, worn_base.grid, worn_base.depth, {});
+    files["wear"] = "wear.csv";
+  }
+  if (!worn_body.depth.empty()) {
+    output::write_wear(dir, worn_body.grid, {}, worn_body.depth, "wear_body.csv", "s");
+    files["wear_body"] = "wear_body.csv";
+  }
   std::optional<SubsurfaceSeries> series;  // the field of the snapshots and the peak load, the worst of them
   if (subsurface && !r.interrupted) {
     output::SubsurfaceSnapshots images(dir);
@@ -204,8 +227,12 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
 #endif
   if (c.output.plots && !r.interrupted) {  // an interrupted run writes its data, not figures
     json plots = json::array();
-    for (const auto& img : output::render_gnuplot(dir, c.name, output::timeseries_figures(c, {{"timeseries.csv", ""}})))
-      plots.push_back(fs::path(img).filename().string());
+    std::vector<output::GnuplotFigure> figures = output::timeseries_figures(c, {{"timeseries.csv", ""}});
+    if (!worn_base.depth.empty())
+      figures.push_back(output::wear_figure(dir, c.name, worn_base.grid, worn_base.depth, {}, "wear_x", "track x"));
+    if (!worn_body.depth.empty())
+      figures.push_back(output::wear_figure(dir, c.name, worn_body.grid, {}, worn_body.depth, "wear_s", "circumference s"));
+    for (const auto& img : output::render_gnuplot(dir, c.name, figures)) plots.push_back(fs::path(img).filename().string());
     files["plots"] = plots;
   }
   summary["files"] = files;
@@ -232,6 +259,15 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
       std::printf("  flash temperature rise %.4g K at step %d (t = %.4g s; quasi-steady at the snapshots)\n",
                   summary["temperature"]["max_rise"].get<double>(), summary["temperature"]["step"].get<int>(),
                   summary["temperature"]["time"].get<double>());
+    if (summary.contains("wear")) {
+      const json& w = summary["wear"];
+      std::printf("  wear (%s): %.4g revolutions over %.4g m", w["law"].get<std::string>().c_str(),
+                  w["cycles"].get<double>(), w["travel"].get<double>());
+      for (const char* b : {"base", "body"})
+        if (w.contains(b))
+          std::printf(", %s max depth %.4g m, volume %.4g", b, w[b]["max_depth"].get<double>(), w[b]["volume"].get<double>());
+      std::printf("\n");
+    }
     std::printf("wrote %s\n", path.c_str());
     std::fflush(stdout);
   }

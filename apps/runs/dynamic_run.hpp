@@ -33,8 +33,11 @@ struct DynamicOutcome {
 /// progress line on stderr when `progress`. Never throws for non-convergence (the summary's
 /// status says where and why the run stopped); throws InputError for what dynamic_limits_before
 /// refuses before the run. The result limits are in `limits` and summary["limits"].
+/// `worn_gap` (optional): the worn depth added to the body's gap at every evaluation
+/// (dynamics::ContactWrench::set_worn_gap; dynamic_wear.hpp).
 DynamicOutcome simulate_dynamic(const Case& c, bool progress,
-                                const std::function<void(const dynamics::DynamicSample&)>& on_step = {});
+                                const std::function<void(const dynamics::DynamicSample&)>& on_step = {},
+                                const dynamics::ContactWrench::WornGap& worn_gap = {});
 
 /// Runs the case into `dir`; returns the exit code (0, or kExitUnconverged when the run stopped
 /// early: the time series so far is written and summary.json says when and why).

@@ -32,6 +32,7 @@ const std::vector<BundledExample>& bundled_examples() {
         {"paper-fig5", "the paper's Fig. 5: the Section 5 cylinder for three initial moments M0_bar"},
         {"paper-fig6", "the paper's Fig. 6: the Section 5 cylinder for a ring, a solid cylinder and eta = inf"},
         {"wheel-drive", "a 3-D wheel under a growing driving moment: rolls, then slides at F = mu P (Section 5 in 3-D)"},
+        {"wheel-wear", "the wheel of wheel-drive with Archard wear and the flash temperature: the track worn along x, the wheel round its circumference (3-D, dynamic, wear)"},
         {"cylinder-dynamic-2d", "the paper's Section 5 cylinder through the general dynamic solver, until it slides (2-D)"},
         {"ball-impact", "a steel ball dropped at 1 m/s on steel: Hertz impact, 69 us, 1.74 kN, rebound (3-D, dynamic)"},
         {"ball-impact-adaptive", "the same ball released 50 um above, adaptive time steps: flight, touch, contact, release (3-D, dynamic)"},

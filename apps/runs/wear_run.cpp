@@ -17,6 +17,7 @@ struct WearUpdate {
   long long cycles_done = 0, jump = 0;
   double cycle_max_depth = 0.0, cycle_volume = 0.0, max_depth = 0.0, volume = 0.0;
   double max_pressure = 0.0, contact_area = 0.0;
+  double time_s = 0.0;  ///< the cycle's solves, its wear map and the profile update after it (s)
   std::vector<double> normal_force;  ///< each step of the cycle (N)
 };
 
@@ -35,10 +36,24 @@ long long cycles_to_jump(const WearSpec& w, long long remaining, double cycle_de
   return std::max(1LL, n);
 }
 
-nlohmann::json body_json(const std::vector<double>& worn, double area) {
-  double volume = 0.0;
-  for (double d : worn) volume += d;
-  return {{"max_depth", largest(worn)}, {"volume", volume * area}};
+/// The depth element e of a quasi-static step loses (core/wear_law.hpp).
+double element_depth(const WearLaw& law, const TangentialSolution& s, std::size_t e) {
+  return law.depth(s.normal.pressure[e], s.tx[e], e < s.ty.size() ? s.ty[e] : 0.0, s.sx[e], e < s.sy.size() ? s.sy[e] : 0.0);
+}
+
+/// One pass of steady rolling. A steady solution's slip is per element of travel dx (the slip
+/// while the material crosses one element), so a point of the track at y_j, passing under the
+/// whole row j, loses d_j = sum_i depth(p_ij, tau_ij, s_ij) = int k p |s_dot| / H dx / V
+/// (Archard); the body's circumference at y_j passes the contact once per revolution and loses
+/// the same d_j. Both maps: d_j on every element of row j.
+std::vector<double> rolling_pass_depth(const WearLaw& law, const Grid& grid, const TangentialSolution& s) {
+  std::vector<double> depth(grid.size(), 0.0);
+  for (int j = 0; j < grid.ny; ++j) {
+    double row = 0.0;
+    for (int i = 0; i < grid.nx; ++i) row += element_depth(law, s, grid.index(i, j));
+    for (int i = 0; i < grid.nx; ++i) depth[grid.index(i, j)] = row;
+  }
+  return depth;
 }
 
 }  // namespace
@@ -47,6 +62,7 @@ StaticRun run_wear(const Case& c, bool progress) {
   const WearSpec& w = *c.wear;
   const TangentialSpec& t = *c.tangential;
   const std::size_t n = c.grid.size();
+  const bool rolling = t.regime == TangentialRegime::rolling;  // steady rolling (read_wear)
   const int n_steps = static_cast<int>(t.history.size());
   const int first = w.cycle_from_step;
   // One body's worn depth (each listed body loses the law's depth); the gap opens by their sum.
@@ -74,11 +90,29 @@ StaticRun run_wear(const Case& c, bool progress) {
       out.push_back(problem.step(t.history[k], c.solver, step_progress));
       TangentialSolution& s = out.back();
       s.report.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      const std::vector<double>& p = s.normal.pressure;
-      for (std::size_t e = 0; e < n; ++e)
-        cycle_depth[e] += w.law.depth(p[e], s.tx[e], e < s.ty.size() ? s.ty[e] : 0.0, s.sx[e],
-                                      e < s.sy.size() ? s.sy[e] : 0.0);
+      for (std::size_t e = 0; e < n; ++e) cycle_depth[e] += element_depth(w.law, s, e);
     }
+  };
+  // Steady rolling: one pass, one steady solve, its row depths (rolling_pass_depth) the cycle's.
+  auto solve_pass = [&](std::vector<TangentialSolution>& out) {
+    const auto start = std::chrono::steady_clock::now();
+    out.push_back(problem.steady_rolling(t.rolling, c.solver, callback));
+    TangentialSolution& s = out.back();
+    s.report.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    cycle_depth = rolling_pass_depth(w.law, c.grid, s);
+  };
+  auto solve_cycle = [&](std::vector<TangentialSolution>& out) {
+    if (rolling) solve_pass(out);
+    else solve_steps(first, n_steps, out);
+  };
+  // A history's volume is its map's on the grid; a rolling pass's rows are uniform along x, their
+  // volume per length of travel (sum over x / the grid's length) times the travel 2 pi R per cycle.
+  const double volume_factor =
+      c.grid.area() * (rolling ? 2.0 * M_PI * w.rolling_radius / (c.grid.nx * c.grid.dx) : 1.0);
+  auto volume_of = [&](const std::vector<double>& depth) {
+    double v = 0.0;
+    for (double d : depth) v += d;
+    return v * volume_factor;
   };
 
   std::vector<TangentialSolution> cycle, solved;
@@ -86,28 +120,29 @@ StaticRun run_wear(const Case& c, bool progress) {
   long long done = 0;
   bool interrupted = false;
   try {
-    if (first > 0) {  // the first loading, once
+    if (first > 0 && !rolling) {  // the first loading, once
       solve_steps(0, first, solved);
       for (std::size_t e = 0; e < n; ++e) worn[e] += cycle_depth[e];
       update_gap(problem);
     }
     while (done < w.cycles) {
+      const auto cycle_start = std::chrono::steady_clock::now();
       cycle.clear();
       cycle_depth.assign(n, 0.0);
-      solve_steps(first, n_steps, cycle);
+      solve_cycle(cycle);
       const bool converged = std::all_of(cycle.begin(), cycle.end(), [](const TangentialSolution& s) {
         return s.report.status == SolveStatus::converged;
       });
       solved = std::move(cycle);
       WearUpdate u;
       u.cycle_max_depth = largest(cycle_depth);
-      for (double d : cycle_depth) u.cycle_volume += d * c.grid.area();
+      u.cycle_volume = volume_of(cycle_depth);
       u.jump = cycles_to_jump(w, w.cycles - done, u.cycle_max_depth);
       for (std::size_t e = 0; e < n; ++e) worn[e] += static_cast<double>(u.jump) * cycle_depth[e];
       done += u.jump;
       u.cycles_done = done;
       u.max_depth = largest(worn);
-      for (double d : worn) u.volume += d * c.grid.area();
+      u.volume = volume_of(worn);
       for (const TangentialSolution& s : solved) {
         u.normal_force.push_back(s.normal.force);
         u.max_pressure = std::max(u.max_pressure, largest(s.normal.pressure));
@@ -118,8 +153,9 @@ StaticRun run_wear(const Case& c, bool progress) {
                          return v > std::max(c.solver.certificate_tol, 1e-12) * peak;
                        })) * c.grid.area();
       updates.push_back(std::move(u));
+      if (converged && done < w.cycles) update_gap(problem);
+      updates.back().time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - cycle_start).count();
       if (!converged) break;  // a cycle the solver failed on wears nothing more: reported as is
-      if (done < w.cycles) update_gap(problem);
     }
   } catch (const Interrupted&) {
     if (updates.empty()) throw;  // else: the cycles finished (interrupt_requested() says why no more)
@@ -127,8 +163,9 @@ StaticRun run_wear(const Case& c, bool progress) {
   }
   reporter.finish();
 
-  std::vector<NormalSpec> normals;
-  for (int k = first; k < n_steps; ++k) normals.push_back(t.history[k].normal);
+  std::vector<NormalSpec> normals;  // of the cycle's steps (a rolling pass: its one solve)
+  if (rolling) normals = t.step_normals();
+  for (int k = first; k < n_steps && !rolling; ++k) normals.push_back(t.history[k].normal);
   TangentialRun run = tangential_run_of(c, std::move(solved), std::move(normals));
   StaticRun out;
   out.summary = std::move(run.summary);
@@ -140,7 +177,7 @@ StaticRun run_wear(const Case& c, bool progress) {
   out.report = run.report();
   out.report.time_s = run.total_time_s();
   out.converged = run.converged() && done == w.cycles;
-  out.history = true;
+  out.history = !rolling;
   out.interrupted = interrupted || run.interrupted;
   out.grid = c.grid;
   if (w.base) out.worn_base = worn;
@@ -148,14 +185,21 @@ StaticRun run_wear(const Case& c, bool progress) {
 
   nlohmann::json j = {{"law", to_string(w.law.kind)}, {"cycles", done}, {"updates", updates.size()},
                       {"cycle_from_step", first}};
-  if (w.base) j["base"] = body_json(worn, c.grid.area());
-  if (w.body) j["body"] = body_json(worn, c.grid.area());
+  const nlohmann::json body = {{"max_depth", largest(worn)}, {"volume", volume_of(worn)}};
+  if (w.base) j["base"] = body;
+  if (w.body) j["body"] = body;
+  if (rolling) {  // a cycle is one revolution of the body and one pass over the track
+    j.erase("cycle_from_step");
+    j["rolling_radius"] = w.rolling_radius;
+    j["travel"] = 2.0 * M_PI * w.rolling_radius * static_cast<double>(done);
+  }
   nlohmann::json history = nlohmann::json::array();
   for (const WearUpdate& u : updates)
     history.push_back({{"cycles", u.cycles_done}, {"jump", u.jump}, {"cycle_max_depth", u.cycle_max_depth},
                        {"cycle_volume", u.cycle_volume},
                        {"max_depth", u.max_depth}, {"volume", u.volume}, {"max_pressure", u.max_pressure},
-                       {"contact_area", u.contact_area}, {"normal_force", u.normal_force}});
+                       {"contact_area", u.contact_area}, {"normal_force", u.normal_force},
+                       {"time_s", u.time_s}});
   j["history"] = history;
   if (done < w.cycles) j["cycles_requested"] = w.cycles;
   out.summary["wear"] = j;

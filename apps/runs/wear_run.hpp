@@ -6,6 +6,9 @@
 // extrapolate it over n cycles (cycle jumping: n bounded by wear.update), add it to the worn
 // depth and update the gap, until every cycle is done. The steps before wear.cycle_from_step
 // (the first loading) are solved once, at the start, their wear added once.
+// Steady rolling: a cycle is one pass (one revolution of the body, rolling_radius R), one steady
+// solve; every point of the track at lateral y passes the whole contact, so both bodies' maps
+// are uniform along x (rolling_pass_depth), their volumes over a travel of 2 pi R per cycle.
 #include "tangential_run.hpp"
 
 namespace dc::runs {

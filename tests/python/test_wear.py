@@ -1,6 +1,8 @@
 """The "wear" block from Python: the worn depth maps in r['fields'] (wear_base, wear_body, m) and
 wear.csv in the output folder, as `dyncontact solve` writes it; the summary's volume is the
-map's sum times the element area."""
+map's sum times the element area. Steady rolling's maps are on the grid, uniform along x; a
+dynamic run's are the track's along world x (wear_base_x) and the body's round its circumference
+(wear_body_s)."""
 import numpy as np
 import pytest
 
@@ -30,3 +32,46 @@ def test_fretting_wear_maps_and_wear_csv(tmp_path):
     table = np.loadtxt(tmp_path / "out" / "wear.csv", delimiter=",", skiprows=1)
     assert (tmp_path / "out" / "wear.csv").read_text().startswith("x,y,base\n")
     np.testing.assert_allclose(table[:, 2].reshape(24, 24), depth, rtol=1e-9, atol=0.0)
+
+
+def test_rolling_wear_maps_are_uniform_along_x_and_match_the_frictional_work():
+    # Steady rolling: one pass wears each row of the track (and the body's circumference) by the
+    # row's integral of the law, the same at every x; Archard's volume per pass (travel 2 pi R)
+    # is k/(mu H) x the frictional power x 2 pi R / V.
+    case = example("rolling-sphere")
+    case["grid"] = {"nx": 24, "ny": 24, "extent": 1.2}
+    case["accuracy"] = {"estimate": False}
+    case["output"] = {"plots": False}
+    case["wear"] = {"law": "archard", "k": 1e-4, "hardness": 2e9}
+    r = dyncontact.solve(case)
+    f = r["fields"]
+    depth = f["wear_base"]
+    assert depth.shape == (24, 24)
+    np.testing.assert_array_equal(depth, f["wear_body"])
+    np.testing.assert_array_equal(depth, np.repeat(depth[:, :1], 24, axis=1))  # uniform along x
+    R, V = 0.01, case["tangential"]["velocity"]
+    work = r["energy"]["frictional_power"] * 2 * np.pi * R / V
+    assert r["wear"]["base"]["volume"] == pytest.approx(1e-4 / (0.3 * 2e9) * work, rel=1e-9)
+    assert r["wear"]["rolling_radius"] == R
+
+
+def test_dynamic_wear_maps_reach_python_in_each_bodys_frame():
+    # wheel-wear's wheel (wheel-drive) for 1 s: the track's map along world x, the wheel's round
+    # its circumference; both volumes k/(mu H) x the dissipated energy.
+    case = example("wheel-wear")
+    case["time"]["t_end"] = 1.0
+    case["output"] = {"plots": False}
+    for body in ("base", "body"):
+        case["materials"][body].pop("thermal")
+    r = dyncontact.solve(case)
+    f = r["fields"]
+    track, x = f["wear_base"], f["wear_base_x"]
+    wheel, s = f["wear_body"], f["wear_body_s"]
+    assert track.shape == (12, x.size) and wheel.shape == (12, s.size)
+    assert s.size == r["wear"]["body"]["cells"]
+    assert x[0] < 0.01 and x[-1] == pytest.approx(r["wear"]["travel"], abs=2e-3)
+    dy = 0.012 / 12
+    expected = 1e-4 / (0.3 * 2e9) * r["energy"]["dissipated"]
+    assert track.sum() * (x[1] - x[0]) * dy == pytest.approx(expected, rel=1e-9)
+    assert wheel.sum() * (s[1] - s[0]) * dy == pytest.approx(expected, rel=1e-9)
+    assert r["wear"]["base"]["max_depth"] == track.max() > 0.0

@@ -1,0 +1,213 @@
+// Wear over a dynamic run (CASES.md "wear", docs/wear_energy.md "Wear in dynamic runs"): the
+// wheel of wheel-drive rolling under a growing driving moment until it slides. Archard's volume
+// of both maps against k/(mu H) x the energy audit's dissipation (round-off), the track's wear
+// per unit length under every step against that step's dissipation over its travel (the frame
+// bookkeeping), growing with the slip; the worn circumference raising the approach of the
+// following revolutions (the worn depth in the gap); the input errors of a dynamic wear block.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace cli_dynamic_wear_test {  // named: the unity build shares one translation unit
+
+using json = nlohmann::json;
+using dc::test::slurp;
+
+constexpr double kK = 1e-4, kH = 2e9, kMu = 0.3;
+
+/// The rows of a CSV file with a header, as numbers by column name.
+std::vector<std::map<std::string, double>> csv_rows(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  {
+    std::istringstream h(line);
+    std::string name;
+    while (std::getline(h, name, ',')) names.push_back(name);
+  }
+  std::vector<std::map<std::string, double>> rows;
+  while (std::getline(in, line)) {
+    std::istringstream r(line);
+    std::string cell;
+    std::map<std::string, double> row;
+    for (std::size_t k = 0; k < names.size() && std::getline(r, cell, ','); ++k) row[names[k]] = std::stod(cell);
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+class CliDynamicWear : public dc::test::CliTest {
+ protected:
+  json solve(const json& c) const {
+    const auto r = run("solve " + write_case(c) + " --out out -q");
+    EXPECT_EQ(r.code, 0) << r.err;
+    return json::parse(slurp(dir_ / "out" / "summary.json"));
+  }
+  static json wheel(const json& wear) {
+    json c = dc::test::example_json("wheel-drive");
+    c["output"] = {{"plots", false}};
+    c["wear"] = wear;
+    return c;
+  }
+};
+
+TEST_F(CliDynamicWear, AWheelDrivenToSlidingWearsTheTrackWhereItSlipsByTheDissipatedEnergy) {
+  // wheel-drive (12^2, R = 0.1 m, 1 kN, mu = 0.3, dt = 0.02 s): the moment grows at 20 N m/s,
+  // the creepage with it, until the wheel slides after about 2.25 s. Coulomb: Archard's volume of
+  // each map is k/(mu H) x the dissipated energy, to round-off.
+  const json s = solve(wheel({{"law", "archard"}, {"k", kK}, {"hardness", kH}}));
+  const double dissipated = s.at("energy").at("dissipated").get<double>();
+  ASSERT_GT(dissipated, 0.0);
+  const json& w = s.at("wear");
+  for (const char* body : {"base", "body"})
+    EXPECT_NEAR(w.at(body).at("volume").get<double>() / (kK / (kMu * kH) * dissipated), 1.0, 1e-9) << body;
+  EXPECT_EQ(s.at("files").at("wear"), "wear.csv");
+  EXPECT_EQ(s.at("files").at("wear_body"), "wear_body.csv");
+  EXPECT_TRUE(w.at("gap_feedback").get<bool>());  // the default
+  // The body turned ~9.7 times over ~6 m (omega R ~ v until it slides).
+  const json& final = s.at("final");
+  EXPECT_NEAR(w.at("travel").get<double>(), final.at("position")[0].get<double>(), 1e-12);
+  EXPECT_GT(w.at("cycles").get<double>(), 9.0);
+
+  // Every step's travel (2 to 10 cm, many contact lengths of 0.9 mm) is worn along the track by
+  // the step's dissipation W_k spread over it: at the middle of the step's path the track's
+  // volume per unit length (its column's depths times dy) is k/(mu H) W_k / travel_k. energy.csv
+  // and timeseries.csv carry 10 digits (tolerance 1e-6).
+  const auto energy = csv_rows(slurp(dir_ / "out" / "energy.csv"));
+  const auto series = csv_rows(slurp(dir_ / "out" / "timeseries.csv"));
+  const auto track = csv_rows(slurp(dir_ / "out" / "wear.csv"));
+  ASSERT_EQ(energy.size(), series.size() + 1);  // energy.csv's first row is t = 0
+  std::map<double, double> per_length;            // the track's column x -> sum of depth dy
+  const double dy = 0.012 / 12;
+  for (const auto& row : track) per_length[row.at("x")] += row.at("base") * dy;
+  const double cell = w.at("base").at("cell").get<double>();
+  double x_prev = 0.0, last_rolling = 0.0, first_rolling = 0.0;
+  int checked = 0;
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    const double x = series[k].at("x"), travel = x - x_prev;
+    const double work = energy[k + 1].at("dissipated") - energy[k].at("dissipated");
+    const double mid = 0.5 * (x + x_prev);
+    x_prev = x;
+    // (The first step, from the unloaded state, sticks: its work 4e-18 J is the solver's
+    // round-off, against which Archard's p |s| of the stuck elements is not the work's share.)
+    if (travel < 20.0 * cell || work < 1e-9 * dissipated) continue;
+    auto it = per_length.lower_bound(mid - 0.5 * cell);
+    ASSERT_NE(it, per_length.end());
+    const double expected = kK / (kMu * kH) * work / travel;
+    EXPECT_NEAR(it->second / expected, 1.0, 1e-6) << "step " << k + 1 << " at x = " << mid;
+    ++checked;
+    // While it rolls (t < 2 s) the creepage grows and so does the wear per length.
+    if (series[k].at("t") < 2.0) {
+      if (first_rolling == 0.0) first_rolling = it->second;
+      EXPECT_GT(it->second, last_rolling) << "step " << k + 1;
+      last_rolling = it->second;
+    }
+  }
+  EXPECT_GT(checked, 100);
+  // Sliding (the last steps) wears the track far more than early rolling.
+  double max_per_length = 0.0;
+  for (const auto& [x, v] : per_length) max_per_length = std::max(max_per_length, v);
+  EXPECT_GT(max_per_length, 100.0 * first_rolling);
+
+  // The energy law with alpha = k/(mu H), the body alone, wears the same volume.
+  const json e = solve(wheel({{"law", "energy"}, {"coefficient", kK / (kMu * kH)}, {"bodies", {"body"}}}));
+  EXPECT_NEAR(e.at("wear").at("body").at("volume").get<double>() / (kK / (kMu * kH) * dissipated), 1.0, 1e-9);
+  EXPECT_FALSE(e.at("wear").contains("base"));
+  EXPECT_FALSE(e.at("files").contains("wear"));
+}
+
+TEST_F(CliDynamicWear, AWheelsWornCircumferenceRaisesTheApproachByItsDepthOnceARevolution) {
+  // cylinder-dynamic-2d (R = 0.5 m, 60 kN/m, 10 m/s) under a constant driving moment 6750 N m/m:
+  // F = (2/3) M / R = 0.5 mu P, a steady creepage (-1.0058e-4) as it accelerates, so every step
+  // wears the wheel's circumference by the same depth per length, d = k/(mu H) W_k / (R omega dt),
+  // the track being fresh ahead. Force control in 2-D: a gap raised uniformly over the contact
+  // raises the approach by the same amount. With the worn depth in the gap (the default) the
+  // approach is the unworn run's during the first revolution, and then n d higher in revolution
+  // n + 1 (the contact's 2b = 2.4 mm against 0.2 m of arc per step; revolutions counted as
+  // sum omega_y dt, steps within 0.1 revolution of a boundary left out). timeseries.csv's 8
+  // digits of the approach: 1e-3 of d (k = 0.1: d = 1.45e-10 m).
+  json c = dc::test::example_json("cylinder-dynamic-2d");
+  c["output"] = {{"plots", false}};
+  c["loads"]["moment"]["y"] = {{"value", 6750.0}, {"rate", 0.0}};
+  c["time"]["t_end"] = 1.0;
+  const double k = 0.1, R = 0.5, dt = 0.02;
+  c["wear"] = {{"law", "archard"}, {"k", k}, {"hardness", kH}, {"bodies", {"body"}}};
+  const json worn = solve(c);
+  ASSERT_EQ(worn.at("status"), "completed");
+  EXPECT_TRUE(worn.at("wear").at("gap_feedback").get<bool>());
+  const auto series = csv_rows(slurp(dir_ / "out" / "timeseries.csv"));
+  const auto energy = csv_rows(slurp(dir_ / "out" / "energy.csv"));
+  c["wear"]["gap_feedback"] = false;
+  const json plain = solve(c);
+  EXPECT_FALSE(plain.at("wear").at("gap_feedback").get<bool>());
+  const auto unworn = csv_rows(slurp(dir_ / "out" / "timeseries.csv"));
+  ASSERT_EQ(series.size(), unworn.size());
+  auto step_depth = [&](std::size_t s) {
+    const double work = energy[s + 1].at("dissipated") - energy[s].at("dissipated");
+    return k / (kMu * kH) * work / (R * series[s].at("wy") * dt);
+  };
+  const double d = step_depth(5);  // steady from the third step
+  double turns = 0.0;
+  int checked[4] = {};
+  for (std::size_t s = 0; s < series.size(); ++s) {
+    turns += series[s].at("wy") * dt / (2.0 * M_PI);
+    if (s > 2) {
+      EXPECT_NEAR(step_depth(s) / d, 1.0, 1e-6) << "step " << s + 1;
+    }
+    const double fraction = turns - std::floor(turns);
+    if (fraction < 0.1 || fraction > 0.9) continue;
+    const int n = static_cast<int>(std::floor(turns));
+    const double rise = series[s].at("approach") - unworn[s].at("approach");
+    if (n == 0) {
+      EXPECT_EQ(rise, 0.0) << "step " << s + 1;
+    } else {
+      EXPECT_NEAR(rise / (n * d), 1.0, 1e-3) << "step " << s + 1 << ", revolution " << n + 1;
+    }
+    if (n < 4) ++checked[n];
+  }
+  for (int n = 0; n < 3; ++n) EXPECT_GE(checked[n], 8) << "revolution " << n + 1;
+  // The worn wheel's volume is still k/(mu H) x the dissipated energy.
+  EXPECT_NEAR(worn.at("wear").at("body").at("volume").get<double>() /
+                  (k / (kMu * kH) * worn.at("energy").at("dissipated").get<double>()),
+              1.0, 1e-9);
+}
+
+TEST_F(CliDynamicWear, BadDynamicWearBlocksAreInputErrorsNamingTheKey) {
+  const json law = {{"law", "archard"}, {"k", kK}, {"hardness", kH}};
+  for (const char* key : {"cycles", "update", "cycle_from_step", "rolling_radius"}) {
+    json w = law;
+    w[key] = std::string(key) == "update" ? json{{"cycles", 2}} : json(1);
+    SCOPED_TRACE(key);
+    expect_input_error("validate " + write_case(wheel(w)), std::string("wear.") + key);
+  }
+  json frictionless = wheel(law);
+  frictionless.erase("friction");
+  expect_input_error("validate " + write_case(frictionless), "wear");
+  json sweep = wheel(law);
+  sweep["sweep"] = {{"body.mass", {50.0, 100.0}}};
+  expect_input_error("validate " + write_case(sweep), "wear");
+  json fe = dc::test::example_json("fe-hemisphere-drop");
+  fe["wear"] = law;
+  expect_input_error("validate " + write_case(fe), "wear");
+  // The worn gap with an accuracy estimate (its coarser runs would wear too); a history's key.
+  json estimate = wheel(law);
+  estimate["accuracy"] = {{"estimate", true}};
+  expect_input_error("validate " + write_case(estimate), "wear.gap_feedback");
+  json history = dc::test::example_json("cattaneo-sphere");
+  history["tangential"] = {{"regime", "shift"}, {"history", {{{"force", {-15.0, 0.0}}}, {{"force", {15.0, 0.0}}}}}};
+  json w = law;
+  w["gap_feedback"] = false;
+  history["wear"] = w;
+  expect_input_error("validate " + write_case(history), "wear.gap_feedback");
+}
+
+}  // namespace cli_dynamic_wear_test
