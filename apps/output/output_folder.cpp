@@ -35,7 +35,7 @@ bool is_result_file(const std::string& name) {
       "subsurface.vti", "subsurface_base_xz.csv", "subsurface_base_yz.csv", "subsurface_body_xz.csv",
       "subsurface_body_yz.csv", "subsurface_base_xz.dat", "subsurface_base_yz.dat", "subsurface_body_xz.dat",
       "subsurface_body_yz.dat", "subsurface.pvd", "fields.vti", "fields.pvd", "energy.csv", "wear.csv",
-      "wear_x.dat", "temperature_x.dat"};
+      "wear_x.dat", "temperature_x.dat", "wear_body.csv", "wear_s.dat"};
   static const char* figures[] = {"pressure_x", "pressure_y", "traction_x", "traction_y", "pressure_map",
                                   "contact_map", "subsurface_base_xz", "subsurface_base_yz", "subsurface_body_xz",
                                   "subsurface_body_yz", "F_bar", "l_bar", "v_bar",
@@ -43,7 +43,7 @@ bool is_result_file(const std::string& name) {
                                   "position", "velocity", "omega", "force", "moment", "creepage", "stick",
                                   "approach", "contact_area", "energy", "table_Fx", "table_Fy",
                                   // heat and wear
-                                  "temperature_x", "wear_x"};
+                                  "temperature_x", "wear_x", "wear_s"};
   if (fixed.count(name)) return true;
   for (const char* f : figures)
     for (const char* ext : {".svg", ".png"})
