@@ -180,7 +180,10 @@ void TurnedProfile::heights(double heading, std::vector<double>& h) const {
           if (!two_d && profile.length > 0.0 && std::abs(y) > 0.5 * profile.length) value = kInfinity;
           break;
         case ProfileType::flat_punch:
-          value = (x * x + y * y < profile.radius * profile.radius) ? 0.0 : kInfinity;
+          value = (x * x + y * y < profile.radius * profile.radius &&
+                   x * x + y * y >= profile.inner_radius * profile.inner_radius)
+                      ? 0.0
+                      : kInfinity;
           break;
         case ProfileType::quadratic:
           value = profile.a * x * x + profile.b * y * y;

@@ -12,6 +12,7 @@ enum class ProfileType { sphere, ellipsoid, cylinder, flat_punch, quadratic, tab
 struct ProfileSpec {
   ProfileType type = ProfileType::sphere;
   double radius = 0.0;                 ///< sphere, cylinder, flat_punch
+  double inner_radius = 0.0;           ///< flat_punch: an annulus inner_radius <= r < radius (0: the disc)
   double radius_x = 0.0, radius_y = 0.0;  ///< ellipsoid
   double a = 0.0, b = 0.0;             ///< quadratic: h = a x^2 + b y^2
   double length = 0.0;                 ///< 3-D cylinder: finite length along y (0: whole grid)

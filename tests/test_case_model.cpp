@@ -196,6 +196,9 @@ TEST(CaseModel, BadValuesNameTheirKey) {
   expect_bad(d, "schema=\"dyncontact/2\"", "schema");
   expect_bad(d, "name=\"a/b\"", "name");
   expect_bad(d, "grid.extent=1.2", "grid.extent");  // both extent and x/y
+  for (const char* inner : {"-1e-4", "1e-3", "2e-3"})  // an annular punch: 0 <= inner_radius < radius
+    expect_bad(d, std::string("profile={\"type\": \"flat_punch\", \"radius\": 1e-3, \"inner_radius\": ") + inner + "}",
+               "profile.inner_radius");
   json ext = sphere_case();
   ext["grid"] = json::parse(R"({"nx": 8, "ny": 8, "extent": 0})");
   expect_input_error([&] { build_case(ext); }, "grid.extent");
@@ -477,6 +480,10 @@ TEST(CaseModel, ProfileHeightsAtElementCentres) {
   EXPECT_EQ(h_at(punch, 1, 0), 0.0);                 // r = 0.71 mm
   EXPECT_TRUE(std::isinf(h_at(punch, 0, 0)));        // r = 1.58 mm
   EXPECT_THROW(punch.quadratic_coefficients(A, B), InputError);
+  punch.inner_radius = 0.75e-3;                      // an annulus 0.75 mm <= r < 1 mm
+  EXPECT_TRUE(std::isinf(h_at(punch, 1, 0)));        // r = 0.71 mm: in the hole
+  punch.inner_radius = 0.7e-3;
+  EXPECT_EQ(h_at(punch, 1, 0), 0.0);
 
   const Grid g2 = Grid::make(2, 4, 1, -2e-3, 2e-3, 0, 0);
   ProfileSpec cyl2;

@@ -118,9 +118,15 @@ ProfileSpec read_profile(const json& j, int dimension, const std::string& base_d
     if (three_d) p.length = o.has("length") ? o.positive_at_most("length", kMaxLength, "m") : 0.0;
   } else if (type == "flat_punch") {
     three_d_only("flat_punch");
-    o.allow({"type", "radius"});
+    o.allow({"type", "radius", "inner_radius"});
     p.type = ProfileType::flat_punch;
     p.radius = o.positive_at_most("radius", kMaxLength, "m");
+    if (o.has("inner_radius")) {  // an annular punch inner_radius <= r < radius
+      p.inner_radius = o.non_negative("inner_radius");
+      if (!(p.inner_radius < p.radius))
+        throw InputError(o.key("inner_radius"), "an annular punch's inner_radius must be below its radius " +
+                                                    fmt(p.radius) + " m, got " + fmt(p.inner_radius));
+    }
   } else if (type == "quadratic") {
     p.type = ProfileType::quadratic;
     if (three_d) {

@@ -47,7 +47,12 @@ std::string profile_text(const ProfileSpec& p, int dimension) {
       else
         std::snprintf(b, sizeof b, "cylinder, R = %.4g m", p.radius);
       break;
-    case ProfileType::flat_punch: std::snprintf(b, sizeof b, "flat punch, radius %.4g m", p.radius); break;
+    case ProfileType::flat_punch:
+      if (p.inner_radius > 0.0)
+        std::snprintf(b, sizeof b, "annular flat punch, radii %.4g m to %.4g m", p.inner_radius, p.radius);
+      else
+        std::snprintf(b, sizeof b, "flat punch, radius %.4g m", p.radius);
+      break;
     case ProfileType::quadratic: std::snprintf(b, sizeof b, "quadratic, h = %.4g x^2 + %.4g y^2", p.a, p.b); break;
     case ProfileType::table:
       std::snprintf(b, sizeof b, "table '%s' (%zu points)", p.file.c_str(), p.table_h.size());

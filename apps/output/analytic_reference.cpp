@@ -43,6 +43,7 @@ std::optional<AnalyticReference> analytic_reference(const Case& c) {
   const bool force_control = c.normal.control == Control::force;
   AnalyticReference r;
   r.dimension = c.dimension;
+  if (p.type == ProfileType::flat_punch && p.inner_radius > 0.0) return std::nullopt;  // an annulus: none
   if (p.type == ProfileType::flat_punch) {
     r.kind = "boussinesq_flat_punch";
     r.semi_axis_x = r.semi_axis_y = p.radius;
