@@ -95,13 +95,13 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
     std::function<void(const dynamics::DynamicSample&)> observe;
     if (field.wanted() || temperature.wanted())
       observe = [&](const dynamics::DynamicSample& s) {
-        if (every > 0 && s.step % every == 0) {
-          output::StaticFields fields = runs::dynamic_step_fields(grid, s.contact_state);
-          temperature.observe(grid, s, fields);
-          field.observe(grid, s, &fields);
-        } else {
-          field.observe(grid, s, nullptr);
+        const bool snapshot = every > 0 && s.step % every == 0;
+        output::StaticFields fields;
+        if (snapshot || temperature.every_step()) {
+          fields = runs::dynamic_step_fields(grid, s.contact_state);
+          temperature.observe(grid, s, fields, snapshot);
         }
+        field.observe(grid, s, snapshot ? &fields : nullptr);
       };
     out = runs::simulate_dynamic_with_accuracy(c, progress, observe, &grid);
     temperature.add_entries(out.summary);
