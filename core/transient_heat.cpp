@@ -210,6 +210,12 @@ void TransientHeat::commit(double share) {
   prepared_ = false;
 }
 
+double TransientHeat::heat_content() const {
+  double sum = 0.0;
+  for (int l = 0; l < nz_; ++l) sum += cell_[l] * state_[l].real();  // mode (0, 0): the sum over the box
+  return properties_.conductivity / properties_.diffusivity * sum * grid_.area();
+}
+
 void TransientHeat::step(double h, double speed, const double* flux, double* temperature) {
   std::vector<double>& free = box_;  // box_ holds at least grid.size() values
   prepare(h, speed, flux, free.data(), temperature);

@@ -84,6 +84,10 @@ class TransientHeat {
   double first_cell() const { return dz_.front(); }
   int box_x() const { return mx_; }
   int box_y() const { return my_; }
+  /// The heat in the box (J; 2-D J/m): (K/kappa) sum_l w_l int theta(x, y, z_l) dA, the
+  /// (0, 0) mode. A flux Q (W) applied for t puts Q t in, less what left through the depth
+  /// grid's bottom and into the fringe.
+  double heat_content() const;
   int last_substeps() const { return last_substeps_; }  ///< of the last prepared step
 
  private:
