@@ -155,8 +155,11 @@ void TransientHeat::prepare(double h, double speed, const double* flux, double* 
   surface_fft_.forward(flux);
   const auto* spectrum = reinterpret_cast<const std::complex<double>*>(surface_fft_.spectrum());
   std::copy(spectrum, spectrum + modes_, flux_.begin());
-  // The unit flux's sub-step u_k of (4) per mode.
-  for (std::size_t m = 0; m < modes_; ++m) {
+  // The unit flux's sub-step u_k of (4) per mode (kept while the sub-step and the speed are).
+  const bool unit_kept = hs == unit_step_ && speed == unit_speed_;
+  unit_step_ = hs;
+  unit_speed_ = speed;
+  for (std::size_t m = 0; m < modes_ && !unit_kept; ++m) {
     const double mu = properties_.diffusivity * wave2_[m];
     const std::complex<double> turn = std::polar(1.0, wave_x_[m] * speed * hs);
     std::complex<double>* u = &unit_[m * nz];

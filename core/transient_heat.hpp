@@ -109,6 +109,7 @@ class TransientHeat {
   std::vector<std::complex<double>> state_;  ///< theta_k(z_l): mode-major, nz per mode (DFT scale)
   std::vector<std::complex<double>> response_;  ///< the prepared step's flux response, the same layout
   std::vector<std::complex<double>> unit_;      ///< (4)'s u_k(z_l) of a unit flux, the same layout
+  double unit_step_ = 0.0, unit_speed_ = 0.0;   ///< the sub-step and speed unit_ is for (0: none yet)
   std::vector<std::complex<double>> flux_;   ///< q_k of the prepared step
   std::vector<std::complex<double>> work_;    ///< Thomas' sweep
   std::vector<double> real_work_;             ///< Thomas' sweep, real shift
