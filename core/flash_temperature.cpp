@@ -125,13 +125,7 @@ FlashTemperatureResult FlashTemperature::compute(const std::vector<double>& heat
     throw std::invalid_argument("flash temperature: the heat flux needs one value per element (" +
                                 std::to_string(N) + "), got " + std::to_string(heat_flux.size()));
   FlashTemperatureResult r;
-  for (std::size_t e = 0; e < N; ++e) {
-    if (!std::isfinite(heat_flux[e]) || heat_flux[e] < 0.0)
-      throw std::invalid_argument("flash temperature: the heat flux must be finite and >= 0, element " +
-                                  std::to_string(e) + " has " + six_digits(heat_flux[e]));
-    r.total_heat += heat_flux[e] * grid_.area();
-    if (heat_flux[e] > 0.0) ++r.heated_elements;
-  }
+  flash_flux_totals(grid_, heat_flux, r);
   if (partition.rule == HeatPartition::Rule::fixed &&
       !(partition.base_fraction >= 0.0 && partition.base_fraction <= 1.0))
     throw InputError("partition", "a fixed fraction of the heat into the base must lie in [0, 1], got " +
@@ -183,9 +177,25 @@ FlashTemperatureResult FlashTemperature::compute(const std::vector<double>& heat
     }
   }
   r.base_fraction = f;
-  flash_statistics(r.base, heat_flux, r.base_max, r.base_max_element, r.base_mean);
-  flash_statistics(r.body, heat_flux, r.body_max, r.body_max_element, r.body_mean);
+  flash_result_statistics(heat_flux, r);
   return r;
+}
+
+void flash_flux_totals(const Grid& grid, const std::vector<double>& q, FlashTemperatureResult& r) {
+  r.total_heat = 0.0;
+  r.heated_elements = 0;
+  for (std::size_t e = 0; e < q.size(); ++e) {
+    if (!std::isfinite(q[e]) || q[e] < 0.0)
+      throw std::invalid_argument("flash temperature: the heat flux must be finite and >= 0, element " +
+                                  std::to_string(e) + " has " + six_digits(q[e]));
+    r.total_heat += q[e] * grid.area();
+    if (q[e] > 0.0) ++r.heated_elements;
+  }
+}
+
+void flash_result_statistics(const std::vector<double>& q, FlashTemperatureResult& r) {
+  flash_statistics(r.base, q, r.base_max, r.base_max_element, r.base_mean);
+  flash_statistics(r.body, q, r.body_max, r.body_max_element, r.body_mean);
 }
 
 }  // namespace dc

@@ -63,6 +63,13 @@ struct FlashTemperatureResult {
   double total_heat = 0.0;  ///< sum q * element area (W; 2-D W/m)
 };
 
+/// r.total_heat and r.heated_elements of the flux q (std::invalid_argument for a value that is
+/// negative or not finite).
+void flash_flux_totals(const Grid& grid, const std::vector<double>& q, FlashTemperatureResult& r);
+/// r's maxima (and their elements) and heated means of r.base and r.body, over the elements
+/// where q > 0 (the statistics of compute(), for another model's maps).
+void flash_result_statistics(const std::vector<double>& q, FlashTemperatureResult& r);
+
 /// The two surfaces' operators (1) for one grid, built once (a run calls compute at every
 /// step). Not thread-safe (the operators reuse their buffers).
 class FlashTemperature {

@@ -84,6 +84,14 @@ double circle_centre_stationary() { return 1.0; }
 
 double circle_mean_stationary() { return 8.0 / (3.0 * kThermalPi); }
 
+double one_dimensional_transient(double tau) { return 2.0 * tau / std::sqrt(kThermalPi); }
+
+double circle_centre_transient(double tau) {
+  const double x = 0.5 / tau;
+  const double ierfc = std::exp(-x * x) / std::sqrt(kThermalPi) - x * std::erfc(x);
+  return 2.0 * tau * (1.0 / std::sqrt(kThermalPi) - ierfc);
+}
+
 double square_low_peclet_slope() { return -2.0 / kThermalPi; }
 
 double circle_low_peclet_slope() { return -0.5; }

@@ -50,6 +50,15 @@
 //   B(1/2, 9/4) J / (pi sqrt(2 pi)) / sqrt(Pe) = 0.47836 / sqrt(Pe),  J = int_-1^1 I = 32 sqrt(2)/15 (H3)
 // (int c^(5/2) dy = a^(7/2) B(1/2, 9/4); int_-1^1 I(xi) dxi = 2 int_-1^1 sqrt(1 - s^2) sqrt(1 + s) ds).
 // In Archard's form with the heat Q = (2/3) pi a^2 q0: 0.323 Q / (a K) sqrt(kappa / (V a)).
+//
+// Transient, a flux q switched on at t = 0 over a stationary source (Carslaw & Jaeger 1959,
+// 2.9 (5) and 10.5 (7)), with tau = sqrt(kappa t) / L:
+//   1-D (a uniform flux over the whole surface, or any point of a high-Pe source heated for
+//   the time t): theta = 2 tau / sqrt(pi)                                                   (T1)
+//   the centre of a uniform circle of radius a:
+//   theta = 2 tau [1/sqrt(pi) - ierfc(1/(2 tau))],  ierfc(x) = e^(-x^2)/sqrt(pi) - x erfc(x),  (T2)
+//   rising as (T1) while tau << 1 and to (C1)'s 1 as tau -> infinity (ierfc(x) = 1/sqrt(pi) - x
+//   + O(x^2)).
 
 namespace dc::thermal {
 
@@ -69,6 +78,9 @@ double square_centre_stationary();
 double square_mean_stationary();
 double circle_centre_stationary();
 double circle_mean_stationary();
+/// (T1) and (T2) at tau = sqrt(kappa t) / L (units q L / K).
+double one_dimensional_transient(double tau);
+double circle_centre_transient(double tau);
 /// (L1): the first-order slope d theta / d Pe at Pe = 0 of the centre and the mean.
 double square_low_peclet_slope();
 double circle_low_peclet_slope();

@@ -111,6 +111,12 @@ void check_thermal(const Case& c, bool has_block, bool fe_body) {
     throw InputError(key, "a dynamic run's flash temperature is computed for a rigid-profile body, not an fe_body");
   if (dynamic && c.output.snapshot_every <= 0)
     throw InputError(key, "a dynamic run's flash temperature is computed at its snapshots: set output.snapshot_every");
+  if (t.model == ThermalSpec::Model::transient && !dynamic)
+    throw InputError("temperature.model", "the transient temperature follows a dynamic run's steps; a rolling "
+                                          "state's is quasi-steady");
+  if (t.model == ThermalSpec::Model::transient && t.partition.rule == HeatPartition::Rule::pointwise)
+    throw InputError("temperature.partition", "the pointwise partition is not offered by the transient "
+                                              "temperature: use auto, equal_mean, equal_max or a fraction");
   if (!t.base) throw InputError("materials.base.thermal", "missing: the flash temperature needs both surfaces' "
                                                           "conductivity and diffusivity");
   if (!t.body) throw InputError("materials.body.thermal", "missing: the flash temperature needs both surfaces' "

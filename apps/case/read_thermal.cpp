@@ -22,9 +22,16 @@ std::optional<ThermalProperties> read_surface(const json& materials, const char*
   return ThermalProperties::make(o.positive("conductivity"), o.positive("diffusivity"), path);
 }
 
+ThermalSpec::Model read_model(const json& block) {
+  JsonBlock o(block, "temperature");
+  return o.has("model") && o.choice("model", "quasi_steady", {"quasi_steady", "transient"}) == "transient"
+             ? ThermalSpec::Model::transient
+             : ThermalSpec::Model::quasi_steady;
+}
+
 HeatPartition read_partition(const json& block) {
   JsonBlock o(block, "temperature");
-  o.allow({"partition"});
+  o.allow({"partition", "model"});
   HeatPartition p;
   if (!o.has("partition")) return p;
   const json& v = o.at("partition");
@@ -50,7 +57,10 @@ ThermalSpec read_thermal(const json& materials, const json* temperature) {
   ThermalSpec t;
   t.body = read_surface(materials, "body");
   t.base = read_surface(materials, "base");
-  if (temperature) t.partition = read_partition(*temperature);
+  if (temperature) {
+    t.partition = read_partition(*temperature);
+    t.model = read_model(*temperature);
+  }
   return t;
 }
 

@@ -99,13 +99,13 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
     if (field.wanted() || temperature.wanted() || wear.wanted())
       observe = [&](const dynamics::DynamicSample& s) {
         wear.observe(grid, s);
-        if (every > 0 && s.step % every == 0) {
-          output::StaticFields fields = runs::dynamic_step_fields(grid, s.contact_state);
-          temperature.observe(grid, s, fields);
-          field.observe(grid, s, &fields);
-        } else {
-          field.observe(grid, s, nullptr);
+        const bool snapshot = every > 0 && s.step % every == 0;
+        output::StaticFields fields;
+        if (snapshot || temperature.every_step()) {
+          fields = runs::dynamic_step_fields(grid, s.contact_state);
+          temperature.observe(grid, s, fields, snapshot);
         }
+        field.observe(grid, s, snapshot ? &fields : nullptr);
       };
     if (wear.feeds_back())  // the worn depth in the gap (build_case refuses it with an accuracy estimate)
       out = runs::simulate_dynamic(c, progress, observe,

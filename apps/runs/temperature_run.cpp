@@ -41,25 +41,19 @@ double heated_half_length(const Grid& g, const std::vector<double>& q) {
 
 }  // namespace
 
-nlohmann::json flash_temperature(const ThermalSpec& t, const Grid& grid, output::StaticFields& fields,
-                                 double base_speed, double body_speed) {
-  nlohmann::json j;
-  j["partition"] = partition_name(t.partition.rule);
-  if (fields.dissipation.empty() || !(fields.dissipation_rate > 0.0)) {
-    j["max_rise"] = nullptr;
-    j["note"] = "the state rolled no distance: no frictional power";
-    return j;
-  }
-  // The power density; Coulomb makes every share >= 0, a solver's round-off may leave a
-  // negative one of its tolerance's size: no heat there.
+std::vector<double> power_density(const output::StaticFields& fields) {
+  // Coulomb makes every share >= 0, a solver's round-off may leave a negative one of its
+  // tolerance's size: no heat there.
   std::vector<double> q(fields.dissipation.size());
   for (std::size_t e = 0; e < q.size(); ++e) q[e] = std::max(0.0, fields.dissipation[e] * fields.dissipation_rate);
-  const ThermalSurface base{*t.base, base_speed}, body{*t.body, body_speed};
-  const FlashTemperature flash(grid, base, body, OperatorKind::automatic, "materials.base.thermal",
-                               "materials.body.thermal");
-  const FlashTemperatureResult r = flash.compute(q, t.partition);
-  fields.temperature_base = r.base;
-  fields.temperature_body = r.body;
+  return q;
+}
+
+nlohmann::json flash_entry(const ThermalSpec& t, const Grid& grid, const std::vector<double>& q,
+                           const FlashTemperatureResult& r, double base_speed, double body_speed,
+                           const std::string& model) {
+  nlohmann::json j;
+  j["partition"] = partition_name(t.partition.rule);
   const bool base_hotter = r.base_max >= r.body_max;
   // A surface without heat (full stick, no friction, or a partition of 0 or 1) has no hottest place.
   const auto where = [&](std::size_t e, double rise) { return rise > 0.0 ? place(grid, e) : nlohmann::json(); };
@@ -70,10 +64,27 @@ nlohmann::json flash_temperature(const ThermalSpec& t, const Grid& grid, output:
   j["fraction_into_base"] = r.base_fraction;
   j["heat"] = r.total_heat;
   const double L = heated_half_length(grid, q);
+  const ThermalSurface base{*t.base, base_speed}, body{*t.body, body_speed};
   j["peclet"] = {{"base", base.peclet(L)}, {"body", body.peclet(L)}, {"length", L}};
   j["heated_elements"] = r.heated_elements;
-  j["operator"] = flash.kind();
+  j["operator"] = model;
   return j;
+}
+
+nlohmann::json flash_temperature(const ThermalSpec& t, const Grid& grid, output::StaticFields& fields,
+                                 double base_speed, double body_speed) {
+  if (fields.dissipation.empty() || !(fields.dissipation_rate > 0.0))
+    return {{"partition", partition_name(t.partition.rule)},
+            {"max_rise", nullptr},
+            {"note", "the state rolled no distance: no frictional power"}};
+  const std::vector<double> q = power_density(fields);
+  const ThermalSurface base{*t.base, base_speed}, body{*t.body, body_speed};
+  const FlashTemperature flash(grid, base, body, OperatorKind::automatic, "materials.base.thermal",
+                               "materials.body.thermal");
+  const FlashTemperatureResult r = flash.compute(q, t.partition);
+  fields.temperature_base = r.base;
+  fields.temperature_body = r.body;
+  return flash_entry(t, grid, q, r, base_speed, body_speed, flash.kind());
 }
 
 nlohmann::json add_flash_temperature(const Case& c, const Grid& grid, output::StaticFields& fields) {

@@ -6,6 +6,9 @@
 // move through the contact at the rolling speed V (the library's V_s = V: the contact moves
 // along +x over both); the creepage's O(xi) difference of the body's surface speed is
 // neglected.
+#include <string>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 #include "case_model.hpp"
@@ -21,6 +24,16 @@ namespace dc::runs {
 /// quasi-static step) has no flux: {"max_rise": null, "note"}.
 nlohmann::json flash_temperature(const ThermalSpec& t, const Grid& grid, output::StaticFields& fields,
                                  double base_speed, double body_speed);
+
+/// The power density q (W/m^2) of `fields`: dissipation x dissipation_rate, negative
+/// round-off shares set to 0.
+std::vector<double> power_density(const output::StaticFields& fields);
+
+/// flash_temperature's entry for the maps `r` of the flux `q`; `model` its "operator" (dense,
+/// fft, transient).
+nlohmann::json flash_entry(const ThermalSpec& t, const Grid& grid, const std::vector<double>& q,
+                           const FlashTemperatureResult& r, double base_speed, double body_speed,
+                           const std::string& model);
 
 /// summary.json's "temperature" of a rolling case's final state: both surfaces at the rolling speed.
 nlohmann::json add_flash_temperature(const Case& c, const Grid& grid, output::StaticFields& fields);
