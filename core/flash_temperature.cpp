@@ -18,22 +18,22 @@ void flash_statistics(const std::vector<double>& T, const std::vector<double>& q
                       double& mean) {
   max = T.empty() ? 0.0 : T[0];
   where = 0;
-  double sum = 0.0;
-  std::size_t heated = 0;
-  for (std::size_t e = 0; e < T.size(); ++e) {
+  for (std::size_t e = 0; e < T.size(); ++e)
     if (T[e] > max) {
       max = T[e];
       where = e;
     }
-    if (q[e] > 0.0) {
-      sum += T[e];
-      ++heated;
-    }
-  }
-  mean = heated > 0 ? sum / static_cast<double>(heated) : 0.0;
+  mean = heated_mean(T, q);
 }
 
-double flash_heated_mean(const std::vector<double>& T, const std::vector<double>& q) {
+double flash_max(const std::vector<double>& T) {
+  double m = T.empty() ? 0.0 : T[0];
+  for (double v : T) m = std::max(m, v);
+  return m;
+}
+}  // namespace
+
+double heated_mean(const std::vector<double>& T, const std::vector<double>& q) {
   double sum = 0.0;
   std::size_t heated = 0;
   for (std::size_t e = 0; e < T.size(); ++e)
@@ -43,13 +43,6 @@ double flash_heated_mean(const std::vector<double>& T, const std::vector<double>
     }
   return heated > 0 ? sum / static_cast<double>(heated) : 0.0;
 }
-
-double flash_max(const std::vector<double>& T) {
-  double m = T.empty() ? 0.0 : T[0];
-  for (double v : T) m = std::max(m, v);
-  return m;
-}
-}  // namespace
 
 FlashTemperature::FlashTemperature(const Grid& grid, const ThermalSurface& base, const ThermalSurface& body,
                                    OperatorKind kind, const std::string& base_key, const std::string& body_key)
@@ -142,8 +135,8 @@ FlashTemperatureResult FlashTemperature::compute(const std::vector<double>& heat
     case HeatPartition::Rule::equal_mean:
     case HeatPartition::Rule::equal_max: {
       const bool mean = partition.rule == HeatPartition::Rule::equal_mean;
-      const double mb = mean ? flash_heated_mean(base_full, heat_flux) : flash_max(base_full);
-      const double md = mean ? flash_heated_mean(body_full, heat_flux) : flash_max(body_full);
+      const double mb = mean ? heated_mean(base_full, heat_flux) : flash_max(base_full);
+      const double md = mean ? heated_mean(body_full, heat_flux) : flash_max(body_full);
       f = mb + md > 0.0 ? md / (mb + md) : 0.5;  // no heat: every fraction gives equal (zero) temperatures
       break;
     }
@@ -156,7 +149,7 @@ FlashTemperatureResult FlashTemperature::compute(const std::vector<double>& heat
   r.base_flux_fraction.assign(N, f);
   if (partition.rule == HeatPartition::Rule::pointwise && r.heated_elements > 0) {
     // The equal-mean share starts GMRES.
-    const double mb = flash_heated_mean(base_full, heat_flux), md = flash_heated_mean(body_full, heat_flux);
+    const double mb = heated_mean(base_full, heat_flux), md = heated_mean(body_full, heat_flux);
     const std::vector<double> g = pointwise_base_flux(heat_flux, body_full, md / (mb + md), partition.dense_limit);
     std::vector<double> rest(N);
     double into_base = 0.0;

@@ -104,4 +104,7 @@ class FlashTemperature {
   std::unique_ptr<LinearOperator> base_op_, body_op_;
 };
 
+/// The mean of T over the heated elements (q > 0); 0 when none is heated.
+double heated_mean(const std::vector<double>& T, const std::vector<double>& q);
+
 }  // namespace dc

@@ -8,17 +8,6 @@
 namespace dc {
 namespace {
 
-double transient_heated_mean(const std::vector<double>& T, const std::vector<double>& q) {
-  double sum = 0.0;
-  std::size_t heated = 0;
-  for (std::size_t e = 0; e < T.size(); ++e)
-    if (q[e] > 0.0) {
-      sum += T[e];
-      ++heated;
-    }
-  return heated > 0 ? sum / static_cast<double>(heated) : 0.0;
-}
-
 /// max over the grid of a + c b.
 double transient_max(const std::vector<double>& a, double c, const std::vector<double>& b) {
   double m = a.empty() ? 0.0 : a[0] + c * b[0];
@@ -54,9 +43,9 @@ double TransientFlashTemperature::fraction(const std::vector<double>& q) const {
     case HeatPartition::Rule::fixed:
       return partition_.base_fraction;
     case HeatPartition::Rule::equal_mean: {
-      const double rb = transient_heated_mean(response_base_, q), rd = transient_heated_mean(response_body_, q);
+      const double rb = heated_mean(response_base_, q), rd = heated_mean(response_body_, q);
       if (!(rb + rd > 0.0)) return 0.5;  // no heat this step: any fraction
-      const double f = (transient_heated_mean(free_body_, q) + rd - transient_heated_mean(free_base_, q)) / (rb + rd);
+      const double f = (heated_mean(free_body_, q) + rd - heated_mean(free_base_, q)) / (rb + rd);
       return std::clamp(f, 0.0, 1.0);
     }
     case HeatPartition::Rule::equal_max: {
