@@ -344,6 +344,32 @@ void ContactWrench::evaluate_at(const StepKinematics& k, double vertical_load) {
   if (!same) evaluate(k, vertical_load);
 }
 
+ContactState ContactWrench::initial_contact(const StepKinematics& k) {
+  if (spec_.normal_model != NormalModel::dynamic) return {};
+  orient(k);
+  last_ = k;
+  if (!(contact_function() > 0.0)) return {};
+  // At rest: the solve's rigid slip and travel vanish (dt only scales them); the model choice
+  // (auto) waits for the first step's travel, and the memory stays the unloaded one.
+  const bool resolved = model_resolved_, steady = steady_;
+  StepKinematics at_rest = k;
+  at_rest.velocity.setZero();
+  at_rest.omega.setZero();
+  begin_step(1.0);
+  evaluate(at_rest, 0.0);
+  audit_energy();
+  ContactState initial = state_;
+  initial.frictional_work = 0.0;
+  initial.fields = nullptr;
+  initial.pressure = nullptr;
+  model_resolved_ = resolved;
+  steady_ = steady;
+  if (tangential_) tangential_->restore(committed_);
+  state_ = ContactState{};
+  has_kept_sensitivity_ = false;
+  return initial;
+}
+
 double ContactWrench::contact_function() const {
   if (spec_.normal_model == NormalModel::quasi_static) return std::numeric_limits<double>::quiet_NaN();
   const std::vector<double>& heights = this->heights();

@@ -78,6 +78,13 @@ class ContactWrench {
   /// The contact at `k` without committing it (the last evaluation's when it was at `k`): what
   /// accept(k, ...) would take, for deciding on the step first (adaptive steps).
   void evaluate_at(const StepKinematics& k, double vertical_load);
+  /// The contact of the initial state `k` for the energy audit (dynamic normal model): a body that
+  /// starts pressed into the half-space (contact_function() > 0) stores elastic energy at t = 0
+  /// and presses on it with a wrench there. Solved at rest (no slip, no traction memory; with
+  /// kappa != 0 the traction the indentation itself makes), its wrench and elastic_energy returned
+  /// and nothing committed (the first step starts from the unloaded memory, as before). Touching,
+  /// above, or the quasi-static normal model: none (a default ContactState).
+  ContactState initial_contact(const StepKinematics& k);
   /// The event function of contact at the last evaluation (dynamic normal model): the approach
   /// centre_height - z less the smallest undeformed gap of the grid's elements, positive when
   /// an element is in contact (m); NaN for the quasi-static normal model.

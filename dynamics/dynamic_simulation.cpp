@@ -173,8 +173,9 @@ void DynamicSimulation::record_step(Run& run, const RigidBodyState& state, const
   e.work_of_loads = run.external_work;
   e.kinetic_change = sample.kinetic_energy - run.initial_kinetic;
   e.elastic = cs.elastic_energy;
+  e.elastic_initial = run.initial_elastic;
   e.dissipated = run.dissipated;
-  e.numerical_damping = e.work_of_loads - e.kinetic_change - e.elastic - e.dissipated;
+  e.numerical_damping = e.work_of_loads - e.kinetic_change - (e.elastic - e.elastic_initial) - e.dissipated;
   sample.frictional_power = sums.duration > 0.0 ? sums.dissipated / sums.duration : 0.0;
   if (sample.frictional_power > result.peak_frictional_power) {
     result.peak_frictional_power = sample.frictional_power;
@@ -205,6 +206,16 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
   const RigidBody& body = stepper_.body();
   const double ke0 = kinetic_energy(body, run.state);
   run.initial_kinetic = ke0;
+  {
+    // A body started pressed in: the energy it stores and the wrench the first step's work starts from.
+    const RigidBodyState& s0 = run.state;
+    const ContactState initial =
+        contact_.initial_contact({s0.position, s0.orientation, s0.velocity, s0.omega, s0.time});
+    run.initial_elastic = initial.elastic_energy;
+    run.largest_elastic = initial.elastic_energy;
+    run.contact_at_step_start = initial.wrench;
+    result.energy.elastic = result.energy.elastic_initial = initial.elastic_energy;
+  }
   if (spec_.adaptive) run_adaptive(run);
   else run_fixed(run);
   const RigidBodyState& state = run.state;

@@ -19,14 +19,16 @@ namespace dc::dynamics {
 /// The energy audit of a run from t = 0 (docs/wear_energy.md "Dynamic runs"): the work of the
 /// applied loads goes into the kinetic energy (translational and rotational), the contact's
 /// stored elastic energy, the frictional work dissipated in the contact, and the scheme's own
-/// numerical damping, the residual (bdf1 damps at O(dt), bdf2 at O(dt^2)). The contact starts
-/// unloaded (nothing stored at t = 0).
+/// numerical damping, the residual (bdf1 damps at O(dt), bdf2 at O(dt^2)). A body that starts
+/// pressed into the half-space stores elastic energy at t = 0 (ContactWrench::initial_contact).
 struct EnergyAudit {
   double work_of_loads = 0.0;      ///< of the applied force and moment (trapezoidal over each step; J, 2-D J/m)
   double kinetic_change = 0.0;     ///< KE - KE(0)
   double elastic = 0.0;            ///< the contact's stored elastic energy now
+  double elastic_initial = 0.0;    ///< stored at t = 0 (0 unless the body starts pressed in)
   double dissipated = 0.0;         ///< sum of the steps' frictional work -sum tau . ds A
-  /// work_of_loads - kinetic_change - elastic - dissipated: what the scheme took (> 0) or gave.
+  /// work_of_loads - kinetic_change - (elastic - elastic_initial) - dissipated: what the scheme
+  /// took (> 0) or gave.
   double numerical_damping = 0.0;
 };
 

@@ -18,8 +18,8 @@ struct DynamicSimulation::Run {
   RigidBodyState state;
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
   double impulse_size = 0.0, external_work = 0.0, contact_work = 0.0;
-  double initial_kinetic = 0.0, dissipated = 0.0, largest_elastic = 0.0;
-  Wrench contact_at_step_start;  // the last accepted step's contact wrench (none before the first)
+  double initial_kinetic = 0.0, initial_elastic = 0.0, dissipated = 0.0, largest_elastic = 0.0;
+  Wrench contact_at_step_start;  // the last accepted step's contact wrench (before the first: t = 0's)
 };
 
 }  // namespace dc::dynamics

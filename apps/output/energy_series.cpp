@@ -16,8 +16,8 @@ void put_row(std::ostream& out, double t, double kinetic, double elastic, double
 
 }  // namespace
 
-void append_energy_start(std::ostream& out, double time, double kinetic) {
-  put_row(out, time, kinetic, 0.0, 0.0, 0.0, 0.0);
+void append_energy_start(std::ostream& out, double time, double kinetic, double elastic) {
+  put_row(out, time, kinetic, elastic, 0.0, 0.0, 0.0);
 }
 
 void append_energy_row(std::ostream& out, const dynamics::DynamicSample& s) {

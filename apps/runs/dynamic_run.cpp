@@ -56,7 +56,7 @@ json energy_json(const dynamics::DynamicResult& r) {
           {"audit",
            {{"work_of_loads", e.work_of_loads},
             {"kinetic_change", e.kinetic_change},
-            {"elastic_change", e.elastic},
+            {"elastic_change", e.elastic - e.elastic_initial},
             {"dissipated", e.dissipated},
             {"numerical_damping", e.numerical_damping},
             {"relative_residual", r.energy_relative_residual}}}};
@@ -95,7 +95,8 @@ DynamicOutcome simulate_dynamic(const Case& c, bool progress,
   {
     std::ostringstream text;
     text << output::kEnergyColumns;
-    output::append_energy_start(text, out.result.initial.time, dynamics::kinetic_energy(sim.body(), out.result.initial));
+    output::append_energy_start(text, out.result.initial.time, dynamics::kinetic_energy(sim.body(), out.result.initial),
+                                out.result.energy.elastic_initial);
     text << energy.str();
     out.energy = text.str();
   }
