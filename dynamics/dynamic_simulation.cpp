@@ -206,6 +206,7 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
   const RigidBody& body = stepper_.body();
   const double ke0 = kinetic_energy(body, run.state);
   run.initial_kinetic = ke0;
+  bool start_known = true;
   {
     // A body started pressed in: the energy it stores and the wrench the first step's work starts from.
     const RigidBodyState& s0 = run.state;
@@ -215,9 +216,16 @@ DynamicResult DynamicSimulation::run(const std::function<void(const DynamicSampl
     run.largest_elastic = initial.elastic_energy;
     run.contact_at_step_start = initial.wrench;
     result.energy.elastic = result.energy.elastic_initial = initial.elastic_energy;
+    result.worst_certificate = initial.certificate;
+    start_known = initial.converged;
+    if (!start_known)
+      result.status = "stopped at t = 0 s: the contact solve of the body started pressed into the half-space did not "
+                      "converge (" + initial.message + "); its stored energy and force are not known";
   }
-  if (spec_.adaptive) run_adaptive(run);
-  else run_fixed(run);
+  if (start_known) {
+    if (spec_.adaptive) run_adaptive(run);
+    else run_fixed(run);
+  }
   const RigidBodyState& state = run.state;
   result.time_steps.accepted = result.steps;
   result.time_steps.rejected = result.rejected_steps;

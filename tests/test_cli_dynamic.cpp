@@ -117,5 +117,23 @@ TEST_F(CliDynamic, UnconvergedStepStopsWithPartialResults) {
   EXPECT_TRUE(fs::exists(dir_ / "out" / "timeseries.csv"));
 }
 
+TEST_F(CliDynamic, UnconvergedPressedInStartStopsBeforeTheFirstStep) {
+  // A ball started 5 um inside (a fifth of the impact's approach): the contact at t = 0 gives the
+  // stored energy and the first step's force. One solver iteration cannot certify it, so the run
+  // stops at t = 0 with exit 3 rather than audit its energy from an unconverged solve.
+  const CliResult r = run("solve " + case_file([](json& d) {
+                            d["body"]["initial"]["position"] = {0, 0, 0.01 - 5e-6};
+                            d["solver"] = {{"max_iter", 1}, {"fallback", false}};
+                          }) + " --out out -q");
+  EXPECT_EQ(r.code, 3) << r.err;
+  const json s = json::parse(slurp(dir_ / "out" / "summary.json"));
+  EXPECT_EQ(s["status"], "stopped");
+  const std::string message = s["message"].get<std::string>();
+  EXPECT_NE(message.find("t = 0 s"), std::string::npos) << message;
+  EXPECT_NE(message.find("pressed into the half-space"), std::string::npos) << message;
+  EXPECT_EQ(s["steps"].get<int>(), 0);
+  EXPECT_GT(s["solver"]["certificate"]["worst"].get<double>(), 1e-6) << "the t = 0 solve's certificate";
+}
+
 }  // namespace
 }  // namespace dc::test
