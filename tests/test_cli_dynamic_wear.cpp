@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <map>
+#include <utility>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -179,6 +180,67 @@ TEST_F(CliDynamicWear, AWheelsWornCircumferenceRaisesTheApproachByItsDepthOnceAR
   EXPECT_NEAR(worn.at("wear").at("body").at("volume").get<double>() /
                   (k / (kMu * kH) * worn.at("energy").at("dissipated").get<double>()),
               1.0, 1e-9);
+}
+
+TEST_F(CliDynamicWear, ATrackWornSidewaysOrAslantIsTheTrackWornAlongXTurned) {
+  // bowling-ball (16^2, a = 1.4 mm) launched sliding at 0.5 m/s without spin, 50 steps of 2 ms
+  // (transient model: it rolls after 73 ms): along +x, along +y (pure lateral motion) and aslant
+  // (0.4, 0.3). The half-space's map is in world coordinates, so the three tracks are one track
+  // turned: the same volume (k/(mu H) x each run's dissipation, round-off), the same deepest wear
+  // (0.1 % sideways, where the rows and cells swap their binning; 1 % aslant, cells 0.23 mm across
+  // a 2.8 mm track), the same length and width (a cell), and every worn cell aslant within a cell
+  // of the contact's path. (With the rows kept in the grid's frame, the sideways track would pile
+  // into the 16 rows under the ball, 8 times deeper.)
+  auto slide = [&](double vx, double vy) {
+    json c = dc::test::example_json("bowling-ball");
+    c["body"]["initial"]["velocity"] = {vx, vy, 0.0};
+    c["time"]["t_end"] = 0.1;
+    c["contact_model"] = "transient";
+    c["output"] = {{"plots", false}};
+    c["wear"] = {{"law", "archard"}, {"k", 1e-4}, {"hardness", 1e8}};
+    const json s = solve(c);
+    EXPECT_EQ(s.at("status"), "completed");
+    EXPECT_NEAR(s.at("wear").at("base").at("volume").get<double>() /
+                    (1e-4 / (0.2 * 1e8) * s.at("energy").at("dissipated").get<double>()),
+                1.0, 1e-9);
+    return std::pair{s, csv_rows(slurp(dir_ / "out" / "wear.csv"))};
+  };
+  struct Extent {
+    double along_lo = 1e9, along_hi = -1e9, across_lo = 1e9, across_hi = -1e9, farthest = 0.0;
+  };
+  auto extent = [](const std::vector<std::map<std::string, double>>& cells, double ux, double uy) {
+    Extent e;
+    for (const auto& cell : cells) {
+      if (!(cell.at("base") > 0.0)) continue;
+      const double along = cell.at("x") * ux + cell.at("y") * uy, across = cell.at("y") * ux - cell.at("x") * uy;
+      e.along_lo = std::min(e.along_lo, along);
+      e.along_hi = std::max(e.along_hi, along);
+      e.across_lo = std::min(e.across_lo, across);
+      e.across_hi = std::max(e.across_hi, across);
+      e.farthest = std::max(e.farthest, std::abs(across));
+    }
+    return e;
+  };
+  const auto [along_x, x_cells] = slide(0.5, 0.0);
+  const auto [along_y, y_cells] = slide(0.0, 0.5);
+  const auto [aslant, slant_cells] = slide(0.4, 0.3);
+  const double cell = along_x.at("wear").at("base").at("cell").get<double>();
+  const double volume = along_x.at("wear").at("base").at("volume").get<double>();
+  const double deepest = along_x.at("wear").at("base").at("max_depth").get<double>();
+  const Extent ex = extent(x_cells, 1.0, 0.0), ey = extent(y_cells, 0.0, 1.0), es = extent(slant_cells, 0.8, 0.6);
+  ASSERT_GT(ex.along_hi - ex.along_lo, 20.0 * (ex.across_hi - ex.across_lo) / 2.0) << "a track, not a scar";
+  for (const auto* run : {&along_y, &aslant}) {
+    const json& base = run->at("wear").at("base");
+    EXPECT_NEAR(base.at("volume").get<double>() / volume, 1.0, 1e-3);
+    EXPECT_NEAR(base.at("max_depth").get<double>() / deepest, 1.0, run == &along_y ? 1e-3 : 1e-2);
+  }
+  for (const Extent* e : {&ey, &es}) {
+    EXPECT_NEAR(e->along_lo, ex.along_lo, 1.5 * cell);
+    EXPECT_NEAR(e->along_hi, ex.along_hi, 1.5 * cell);
+  }
+  EXPECT_NEAR(ey.across_lo, ex.across_lo, 1.01 * cell);
+  EXPECT_NEAR(ey.across_hi, ex.across_hi, 1.01 * cell);
+  EXPECT_LT(es.farthest, ex.farthest + 1.5 * cell) << "aslant: the worn cells along the contact's path";
 }
 
 TEST_F(CliDynamicWear, BadDynamicWearBlocksAreInputErrorsNamingTheKey) {

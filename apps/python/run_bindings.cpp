@@ -117,9 +117,10 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
     if (!out.result.interrupted) field.add_entries(grid, {}, out.summary);
   }
   py::dict result = to_python(out.summary);
-  // The worn depths (m) as wear.csv and wear_body.csv hold them: fields["wear_base"] (rows y,
-  // columns the track's world x, fields["wear_base_x"]) and fields["wear_body"] (columns the arc
-  // s round the circumference, fields["wear_body_s"]); 2-D: one row.
+  // The worn depths (m) as wear.csv and wear_body.csv hold them: fields["wear_base"] (rows the
+  // track's world y, fields["wear_base_y"], columns its world x, fields["wear_base_x"]) and
+  // fields["wear_body"] (columns the arc s round the circumference, fields["wear_body_s"]); 2-D:
+  // one row.
   if (wear.wanted()) {
     py::dict fields;
     for (const auto& [name, axis, strip] : {std::tuple{"wear_base", "wear_base_x", wear.base()},
@@ -129,6 +130,11 @@ py::dict run_dynamic_case(const Case& c, bool progress) {
       for (int i = 0; i < strip.grid.nx; ++i) at[static_cast<std::size_t>(i)] = strip.grid.xc(i);
       fields[name] = grid_array(strip.grid, strip.depth);
       fields[axis] = py::array_t<double>(static_cast<py::ssize_t>(at.size()), at.data());
+      if (std::string(name) == "wear_base" && strip.grid.dimension == 3) {
+        std::vector<double> across(static_cast<std::size_t>(strip.grid.ny));
+        for (int j = 0; j < strip.grid.ny; ++j) across[static_cast<std::size_t>(j)] = strip.grid.yc(j);
+        fields["wear_base_y"] = py::array_t<double>(static_cast<py::ssize_t>(across.size()), across.data());
+      }
     }
     result["fields"] = fields;
   }

@@ -1,7 +1,7 @@
 """The "wear" block from Python: the worn depth maps in r['fields'] (wear_base, wear_body, m) and
 wear.csv in the output folder, as `dyncontact solve` writes it; the summary's volume is the
 map's sum times the element area. Steady rolling's maps are on the grid, uniform along x; a
-dynamic run's are the track's along world x (wear_base_x) and the body's round its circumference
+dynamic run's are the track's in world x and y (wear_base_x, wear_base_y) and the body's round its circumference
 (wear_body_s)."""
 import numpy as np
 import pytest
@@ -68,6 +68,7 @@ def test_dynamic_wear_maps_reach_python_in_each_bodys_frame():
     track, x = f["wear_base"], f["wear_base_x"]
     wheel, s = f["wear_body"], f["wear_body_s"]
     assert track.shape == (12, x.size) and wheel.shape == (12, s.size)
+    assert np.allclose(f["wear_base_y"], -0.0055 + 0.001 * np.arange(12), rtol=0, atol=1e-12)  # world y
     assert s.size == r["wear"]["body"]["cells"]
     assert x[0] < 0.01 and x[-1] == pytest.approx(r["wear"]["travel"], abs=2e-3)
     dy = 0.012 / 12
