@@ -9,9 +9,12 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <filesystem>
 #include <functional>
+#include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -276,6 +279,78 @@ TEST_F(CliWear, UpdateCyclesBoundsTheJumpsAndTheWornVolumeAddsUp) {
     EXPECT_NEAR(w.at("body").at("volume").get<double>() / sum, 1.0, 1e-12);
     EXPECT_FALSE(w.contains("base"));
   }
+}
+
+TEST_F(CliWear, TheWornProfilesEvolutionIsWrittenAfterTheUpdatesThinnedToSixtyFour) {
+  // 100 cycles of +-0.5 mu P updated every cycle (32^2): 100 updates, of which every second one's
+  // worn depth is kept once 64 would be passed (updates 0, 2, ..., 98) and the last (99): 51
+  // images in wear.pvd at 1, 3, ..., 99 and 100 cycles. The profile along the centre line only
+  // deepens from one to the next (fretting removes material), the last is wear.csv's, and wear.pvd
+  // lists the images in order with the cycles as time.
+  json c = sphere(32, 1.1);
+  c["tangential"] = force_cycle(0.5 * kMu * kP);
+  c["wear"] = {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"bodies", {"base"}}, {"cycles", 100},
+               {"cycle_from_step", 1}, {"update", {{"cycles", 1}}}};
+  c["output"] = {{"plots", true}};
+  const json s = solve(c);
+  ASSERT_EQ(s.at("wear").at("updates").get<int>(), 100);
+  const json& files = s.at("files");
+  EXPECT_EQ(files.at("wear_series"), "wear.pvd");
+  EXPECT_EQ(files.at("wear_profiles"), "wear_profiles.csv");
+  const std::string pvd = slurp(dir_ / "out" / "wear.pvd");
+  std::vector<long long> times;
+  for (std::size_t at = pvd.find("timestep=\""); at != std::string::npos; at = pvd.find("timestep=\"", at + 1))
+    times.push_back(std::stoll(pvd.substr(at + 10)));
+  ASSERT_EQ(times.size(), 51u);
+  for (std::size_t k = 0; k + 1 < times.size(); ++k) EXPECT_EQ(times[k], 2 * static_cast<long long>(k) + 1) << k;
+  EXPECT_EQ(times.back(), 100);
+  for (std::size_t k = 0; k < times.size(); ++k)
+    EXPECT_TRUE(std::filesystem::exists(dir_ / "out" / ("wear_" + std::to_string(k) + ".vti"))) << k;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "out" / "wear_51.vti"));
+  // wear_profiles.csv: cycles,x,base; 32 points per state.
+  std::istringstream rows(slurp(dir_ / "out" / "wear_profiles.csv"));
+  std::string line;
+  std::getline(rows, line);
+  EXPECT_EQ(line, "cycles,x,base");
+  std::map<long long, std::vector<double>> profiles;
+  std::vector<double> xs;
+  while (std::getline(rows, line)) {
+    long long cycles = 0;
+    double x = 0, d = 0;
+    char comma = 0;
+    std::istringstream(line) >> cycles >> comma >> x >> comma >> d;
+    profiles[cycles].push_back(d);
+    if (profiles.size() == 1) xs.push_back(x);
+  }
+  ASSERT_EQ(profiles.size(), 51u);
+  const std::vector<double>* before = nullptr;
+  for (const auto& [cycles, profile] : profiles) {
+    ASSERT_EQ(profile.size(), 32u) << cycles;
+    if (before) {
+      for (std::size_t i = 0; i < profile.size(); ++i) EXPECT_GE(profile[i], (*before)[i]) << cycles << " at " << i;
+    }
+    before = &profile;
+  }
+  EXPECT_GT(*std::max_element(before->begin(), before->end()), 0.0);
+  // The last profile is wear.csv's row nearest y = 0 (row 16 of 32: y = +dy / 2).
+  std::istringstream worn(slurp(dir_ / "out" / "wear.csv"));
+  std::getline(worn, line);
+  std::vector<double> centre;
+  double y_row = 1e9;
+  std::vector<std::pair<double, double>> cells;
+  while (std::getline(worn, line)) {
+    double x = 0, y = 0, d = 0;
+    char comma = 0;
+    std::istringstream(line) >> x >> comma >> y >> comma >> d;
+    if (y >= 0.0 && y < y_row) y_row = y;
+    cells.push_back({y, d});
+  }
+  for (const auto& [y, d] : cells)
+    if (y == y_row) centre.push_back(d);
+  ASSERT_EQ(centre.size(), 32u);
+  for (std::size_t i = 0; i < 32; ++i) EXPECT_NEAR(centre[i], (*before)[i], 1e-9 * (*before)[i] + 1e-30) << i;
+  const json& plots = files.at("plots");
+  EXPECT_NE(std::find(plots.begin(), plots.end(), "wear_evolution.svg"), plots.end());
 }
 
 TEST_F(CliWear, AnAnnularPunchTwistedInFullSlipWearsToTheSteadyPressure) {

@@ -146,7 +146,7 @@ int run_solve(const SolveArgs& args) {
   if (run.interrupted) s["status"] = "interrupted";
   nlohmann::json files = {{"summary", "summary.json"}};
   output::StaticFieldFiles surface{&run.fields, c.output.fields, run.history, c.output.power, &run.worn_base,
-                                   &run.worn_body};
+                                   &run.worn_body, &run.wear_series};
   output::write_static_field_files(dir, solved.grid, surface, files, s);
   std::vector<output::SubsurfaceBody> bodies;  // the subsurface block's field of the final state
   if (run.subsurface && c.subsurface.enabled) {  // subsurface.vti (evenly spaced depths) and the planes through the worst points
@@ -162,6 +162,7 @@ int run_solve(const SolveArgs& args) {
       planes = output::subsurface_plane_figures(dir, c.name, bodies);
     if (!run.worn_base.empty() || !run.worn_body.empty())
       planes.push_back(output::wear_figure(dir, c.name, solved.grid, run.worn_base, run.worn_body));
+    if (!run.wear_series.empty()) planes.push_back(output::wear_evolution_figure(dir, c.name, solved.grid, run.wear_series));
     for (const auto& p : output::write_static_plots(dir, plotted, run.fields.back(), planes))
       plots.push_back(std::filesystem::path(p).filename().string());
     files["plots"] = plots;

@@ -37,6 +37,7 @@ void write_static_field_files(const std::string& dir, const Grid& grid, const St
   if (!base.empty() || !body.empty()) {  // the worn depth of each body (wear_writer.hpp)
     write_wear(dir, grid, base, body);
     files["wear"] = "wear.csv";
+    if (what.wear_series) write_wear_series(dir, grid, *what.wear_series, {!base.empty(), !body.empty()}, files);
   }
 }
 

@@ -65,7 +65,7 @@ StaticSolve solve_static_case(const Case& c, const py::object& out, bool progres
   if (folder.lock) {  // summary.json last: complete or absent
     nlohmann::json files = {{"summary", "summary.json"}};
     output::StaticFieldFiles surface{&r.run.fields, true, r.run.history, r.solved.output.power, &r.run.worn_base,
-                                     &r.run.worn_body};
+                                     &r.run.worn_body, &r.run.wear_series};
     output::write_static_field_files(folder.dir, r.solved.grid, surface, files, r.summary);
     if (series && series->count() > 0) files["subsurface_series"] = series->collection();
     if (r.run.subsurface) runs::write_subsurface_files(folder.dir, c, *r.run.subsurface, files);
@@ -137,6 +137,21 @@ py::dict solve(const py::object& case_arg, const py::object& out, bool progress,
   if (!run.worn_base.empty()) fields["wear_base"] = grid_array(solved.grid, run.worn_base);
   if (!run.worn_body.empty()) fields["wear_body"] = grid_array(solved.grid, run.worn_body);
   result["fields"] = fields;
+  if (!run.wear_series.empty()) {  // the worn depth after the kept updates: wear.pvd's states
+    const dc::Grid& g = solved.grid;
+    const auto n = static_cast<py::ssize_t>(run.wear_series.size());
+    std::vector<py::ssize_t> shape = g.dimension == 2 ? std::vector<py::ssize_t>{n, g.nx}
+                                                       : std::vector<py::ssize_t>{n, g.ny, g.nx};
+    py::array_t<long long> cycles(n);
+    py::array_t<double> depth(shape);  // each state's map in grid order, as grid_array's
+    double* to = depth.mutable_data();
+    for (py::ssize_t k = 0; k < n; ++k) {
+      const dc::output::WornState& state = run.wear_series[static_cast<std::size_t>(k)];
+      cycles.mutable_data()[k] = state.cycles;
+      for (std::size_t e = 0; e < g.size(); ++e) *to++ = e < state.depth.size() ? state.depth[e] : 0.0;
+    }
+    result["wear_series"] = py::dict(py::arg("cycles") = cycles, py::arg("depth") = depth);
+  }
   enforce_summary_limits(summary, result, advice);
   enforce_accuracy_target(summary, result, advice);
   return result;

@@ -12,6 +12,7 @@
 #include "case_model.hpp"
 #include "solver_report.hpp"
 #include "static_fields.hpp"
+#include "wear_series_writer.hpp"
 #include "tangential_problem.hpp"
 
 namespace dc::runs {
@@ -65,6 +66,9 @@ struct StaticRun {
   std::optional<SubsurfaceSeries> subsurface_series;  ///< a history's: the worst over its states
   /// "wear" (wear_run.hpp): each body's worn depth (m per element of `grid`; empty: not worn).
   std::vector<double> worn_base, worn_body;
+  /// The worn depth after the profile updates (at most 64, evenly thinned, the last kept; see
+  /// wear_run.hpp); a body's depth: each worn body takes it.
+  std::vector<output::WornState> wear_series;
 };
 
 /// Runs a static case (normal, tangential, finite) with its accuracy block

@@ -56,6 +56,42 @@ std::vector<double> rolling_pass_depth(const WearLaw& law, const Grid& grid, con
   return depth;
 }
 
+/// The worn states kept over the updates: those of every stride-th update, the stride doubling
+/// (every other state dropped) whenever more than kKept would be kept, and the latest update's
+/// always (replaced by the next when it is off the stride): at most kKept states.
+class WornStates {
+ public:
+  static constexpr std::size_t kKept = 64;
+  void add(long long update, long long cycles, const std::vector<double>& depth) {
+    if (tentative_) {
+      states_.pop_back();
+      updates_.pop_back();
+    }
+    states_.push_back({cycles, depth});
+    updates_.push_back(update);
+    while (states_.size() > kKept) {  // keep every other state on the stride
+      std::vector<output::WornState> states;
+      std::vector<long long> updates;
+      stride_ *= 2;
+      for (std::size_t k = 0; k < states_.size(); ++k)
+        if (updates_[k] % stride_ == 0 || k + 1 == states_.size()) {
+          states.push_back(std::move(states_[k]));
+          updates.push_back(updates_[k]);
+        }
+      states_ = std::move(states);
+      updates_ = std::move(updates);
+    }
+    tentative_ = updates_.back() % stride_ != 0;
+  }
+  std::vector<output::WornState> take() { return std::move(states_); }
+
+ private:
+  std::vector<output::WornState> states_;
+  std::vector<long long> updates_;
+  long long stride_ = 1;
+  bool tentative_ = false;
+};
+
 }  // namespace
 
 StaticRun run_wear(const Case& c, bool progress) {
@@ -117,6 +153,7 @@ StaticRun run_wear(const Case& c, bool progress) {
 
   std::vector<TangentialSolution> cycle, solved;
   std::vector<WearUpdate> updates;
+  WornStates states;
   long long done = 0;
   bool interrupted = false;
   try {
@@ -153,6 +190,7 @@ StaticRun run_wear(const Case& c, bool progress) {
                          return v > std::max(c.solver.certificate_tol, 1e-12) * peak;
                        })) * c.grid.area();
       updates.push_back(std::move(u));
+      states.add(static_cast<long long>(updates.size()) - 1, done, worn);
       if (converged && done < w.cycles) update_gap(problem);
       updates.back().time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - cycle_start).count();
       if (!converged) break;  // a cycle the solver failed on wears nothing more: reported as is
@@ -182,6 +220,7 @@ StaticRun run_wear(const Case& c, bool progress) {
   out.grid = c.grid;
   if (w.base) out.worn_base = worn;
   if (w.body) out.worn_body = worn;
+  out.wear_series = states.take();
 
   nlohmann::json j = {{"law", to_string(w.law.kind)}, {"cycles", done}, {"updates", updates.size()},
                       {"cycle_from_step", first}};

@@ -76,3 +76,32 @@ def test_dynamic_wear_maps_reach_python_in_each_bodys_frame():
     assert track.sum() * (x[1] - x[0]) * dy == pytest.approx(expected, rel=1e-9)
     assert wheel.sum() * (s[1] - s[0]) * dy == pytest.approx(expected, rel=1e-9)
     assert r["wear"]["base"]["max_depth"] == track.max() > 0.0
+
+
+def test_the_worn_profiles_evolution_reaches_python_and_paraview(tmp_path):
+    # The fretting cycle of the first test for 10 cycles, updated every 2: five states, after 2,
+    # 4, ..., 10 cycles, each state's volume the summary's history entry's, the last the final
+    # map; the images in wear.pvd read back by VTK as ParaView opens them.
+    case = example("cattaneo-sphere")
+    case["grid"] = {"nx": 24, "ny": 24, "extent": 1.1}
+    case["accuracy"] = {"estimate": False}
+    case["output"] = {"plots": False}
+    case["tangential"] = {"regime": "shift",
+                          "history": [{"force": [-15.0, 0.0]}, {"force": [15.0, 0.0]}, {"force": [-15.0, 0.0]}]}
+    case["wear"] = {"law": "archard", "k": 1e-4, "hardness": 2e9, "bodies": ["base"], "cycles": 10,
+                    "cycle_from_step": 1, "update": {"cycles": 2}}
+    r = dyncontact.solve(case, out=tmp_path / "out")
+    series = r["wear_series"]
+    assert list(series["cycles"]) == [2, 4, 6, 8, 10]
+    assert series["depth"].shape == (5, 24, 24)
+    f = r["fields"]
+    dA = (f["x"][0, 1] - f["x"][0, 0]) * (f["y"][1, 0] - f["y"][0, 0])
+    for depth, entry in zip(series["depth"], r["wear"]["history"]):
+        assert depth.sum() * dA == pytest.approx(entry["volume"], rel=1e-12)
+    np.testing.assert_array_equal(series["depth"][-1], f["wear_base"])
+    assert np.all(np.diff(series["depth"], axis=0) >= 0.0)
+    from vtk_files import read_vti
+    image, arrays = read_vti(tmp_path / "out" / "wear_4.vti")
+    assert image.GetDimensions() == (24, 24, 1)
+    np.testing.assert_allclose(arrays["wear_base"].reshape(24, 24), series["depth"][-1], rtol=1e-6, atol=0.0)
+    assert (tmp_path / "out" / "wear.pvd").read_text().count("<DataSet") == 5
