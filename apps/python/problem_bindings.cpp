@@ -3,11 +3,14 @@
 #include <pybind11/stl.h>
 
 #include <array>
+#include <chrono>
+#include <memory>
 #include <cmath>
 #include <optional>
 #include <string>
 
 #include "friction_law.hpp"
+#include "heights_accuracy.hpp"
 #include "module_common.hpp"
 #include "normal_problem.hpp"
 #include "python_limits.hpp"
@@ -93,6 +96,7 @@ struct NormalResult {
   Grid grid;
   NormalSolution s;
   nlohmann::json limits;  ///< contact_limits of the solution
+  nlohmann::json accuracy;  ///< solve(estimate=True): summary.json's accuracy block; null otherwise
 };
 struct TangentialResult {
   Grid grid;
@@ -106,6 +110,9 @@ struct PyNormalProblem {
   Grid grid;
   NormalProblem problem;
   bool allow_edge_contact = false;
+  // What the error estimate sets up again on coarser grids (runs/heights_accuracy.hpp).
+  std::vector<double> heights;
+  std::shared_ptr<runs::HeightsAccuracy> accuracy;  // its coarse problems
 };
 struct PyTangentialProblem {
   TangentialProblem problem;
@@ -191,7 +198,12 @@ void bind_problems(py::module_& m) {
       .def_property_readonly("converged", [](const NormalResult& r) { return r.s.report.status == SolveStatus::converged; })
       .def_property_readonly("report", [](const NormalResult& r) { return to_python(output::to_json(r.s.report)); },
                              "the solver's report: backend, status, iterations, time_s, certificate, ...")
-      .def_property_readonly("limits", [](const NormalResult& r) { return to_python(r.limits); }, kLimitsDoc);
+      .def_property_readonly("limits", [](const NormalResult& r) { return to_python(r.limits); }, kLimitsDoc)
+      .def_property_readonly(
+          "accuracy", [](const NormalResult& r) { return r.accuracy.is_null() ? py::object(py::none()) : to_python(r.accuracy); },
+          "solve(estimate=True): the estimated discretisation error, as summary.json's 'accuracy' block\n"
+          "(quantities approach or force, max_pressure, contact_area with value, extrapolated,\n"
+          "error_estimate (relative), method, order; or 'unavailable' and why); None otherwise");
 
   py::class_<PyNormalProblem>(
       m, "NormalProblem",
@@ -203,33 +215,46 @@ void bind_problems(py::module_& m) {
       "ResultLimitError unless allow_edge_contact=True (see solve()).")
       .def(py::init([](const Grid& g, const MaterialPair& mat, const HeightArray& heights, const std::string& kind,
                        bool allow_edge_contact) {
-             return PyNormalProblem{g, NormalProblem(g, mat, heights_of(g, heights), operator_kind(kind)),
-                                    allow_edge_contact};
+             std::vector<double> h = heights_of(g, heights);
+             const OperatorKind operator_kind_given = operator_kind(kind);
+             return PyNormalProblem{g, NormalProblem(g, mat, h, operator_kind_given), allow_edge_contact, h,
+                                    std::make_shared<runs::HeightsAccuracy>(g, mat, operator_kind_given)};
            }),
            py::arg("grid"), py::arg("materials"), py::arg("heights"), py::arg("kind") = "auto",
            py::arg("allow_edge_contact") = false)
       .def(
           "solve",
           [](PyNormalProblem& self, const Opt& force, const Opt& approach, const std::string& backend, double tol,
-             double certificate_tol, int max_iter) {
+             double certificate_tol, int max_iter, bool estimate) {
             const NormalSpec load = normal_load(force, approach);
             const SolverOptions solver = solver_spec(backend, tol, certificate_tol, max_iter);
             NormalResult r = [&] {
               py::gil_scoped_release release;
-              return NormalResult{self.grid, self.problem.solve(load, solver), {}};
+              const auto start = std::chrono::steady_clock::now();
+              NormalResult out{self.grid, self.problem.solve(load, solver), {}, {}};
+              const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+              if (estimate) out.accuracy = self.accuracy->estimate(self.heights, load, solver, out.s, seconds);
+              return out;
             }();
             return checked(std::move(r), solver.certificate_tol, self.allow_edge_contact, "NormalProblem");
           },
           py::kw_only(), py::arg("force") = py::none(), py::arg("approach") = py::none(), py::arg("backend") = "auto",
           py::arg("tol") = 1e-9, py::arg("certificate_tol") = 1e-6, py::arg("max_iter") = 1000,
-          (std::string("solve(*, force=None, approach=None, ...) -> NormalSolution\n\n"
+          py::arg("estimate") = false,
+          (std::string("solve(*, force=None, approach=None, ..., estimate=False) -> NormalSolution\n\n"
                        "Force control (force=P, N; 2-D N/m; the approach is its multiplier) or approach control\n"
-                       "(approach=delta, m). ") +
+                       "(approach=delta, m). estimate=True: also the solution's .accuracy, the same load solved on\n"
+                       "grids of 2 and 4 times the element size, the heights carried to them by cubic\n"
+                       "interpolation (exact for a quadratic profile), at 0.25-0.4 of the solve's time (cost_fraction)\n"
+                       "(docs/accuracy.md). ") +
            kSolverArgs)
               .c_str())
       .def(
           "set_heights",
-          [](PyNormalProblem& self, const HeightArray& h) { self.problem.set_heights(heights_of(self.grid, h)); },
+          [](PyNormalProblem& self, const HeightArray& h) {
+            self.heights = heights_of(self.grid, h);
+            self.problem.set_heights(self.heights);
+          },
           py::arg("heights"), "set_heights(heights): move the body (a new undeformed gap, m)")
       .def_readwrite("allow_edge_contact", &PyNormalProblem::allow_edge_contact, kAllowEdgeContact)
       .def_property_readonly("grid", [](const PyNormalProblem& self) { return self.grid; });
