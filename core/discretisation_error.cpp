@@ -91,8 +91,16 @@ DiscretisationError estimate_discretisation_error(const std::vector<GridValue>& 
       const double observed = std::log(d2 / d1) / std::log(std::sqrt(r * r2));
       e.order = observed;
       e.method = "richardson";
-      p = std::min(observed, options.expected_order);
+      p = std::clamp(observed, std::min(options.smallest_order, options.expected_order), options.expected_order);
       safety = options.safety_three_grids;
+    } else if (options.order_bound_when_not_monotone) {
+      // No extrapolation; the bound of the differences at the expected order.
+      e.method = "band";
+      e.extrapolated = q0;
+      e.error = options.safety_three_grids *
+                std::max(std::abs(d1) / (std::pow(r, p) - 1.0), std::abs(d2) / ((std::pow(r2, p) - 1.0) * std::pow(r, p)));
+      e.relative_error = relative_to(e.error, e.value, options.scale);
+      return e;
     } else {
       return not_monotone(values, options);  // not in the asymptotic range: no extrapolation
     }

@@ -35,7 +35,8 @@ bool is_result_file(const std::string& name) {
       "subsurface.vti", "subsurface_base_xz.csv", "subsurface_base_yz.csv", "subsurface_body_xz.csv",
       "subsurface_body_yz.csv", "subsurface_base_xz.dat", "subsurface_base_yz.dat", "subsurface_body_xz.dat",
       "subsurface_body_yz.dat", "subsurface.pvd", "fields.vti", "fields.pvd", "energy.csv", "wear.csv",
-      "wear_x.dat", "temperature_x.dat", "wear_body.csv", "wear_s.dat"};
+      "wear_x.dat", "temperature_x.dat", "wear_body.csv", "wear_s.dat", "wear.pvd", "wear_profiles.csv",
+      "wear_evolution.dat"};
   static const char* figures[] = {"pressure_x", "pressure_y", "traction_x", "traction_y", "pressure_map",
                                   "contact_map", "subsurface_base_xz", "subsurface_base_yz", "subsurface_body_xz",
                                   "subsurface_body_yz", "F_bar", "l_bar", "v_bar",
@@ -43,14 +44,14 @@ bool is_result_file(const std::string& name) {
                                   "position", "velocity", "omega", "force", "moment", "creepage", "stick",
                                   "approach", "contact_area", "energy", "table_Fx", "table_Fy",
                                   // heat and wear
-                                  "temperature_x", "wear_x", "wear_s"};
+                                  "temperature_x", "wear_x", "wear_s", "wear_evolution"};
   if (fixed.count(name)) return true;
   for (const char* f : figures)
     for (const char* ext : {".svg", ".png"})
       if (name == std::string(f) + ext) return true;
   return numbered(name, "fields_", ".csv") || numbered(name, "timeseries_", ".csv") || numbered(name, "body_", ".vtu") ||
          numbered(name, "subsurface_", ".vti") || numbered(name, "fields_", ".vti") ||
-         numbered(name, "energy_", ".csv");
+         numbered(name, "energy_", ".csv") || numbered(name, "wear_", ".vti");
 }
 
 OutputFolder open_output_folder(const Case& c, const std::string& cli_out, const std::string& out_key) {

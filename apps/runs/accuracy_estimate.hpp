@@ -30,14 +30,22 @@ double element_size(const Grid& g);
 /// {"nx"} (3-D also "ny").
 nlohmann::json grid_json(const Grid& g);
 
+/// What the results are of: one contact solve (a static case, a problem's solve), or a dynamic
+/// run's peaks, whose values also carry the time steps' error.
+enum class EstimatedRun { contact, dynamic_peaks };
+
 /// Each result of the finest grid (per_level[0]) estimated from its values on the grids of
 /// `element_sizes`; with `shifted` (per level, the results of its shifted grids: 2-D) by the
 /// shifted-grid estimate. A result the case prescribes (the same on every grid) or one that is
 /// zero in the continuum (within its scale on every grid) is left out. In 2-D (`dimension`) a
-/// band is no smaller than the largest change between the grids.
+/// band is no smaller than the largest change between the grids; a 3-D contact's smooth results
+/// are credited with an order of 1.5 at least and bounded at the expected order when not monotone
+/// (ErrorEstimateOptions: smallest_order, order_bound_when_not_monotone; measured on contact
+/// solves, not on a dynamic run's peaks).
 std::vector<EstimatedQuantity> estimate_quantities(
     const std::vector<double>& element_sizes, const std::vector<std::vector<QuantityValue>>& per_level,
-    int dimension, const std::vector<std::vector<std::vector<QuantityValue>>>* shifted = nullptr);
+    int dimension, const std::vector<std::vector<std::vector<QuantityValue>>>* shifted = nullptr,
+    EstimatedRun run = EstimatedRun::contact);
 
 /// The "quantities" object: name -> {value, values, extrapolated, error_estimate,
 /// error_estimate_absolute, method, order}.

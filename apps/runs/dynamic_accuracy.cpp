@@ -126,7 +126,8 @@ Estimate estimate_on(const Case& c, const Grid& fine_grid, bool progress, const 
     sizes.push_back(element_size(l.grid));
     per_level.push_back(l.out.peaks);
   }
-  e.quantities = estimate_quantities(sizes, per_level, e.levels.front().grid.dimension);
+  e.quantities =
+      estimate_quantities(sizes, per_level, e.levels.front().grid.dimension, nullptr, EstimatedRun::dynamic_peaks);
   add_time_errors(c, e);
   return e;
 }
