@@ -14,18 +14,25 @@ import dyncontact
 from example_cases import SOURCE, example
 
 
-def test_dynamic_impact_lasts_hertz_duration():
-    # Johnson 11.4: delta_m = (15 m v0^2 / (16 E* R^1/2))^(2/5), contact time 2.9432 delta_m / v0,
-    # peak force 4/3 E* R^1/2 delta_m^3/2, elastic rebound at v0. 24^2 elements across 2.6 contact
-    # radii and 80 BDF2 steps over the impact: duration and peak within 2 %, rebound within 1 %.
+def ball_impact(n):
+    """The ball-impact case on n x n elements without plots, and its Hertz impact (Johnson 11.4):
+    m, R, v0, E*, the deepest approach delta_m = (15 m v0^2 / (16 E* R^1/2))^(2/5) and the contact
+    time 2.9432 delta_m / v0."""
     case = example("ball-impact")
-    case["grid"]["nx"] = case["grid"]["ny"] = 24
+    case["grid"]["nx"] = case["grid"]["ny"] = n
     case["output"] = {"plots": False}
     m, R, v0 = case["body"]["mass"], case["profile"]["radius"], -case["body"]["initial"]["velocity"][2]
     E, nu = case["materials"]["body"]["E"], case["materials"]["body"]["nu"]
     e_star = E / (2 * (1 - nu**2))
     delta = (15 * m * v0**2 / (16 * e_star * math.sqrt(R))) ** 0.4
-    duration = 2.9432 * delta / v0
+    return case, m, R, v0, e_star, delta, 2.9432 * delta / v0
+
+
+def test_dynamic_impact_lasts_hertz_duration():
+    # Johnson 11.4: peak force 4/3 E* R^1/2 delta_m^3/2, elastic rebound at v0. 24^2 elements across
+    # 2.6 contact radii and 80 BDF2 steps over the impact: duration and peak within 2 %, rebound
+    # within 1 %.
+    case, m, R, v0, e_star, delta, duration = ball_impact(24)
     peak = 4 / 3 * e_star * math.sqrt(R) * delta**1.5
     case["time"] = {"dt": duration / 80, "t_end": 1.1 * duration, "scheme": "bdf2"}
     r = dyncontact.DynamicSimulation(case).run()
@@ -126,16 +133,9 @@ def test_a_ball_started_pressed_in_stores_hertz_energy_and_says_when_its_start_i
     # steps per contact time): energy.csv's t = 0 row holds Hertz's (8/15) E* R^1/2 delta0^5/2
     # (1 %), the audit closes to 1e-3, and the ball leaves with that energy added (0.2 %). With one
     # solver iteration the t = 0 contact is not certified: the run stops before its first step.
-    case = example("ball-impact")
-    case["grid"]["nx"] = case["grid"]["ny"] = 16
-    case["output"] = {"plots": False}
-    m, R, v0 = case["body"]["mass"], case["profile"]["radius"], -case["body"]["initial"]["velocity"][2]
-    E, nu = case["materials"]["body"]["E"], case["materials"]["body"]["nu"]
-    e_star = E / (2 * (1 - nu**2))
-    delta = (15 * m * v0**2 / (16 * e_star * math.sqrt(R))) ** 0.4
+    case, m, R, v0, e_star, delta, duration = ball_impact(16)
     delta0 = delta / 2
     stored = 8 / 15 * e_star * math.sqrt(R) * delta0**2.5
-    duration = 2.9432 * delta / v0
     case["body"]["initial"]["position"] = [0, 0, R - delta0]
     case["time"] = {"dt": duration / 160, "t_end": 1.1 * duration, "scheme": "bdf2"}
     r = dyncontact.DynamicSimulation(case).run()

@@ -11,7 +11,9 @@ import dyncontact
 from example_cases import example
 
 
-def test_fretting_wear_maps_and_wear_csv(tmp_path):
+def fretting(cycles_per_update):
+    """cattaneo-sphere on 24^2 fretted at +-15 N (the first loading once) for 10 cycles, the base
+    worn by Archard's law, the profile updated every `cycles_per_update` cycles."""
     case = example("cattaneo-sphere")
     case["grid"] = {"nx": 24, "ny": 24, "extent": 1.1}
     case["accuracy"] = {"estimate": False}
@@ -19,7 +21,12 @@ def test_fretting_wear_maps_and_wear_csv(tmp_path):
     case["tangential"] = {"regime": "shift",
                           "history": [{"force": [-15.0, 0.0]}, {"force": [15.0, 0.0]}, {"force": [-15.0, 0.0]}]}
     case["wear"] = {"law": "archard", "k": 1e-4, "hardness": 2e9, "bodies": ["base"], "cycles": 10,
-                    "cycle_from_step": 1, "update": {"cycles": 5}}
+                    "cycle_from_step": 1, "update": {"cycles": cycles_per_update}}
+    return case
+
+
+def test_fretting_wear_maps_and_wear_csv(tmp_path):
+    case = fretting(5)
     r = dyncontact.solve(case, out=tmp_path / "out")
     f = r["fields"]
     assert "wear_body" not in f
@@ -82,14 +89,7 @@ def test_the_worn_profiles_evolution_reaches_python_and_paraview(tmp_path):
     # The fretting cycle of the first test for 10 cycles, updated every 2: five states, after 2,
     # 4, ..., 10 cycles, each state's volume the summary's history entry's, the last the final
     # map; the images in wear.pvd read back by VTK as ParaView opens them.
-    case = example("cattaneo-sphere")
-    case["grid"] = {"nx": 24, "ny": 24, "extent": 1.1}
-    case["accuracy"] = {"estimate": False}
-    case["output"] = {"plots": False}
-    case["tangential"] = {"regime": "shift",
-                          "history": [{"force": [-15.0, 0.0]}, {"force": [15.0, 0.0]}, {"force": [-15.0, 0.0]}]}
-    case["wear"] = {"law": "archard", "k": 1e-4, "hardness": 2e9, "bodies": ["base"], "cycles": 10,
-                    "cycle_from_step": 1, "update": {"cycles": 2}}
+    case = fretting(2)
     r = dyncontact.solve(case, out=tmp_path / "out")
     series = r["wear_series"]
     assert list(series["cycles"]) == [2, 4, 6, 8, 10]
