@@ -1,5 +1,6 @@
 #include "height_restriction.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dc {
@@ -57,6 +58,29 @@ std::optional<RestrictedHeights> restrict_heights(const Grid& fine, const std::v
       out.heights[out.grid.index(i, j)] =
           midway([&](int k) { return rows[static_cast<std::size_t>(i) + static_cast<std::size_t>(nx) * k]; }, 2 * j, fine.ny);
   return out;
+}
+
+double unresolved_height(const Grid& fine, const std::vector<double>& h, const std::vector<char>& in_contact) {
+  // Quintic minus cubic midpoint weights over the six nearest centres, /256: zero on cubics.
+  constexpr double w[6] = {3.0, -9.0, 6.0, 6.0, -9.0, 3.0};
+  double largest = 0.0;
+  const auto along = [&](int n_along, int n_across, auto index) {
+    for (int j = 0; j < n_across; ++j)
+      for (int k = 2; k + 3 < n_along; k += 2) {
+        if (!in_contact[index(k, j)] && !in_contact[index(k + 1, j)]) continue;
+        double sum = 0.0;
+        bool finite = true;
+        for (int m = 0; m < 6 && finite; ++m) {
+          const double v = h[index(k - 2 + m, j)];
+          finite = std::isfinite(v);
+          sum += w[m] * v;
+        }
+        if (finite) largest = std::max(largest, std::abs(sum) / 256.0);
+      }
+  };
+  along(fine.nx, fine.ny, [&](int i, int j) { return fine.index(i, j); });
+  if (fine.dimension == 3) along(fine.ny, fine.nx, [&](int j, int i) { return fine.index(i, j); });
+  return largest;
 }
 
 }  // namespace dc

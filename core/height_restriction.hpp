@@ -22,4 +22,13 @@ struct RestrictedHeights {
 /// None when an axis has an odd number of elements or fewer than 4 (3-D: either axis).
 std::optional<RestrictedHeights> restrict_heights(const Grid& fine, const std::vector<double>& heights);
 
+/// The height detail the grid of twice the element size does not carry where the body touches:
+/// at every coarse midpoint beside a fine element with `in_contact` set, the quintic through the
+/// six nearest fine centres (3, -25, 150, 150, -25, 3)/256 minus the cubic restrict_heights uses,
+/// along x on the rows and along y on the columns; the largest magnitude (m). Zero for a profile
+/// of degree 3 along each axis, O(h^4) of the fourth derivative for a smooth one, of the order
+/// of the amplitude for waviness a few elements long (which the coarse grids alias). Midpoints
+/// whose six centres are not all finite and on the grid are skipped.
+double unresolved_height(const Grid& fine, const std::vector<double>& heights, const std::vector<char>& in_contact);
+
 }  // namespace dc

@@ -2,6 +2,8 @@
 // the coarse heights of a profile cubic along each axis are its values at the coarse centres to
 // round-off (interior and edge stencils alike), a smooth profile's to fourth order; +inf (cannot
 // touch) spreads only to the coarse elements it covers; odd or short axes have no coarse grid.
+// The height detail the coarse grid does not carry (unresolved_height) is zero on cubics, falls at
+// fourth order on a smooth profile, and is the stencil's exact response on a waviness.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -68,6 +70,24 @@ TEST(HeightRestriction, OddOrShortAxesHaveNoCoarseGrid) {
   EXPECT_FALSE(restrict_heights(Grid::make(3, 15, 16, 0, 1, 0, 1), std::vector<double>(240, 0.0)));
   EXPECT_FALSE(restrict_heights(Grid::make(3, 16, 2, 0, 1, 0, 1), std::vector<double>(32, 0.0)));
   EXPECT_FALSE(restrict_heights(Grid::make(2, 2, 1, 0, 1, 0, 0), std::vector<double>(2, 0.0)));
+}
+
+TEST(HeightRestriction, TheDetailACoarseGridDoesNotCarryIsTheQuinticsCorrection) {
+  const Grid fine = Grid::make(3, 32, 24, -1.0, 1.0, -0.5, 1.0);
+  const std::vector<char> everywhere(fine.size(), 1), nowhere(fine.size(), 0);
+  EXPECT_LT(unresolved_height(fine, sampled(fine, cubic), everywhere), 1e-14);
+  EXPECT_EQ(unresolved_height(fine, sampled(fine, smooth), nowhere), 0.0);
+  const Grid finer = Grid::make(3, 64, 48, -1.0, 1.0, -0.5, 1.0);
+  const double ratio = unresolved_height(fine, sampled(fine, smooth), everywhere) /
+                       unresolved_height(finer, sampled(finer, smooth), std::vector<char>(finer.size(), 1));
+  EXPECT_NEAR(ratio, 16.0, 16.0 * 0.2);  // O(h^4)
+  // A waviness of six elements along x, cos(pi x / (3 dx)) (midpoints at its crests): the
+  // response 2 [3 cos(5 pi / 6) - 9 cos(pi / 2) + 6 cos(pi / 6)] / 256 = 3 sqrt(3) / 256.
+  const Grid line = Grid::make(3, 48, 8, 0.0, 48.0, 0.0, 8.0);  // dx = 1
+  std::vector<double> wave(line.size());
+  for (int j = 0; j < line.ny; ++j)
+    for (int i = 0; i < line.nx; ++i) wave[line.index(i, j)] = std::cos(M_PI * (line.xc(i) - 1.0) / 3.0);
+  EXPECT_NEAR(unresolved_height(line, wave, std::vector<char>(line.size(), 1)), 3.0 * std::sqrt(3.0) / 256.0, 1e-14);
 }
 
 }  // namespace

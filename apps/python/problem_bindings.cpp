@@ -15,6 +15,7 @@
 #include "normal_problem.hpp"
 #include "python_limits.hpp"
 #include "summary_entries.hpp"
+#include "tangential_accuracy.hpp"
 #include "tangential_problem.hpp"
 
 namespace dc::python {
@@ -102,6 +103,7 @@ struct TangentialResult {
   Grid grid;
   TangentialSolution s;
   nlohmann::json limits;
+  nlohmann::json accuracy;  ///< estimate=True: summary.json's accuracy block; null otherwise
 };
 
 /// A problem with the grid it was set up on (the C++ classes keep theirs private or by value)
@@ -117,6 +119,20 @@ struct PyNormalProblem {
 struct PyTangentialProblem {
   TangentialProblem problem;
   bool allow_edge_contact = false;
+  // Every call recorded, for the coarse grids' histories of an estimate (runs/tangential_accuracy.hpp).
+  std::shared_ptr<runs::TangentialAccuracy> accuracy;
+
+  /// `call` solved by `solve` (the fine problem's call), recorded, and estimated when asked.
+  template <typename Solve>
+  TangentialResult take(runs::TangentialCall call, bool estimate, Solve solve) {
+    py::gil_scoped_release release;
+    const auto start = std::chrono::steady_clock::now();
+    TangentialResult r{problem.grid(), solve(), {}, {}};
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    accuracy->record(std::move(call), r.s.report.backend);
+    if (estimate) r.accuracy = accuracy->estimate(r.s, seconds);
+    return r;
+  }
 };
 
 /// The end of a ResultLimitError's message from a problem class (its error limits are a
@@ -293,7 +309,12 @@ void bind_problems(py::module_& m) {
       })
       .def_property_readonly("report", [](const TangentialResult& r) { return to_python(output::to_json(r.s.report)); },
                              "the tangential solver's report (its certificate holds the normal residuals too)")
-      .def_property_readonly("limits", [](const TangentialResult& r) { return to_python(r.limits); }, kLimitsDoc);
+      .def_property_readonly("limits", [](const TangentialResult& r) { return to_python(r.limits); }, kLimitsDoc)
+      .def_property_readonly(
+          "accuracy", [](const TangentialResult& r) { return r.accuracy.is_null() ? py::object(py::none()) : to_python(r.accuracy); },
+          "estimate=True: the estimated discretisation error of the step, as summary.json's 'accuracy'\n"
+          "block (the normal quantities, and as bands Fx, Fy, Mz, the shift or creepage solved for, stick\n"
+          "and slip areas; or 'unavailable' and why); None otherwise");
 
   py::class_<PyTangentialProblem>(
       m, "TangentialProblem",
@@ -310,9 +331,12 @@ void bind_problems(py::module_& m) {
       "Forces are on the body (a shift in +x gives Fx < 0).")
       .def(py::init([](const Grid& g, const MaterialPair& mat, const HeightArray& heights, const Opt& mu,
                        const Opt& tresca, const std::string& kind, bool allow_edge_contact) {
-             return PyTangentialProblem{
-                 TangentialProblem(g, mat, heights_of(g, heights), friction_of(mu, tresca), operator_kind(kind)),
-                 allow_edge_contact};
+             std::vector<double> h = heights_of(g, heights);
+             const FrictionLaw friction = friction_of(mu, tresca);
+             const OperatorKind operator_kind_given = operator_kind(kind);
+             return PyTangentialProblem{TangentialProblem(g, mat, h, friction, operator_kind_given), allow_edge_contact,
+                                        std::make_shared<runs::TangentialAccuracy>(g, mat, std::move(h), friction,
+                                                                                   operator_kind_given)};
            }),
            py::arg("grid"), py::arg("materials"), py::arg("heights"), py::arg("mu") = py::none(),
            py::arg("tresca") = py::none(), py::arg("kind") = "auto", py::arg("allow_edge_contact") = false)
@@ -320,80 +344,87 @@ void bind_problems(py::module_& m) {
           "step",
           [](PyTangentialProblem& self, const Opt& force, const Opt& approach, const Opt& shift_x, const Opt& force_x,
              const Opt& shift_y, const Opt& force_y, const Opt& angle, const Opt& moment_z, const std::string& backend,
-             double tol, double certificate_tol, int max_iter) {
+             double tol, double certificate_tol, int max_iter, bool estimate) {
             TangentialLoad load;
             load.normal = normal_load(force, approach);
             load.modes = {mode(shift_x, "shift_x", force_x, "force_x"), mode(shift_y, "shift_y", force_y, "force_y"),
                           mode(angle, "angle", moment_z, "moment_z")};
             const SolverOptions solver = solver_spec(backend, tol, certificate_tol, max_iter);
-            TangentialResult r = [&] {
-              py::gil_scoped_release release;
-              return TangentialResult{self.problem.grid(), self.problem.step(load, solver), {}};
-            }();
+            runs::TangentialCall call{runs::TangentialCall::Kind::step, load, {}, 0.0, solver};
+            TangentialResult r = self.take(call, estimate, [&] { return self.problem.step(load, solver); });
             return checked(std::move(r), solver.certificate_tol, self.allow_edge_contact, "TangentialProblem");
           },
           py::kw_only(), py::arg("force") = py::none(), py::arg("approach") = py::none(),
           py::arg("shift_x") = py::none(), py::arg("force_x") = py::none(), py::arg("shift_y") = py::none(),
           py::arg("force_y") = py::none(), py::arg("angle") = py::none(), py::arg("moment_z") = py::none(),
           py::arg("backend") = "auto", py::arg("tol") = 1e-9, py::arg("certificate_tol") = 1e-6,
-          py::arg("max_iter") = 1000,
+          py::arg("max_iter") = 1000, py::arg("estimate") = false,
           (std::string("step(*, force|approach, shift_x|force_x, shift_y|force_y, angle|moment_z, ...) -> "
                        "TangentialSolution\n\n"
                        "One quasi-static step of the loading history (shift, torsion): amplitudes are TOTAL rigid\n"
-                       "displacements since the unloaded state. ") +
+                       "displacements since the unloaded state. "
+                       "estimate=True: also the solution's .accuracy, the same history taken on grids of 2 and 4\n"
+                       "times the element size (docs/accuracy.md \"Problems given by their heights\"). ") +
            kSolverArgs)
               .c_str())
       .def(
           "steady_rolling",
           [](PyTangentialProblem& self, const Opt& force, const Opt& approach, const Opt& creepage_x, const Opt& force_x,
              const Opt& creepage_y, const Opt& force_y, const Opt& spin, const Opt& moment_z, double velocity,
-             const std::string& backend, double tol, double certificate_tol, int max_iter) {
+             const std::string& backend, double tol, double certificate_tol, int max_iter, bool estimate) {
             const RollingLoad load =
                 rolling_load(force, approach, creepage_x, force_x, creepage_y, force_y, spin, moment_z, velocity);
             const SolverOptions solver = solver_spec(backend, tol, certificate_tol, max_iter);
-            TangentialResult r = [&] {
-              py::gil_scoped_release release;
-              return TangentialResult{self.problem.grid(), self.problem.steady_rolling(load, solver), {}};
-            }();
+            runs::TangentialCall call{runs::TangentialCall::Kind::steady_rolling, {}, load, 0.0, solver};
+            TangentialResult r =
+                self.take(call, estimate, [&] { return self.problem.steady_rolling(load, solver); });
             return checked(std::move(r), solver.certificate_tol, self.allow_edge_contact, "TangentialProblem");
           },
           py::kw_only(), py::arg("force") = py::none(), py::arg("approach") = py::none(),
           py::arg("creepage_x") = py::none(), py::arg("force_x") = py::none(), py::arg("creepage_y") = py::none(),
           py::arg("force_y") = py::none(), py::arg("spin") = py::none(), py::arg("moment_z") = py::none(),
           py::arg("velocity") = 1.0, py::arg("backend") = "auto", py::arg("tol") = 1e-9,
-          py::arg("certificate_tol") = 1e-6, py::arg("max_iter") = 1000,
+          py::arg("certificate_tol") = 1e-6, py::arg("max_iter") = 1000, py::arg("estimate") = false,
           (std::string("steady_rolling(*, force|approach, creepage_x|force_x, creepage_y|force_y, spin|moment_z,\n"
                        "               velocity=1.0, ...) -> TangentialSolution\n\n"
                        "Steady rolling in +x (Carter, Kalker): creepages and spin given, or the forces (then the\n"
-                       "creepages are solved for: solution.amplitudes). ") +
+                       "creepages are solved for: solution.amplitudes). "
+                       "estimate=True: also the solution's .accuracy, the same history taken on grids of 2 and 4\n"
+                       "times the element size (docs/accuracy.md \"Problems given by their heights\"). ") +
            kSolverArgs)
               .c_str())
       .def(
           "roll",
           [](PyTangentialProblem& self, double distance, const Opt& force, const Opt& approach, const Opt& creepage_x,
              const Opt& force_x, const Opt& creepage_y, const Opt& force_y, const Opt& spin, const Opt& moment_z,
-             double velocity, const std::string& backend, double tol, double certificate_tol, int max_iter) {
+             double velocity, const std::string& backend, double tol, double certificate_tol, int max_iter,
+             bool estimate) {
             const RollingLoad load =
                 rolling_load(force, approach, creepage_x, force_x, creepage_y, force_y, spin, moment_z, velocity);
             const SolverOptions solver = solver_spec(backend, tol, certificate_tol, max_iter);
-            TangentialResult r = [&] {
-              py::gil_scoped_release release;
-              return TangentialResult{self.problem.grid(), self.problem.roll(load, distance, solver), {}};
-            }();
+            runs::TangentialCall call{runs::TangentialCall::Kind::roll, {}, load, distance, solver};
+            TangentialResult r =
+                self.take(call, estimate, [&] { return self.problem.roll(load, distance, solver); });
             return checked(std::move(r), solver.certificate_tol, self.allow_edge_contact, "TangentialProblem");
           },
           py::arg("distance"), py::kw_only(), py::arg("force") = py::none(), py::arg("approach") = py::none(),
           py::arg("creepage_x") = py::none(), py::arg("force_x") = py::none(), py::arg("creepage_y") = py::none(),
           py::arg("force_y") = py::none(), py::arg("spin") = py::none(), py::arg("moment_z") = py::none(),
           py::arg("velocity") = 1.0, py::arg("backend") = "auto", py::arg("tol") = 1e-9,
-          py::arg("certificate_tol") = 1e-6, py::arg("max_iter") = 1000,
+          py::arg("certificate_tol") = 1e-6, py::arg("max_iter") = 1000, py::arg("estimate") = false,
           (std::string("roll(distance, *, the arguments of steady_rolling) -> TangentialSolution\n\n"
                        "Transient rolling: marches `distance` (m) in +x from the current state (memory kept),\n"
-                       "e.g. Cattaneo's state rolling into Carter's. ") +
+                       "e.g. Cattaneo's state rolling into Carter's. "
+                       "estimate=True: also the solution's .accuracy, the same history taken on grids of 2 and 4\n"
+                       "times the element size (docs/accuracy.md \"Problems given by their heights\"). ") +
            kSolverArgs)
               .c_str())
       .def(
-          "reset", [](PyTangentialProblem& self) { self.problem.reset(); },
+          "reset",
+          [](PyTangentialProblem& self) {
+            self.problem.reset();
+            self.accuracy->reset();
+          },
           "reset(): forget the loading history (back to the unloaded state)")
       .def_readwrite("allow_edge_contact", &PyTangentialProblem::allow_edge_contact, kAllowEdgeContact)
       .def_property_readonly("grid", [](const PyTangentialProblem& self) { return self.problem.grid(); });

@@ -75,6 +75,21 @@ std::vector<EstimatedQuantity> estimate_quantities(
   return out;
 }
 
+void floor_by_unresolved_height(std::vector<EstimatedQuantity>& quantities, double unresolved, double approach) {
+  if (!(unresolved > 0.0) || !std::isfinite(unresolved)) return;
+  for (EstimatedQuantity& q : quantities) {
+    const double floor = q.quantity.name == "approach"       ? unresolved
+                         : q.quantity.name == "normal_force" ? 1.5 * unresolved / std::abs(approach) * std::abs(q.error.value)
+                                                             : 0.0;
+    if (!(floor > q.error.error) || !std::isfinite(floor)) continue;
+    q.error.error = floor;
+    q.error.relative_error = floor / std::max(std::abs(q.error.value), q.quantity.scale);
+    q.error.extrapolated = q.error.value;
+    q.error.order.reset();
+    q.error.method = "band";
+  }
+}
+
 nlohmann::json quantities_json(const std::vector<EstimatedQuantity>& quantities) {
   nlohmann::json q = nlohmann::json::object();
   for (const auto& [value, err, per_grid] : quantities) {

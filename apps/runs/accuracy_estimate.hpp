@@ -47,6 +47,15 @@ std::vector<EstimatedQuantity> estimate_quantities(
     int dimension, const std::vector<std::vector<std::vector<QuantityValue>>>* shifted = nullptr,
     EstimatedRun run = EstimatedRun::contact);
 
+/// The results of a grid whose heights vary on the scale of the coarser grid's elements (a
+/// measured or wavy profile): `unresolved` (m) is the height detail the grid of twice the element
+/// size does not carry (unresolved_height, core/height_restriction.hpp). A gap perturbed by that
+/// much moves the approach by as much, which the grids' differences cannot tell from their
+/// discretisation error (the coarse grids alias it), so the approach's error is taken no less (the
+/// normal force's, under approach control, no less than 3/2 of it over the approach: Hertz's
+/// dP/P = 3/2 d delta/delta): then a band.
+void floor_by_unresolved_height(std::vector<EstimatedQuantity>& quantities, double unresolved, double approach);
+
 /// The "quantities" object: name -> {value, values, extrapolated, error_estimate,
 /// error_estimate_absolute, method, order}.
 nlohmann::json quantities_json(const std::vector<EstimatedQuantity>& quantities);

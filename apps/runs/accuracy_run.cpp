@@ -14,7 +14,9 @@
 #include "accuracy_quantities.hpp"
 #include "discretisation_error.hpp"
 #include "grid_interpolation.hpp"
+#include "heights_accuracy.hpp"
 #include "interrupt.hpp"
+#include "solve_case.hpp"
 #include "tangential_run.hpp"
 
 namespace dc::runs {
@@ -74,6 +76,13 @@ class GridSolves {
     s.seconds = seconds_since(start);
     return solved_[key] = std::move(s);
   }
+  /// The case's gap heights on `g` (contact_heights, unworn).
+  std::vector<double> heights(const Grid& g) const {
+    Case on_grid = case_;
+    on_grid.grid = g;
+    return contact_heights(on_grid);
+  }
+  double certificate_tol() const { return case_.solver.certificate_tol; }
 
  private:
   static bool same_bounds(const Grid& a, const Grid& b) {
@@ -175,6 +184,16 @@ Estimate estimate_on(GridSolves& solves, const Grid& fine_grid, const GridSolve*
   std::vector<double> sizes;
   for (const GridSolve* l : e.levels) sizes.push_back(element_size(l->grid));
   e.quantities = estimate_quantities(sizes, per_level, fine_grid.dimension, use_shifted ? &shifted : nullptr);
+  // A profile varying on the coarse grids' scale (a measured table): the approach is no more
+  // certain than the height detail they miss (2-D: the shifted grids sample the profile afresh).
+  const int peak = peak_load_step_index(fine.run.summary);
+  if (fine_grid.dimension == 3 && !fine.run.fields.empty()) {
+    const std::size_t k = peak < 0 ? fine.run.fields.size() - 1 : static_cast<std::size_t>(peak);
+    const double unresolved = heights_estimate::unresolved_in_contact(
+        fine_grid, solves.heights(fine_grid), fine.run.fields[std::min(k, fine.run.fields.size() - 1)].p,
+        solves.certificate_tol());
+    floor_by_unresolved_height(e.quantities, unresolved, peak_load_step(fine.run.summary).value("approach", 0.0));
+  }
   return e;
 }
 

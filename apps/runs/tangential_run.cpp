@@ -111,17 +111,12 @@ output::StaticFields tangential_fields(const TangentialSolution& s, double relat
   return f;
 }
 
-nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, const output::StaticFields& f) {
-  nlohmann::json s = output::normal_summary(c, sol.normal, f);
-  s["normal_solver"] = s["solver"];
-  s["solver"] = output::to_json(sol.report);
-  const std::string regime = c.tangential ? to_string(c.tangential->regime) : "";
+void add_tangential_measures(nlohmann::json& s, const Grid& grid, const TangentialSolution& sol,
+                             const output::StaticFields& f) {
   // A rolling solution is reported by its creepage and spin, except a step of a rolling history
   // that rolls no distance (TangentialProblem::roll, no marching step): that one is quasi-static
   // and reports the rigid shift it took.
   const bool rolling = sol.rolling;
-  s["regime"] = regime;
-  if (c.friction) s["friction"] = friction_json(*c.friction);
   const auto& a = sol.amplitudes;
   const auto& r = sol.resultants;
   s["tangential_force"] = pair(r[0], r[1]);
@@ -131,9 +126,6 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   s["rigid_shift"] = rolling ? nlohmann::json() : pair(a[0], a[1]);
   s["rotation"] = rolling ? nlohmann::json() : nlohmann::json(a[2]);
   if (sol.shift_undetermined) s["rigid_shift_undetermined"] = true;  // mu = 0: any shift, zero traction
-  if (regime == "rolling") s["velocity"] = c.tangential->rolling.velocity;
-  s["energy"] = energy_json(c, sol, f);
-  if (regime == "rolling" && has_history(c)) s["distance"] = sol.distance;  // rolled in this step (m)
   int n_stick = 0, n_slip = 0;
   double capacity = 0.0;
   for (std::size_t e = 0; e < f.state.size(); ++e) {
@@ -143,9 +135,22 @@ nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, 
   }
   s["n_stick"] = n_stick;
   s["n_slip"] = n_slip;
-  s["stick_area"] = n_stick * c.grid.area();
-  s["slip_area"] = n_slip * c.grid.area();
-  s["friction_capacity"] = capacity * c.grid.area();  // sum f(p) A: the largest tangential force
+  s["stick_area"] = n_stick * grid.area();
+  s["slip_area"] = n_slip * grid.area();
+  s["friction_capacity"] = capacity * grid.area();  // sum f(p) A: the largest tangential force
+}
+
+nlohmann::json tangential_summary(const Case& c, const TangentialSolution& sol, const output::StaticFields& f) {
+  nlohmann::json s = output::normal_summary(c, sol.normal, f);
+  s["normal_solver"] = s["solver"];
+  s["solver"] = output::to_json(sol.report);
+  const std::string regime = c.tangential ? to_string(c.tangential->regime) : "";
+  s["regime"] = regime;
+  if (c.friction) s["friction"] = friction_json(*c.friction);
+  add_tangential_measures(s, c.grid, sol, f);
+  if (regime == "rolling") s["velocity"] = c.tangential->rolling.velocity;
+  s["energy"] = energy_json(c, sol, f);
+  if (regime == "rolling" && has_history(c)) s["distance"] = sol.distance;  // rolled in this step (m)
   s["outer_iterations"] = sol.outer.iterations;
   s["outer_last_change"] = sol.outer.last_change;
   s["outer_coupling_residual"] = sol.outer.coupling_residual;

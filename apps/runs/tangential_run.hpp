@@ -44,6 +44,12 @@ TangentialRun tangential_run_of(const Case& c, std::vector<TangentialSolution> s
 /// solver's (an element in contact without friction capacity slips).
 output::StaticFields tangential_fields(const TangentialSolution& solution, double relative_threshold);
 
+/// The tangential keys of one step's summary (CASES.md): tangential_force, twisting_moment,
+/// creepage and spin (rolling) or rigid_shift and rotation, n_stick, n_slip, stick_area,
+/// slip_area and friction_capacity (sum f(p) A).
+void add_tangential_measures(nlohmann::json& summary, const Grid& grid, const TangentialSolution& solution,
+                             const output::StaticFields& fields);
+
 /// The keys of one tangential step (CASES.md): the normal keys of `c` (whose `normal` is the
 /// step's load) plus tangential_force, twisting_moment, creepage, spin, rigid_shift, rotation,
 /// n_stick, n_slip, stick_area, the outer-loop and marching counts (a step of a rolling history
