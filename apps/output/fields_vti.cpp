@@ -29,9 +29,7 @@ std::vector<float> in_plane(const std::vector<double>& a, const std::vector<doub
 std::string write_fields_vti(const std::string& dir, const Grid& g, const StaticFields& f, const std::string& file,
                              const std::vector<NamedMap>& extra) {
   const std::size_t n = g.size();
-  const bool three_d = g.dimension == 3;
-  VtiImage image({g.nx, three_d ? g.ny : 1, 1}, {g.xc(0), three_d ? g.yc(0) : 0.0, 0.0},
-                 {g.dx, three_d ? g.dy : g.dx, g.dx});
+  VtiImage image = surface_image(g);
   image.add("pressure", 1, as_floats(f.p, n));
   image.add("traction", 3, in_plane(f.tx, f.ty, n));
   image.add("slip", 3, in_plane(f.sx, f.sy, n));

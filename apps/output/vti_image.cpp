@@ -57,4 +57,10 @@ std::string VtiImage::text() const {
   return head_ + arrays_ + "</PointData>\n</Piece>\n</ImageData>\n</VTKFile>\n";
 }
 
+VtiImage surface_image(const Grid& g) {
+  const bool three_d = g.dimension == 3;
+  return VtiImage({g.nx, three_d ? g.ny : 1, 1}, {g.xc(0), three_d ? g.yc(0) : 0.0, 0.0},
+                  {g.dx, three_d ? g.dy : g.dx, g.dx});
+}
+
 }  // namespace dc::output

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "grid.hpp"
+
 namespace dc::output {
 
 class VtiImage {
@@ -22,5 +24,9 @@ class VtiImage {
   std::array<int, 3> points_;
   std::string head_, arrays_;
 };
+
+/// The image of a surface grid: one point per element centre, one layer (2-D: one row), the
+/// spacing the element size (fields.vti, wear_<k>.vti).
+VtiImage surface_image(const Grid& grid);
 
 }  // namespace dc::output

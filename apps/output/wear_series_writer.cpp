@@ -31,11 +31,9 @@ void write_wear_series(const std::string& dir, const Grid& grid, const std::vect
                        WornBodies bodies, nlohmann::json& files) {
   if (series.empty() || !(bodies.base || bodies.body)) return;
   const std::filesystem::path folder(dir);
-  const bool three_d = grid.dimension == 3;
   std::vector<PvdEntry> images;
   for (std::size_t k = 0; k < series.size(); ++k) {
-    VtiImage image({grid.nx, three_d ? grid.ny : 1, 1}, {grid.xc(0), three_d ? grid.yc(0) : 0.0, 0.0},
-                   {grid.dx, three_d ? grid.dy : grid.dx, grid.dx});
+    VtiImage image = surface_image(grid);
     std::vector<float> depth(grid.size(), 0.0f);
     for (std::size_t e = 0; e < depth.size() && e < series[k].depth.size(); ++e)
       depth[e] = static_cast<float>(series[k].depth[e]);
