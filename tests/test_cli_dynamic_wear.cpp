@@ -4,6 +4,8 @@
 // per unit length under every step against that step's dissipation over its travel (the frame
 // bookkeeping), growing with the slip; the worn circumference raising the approach of the
 // following revolutions (the worn depth in the gap); the input errors of a dynamic wear block.
+// The track map itself (DynamicWear fed steps directly): a curved path worn along its arc, its
+// volume kept while the map's cells double beyond their budget.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,7 +17,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "case_model.hpp"
 #include "cli_runner.hpp"
+#include "dynamic_wear.hpp"
 
 namespace cli_dynamic_wear_test {  // named: the unity build shares one translation unit
 
@@ -272,4 +276,86 @@ TEST_F(CliDynamicWear, BadDynamicWearBlocksAreInputErrorsNamingTheKey) {
   expect_input_error("validate " + write_case(history), "wear.gap_feedback");
 }
 
+/// The track map of a contact patch (a disc of 5 elements' radius under uniform Archard wear)
+/// carried along a quarter circle of radius 40 dx, fed to DynamicWear step by step as a run's
+/// accepted steps would be: with the default budget, and with 1024 cells, where the map's cells
+/// must double along and across (the coarsening branches). Either way the map holds the deposited
+/// volume to round-off, and at every column up to the arc's 45 degrees the worn material's mean Y
+/// is the arc's y(X) within a cell and the band's curvature r^2 (1 + y'^2) / 2 R_c (measured: at
+/// most half a fine cell; rows that did not follow the body sideways would be 12 cells off).
+TEST(DynamicWearMap, ACurvedTrackIsWornAlongItsArcAndKeepsItsVolumeWhenTheMapCoarsens) {
+  nlohmann::json doc = dc::test::example_json("bowling-ball");
+  doc["wear"] = {{"law", "archard"}, {"k", kK}, {"hardness", kH}, {"bodies", {"base"}}};
+  const dc::Case c = dc::build_case(doc);
+  const dc::Grid& g = c.grid;
+  const double X0 = c.dynamic->position[0], Y0 = c.dynamic->position[1];
+  dc::TangentialSolution t;
+  const std::size_t n = g.size();
+  t.normal.pressure.assign(n, 0.0);
+  t.tx.assign(n, 0.0);
+  t.ty.assign(n, 0.0);
+  t.sx.assign(n, 0.0);
+  t.sy.assign(n, 0.0);
+  const double r = 5.0 * g.dx, p = 1e8, slip = 1e-6;
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i)
+      if (std::hypot(g.xc(i), g.yc(j)) < r) {
+        const std::size_t e = g.index(i, j);
+        t.normal.pressure[e] = p;
+        t.tx[e] = -kMu * p;  // against the slip: dissipates
+        t.sx[e] = slip;
+      }
+  const double step_volume = [&] {
+    double v = 0.0;
+    for (std::size_t e = 0; e < n; ++e) v += kK * t.normal.pressure[e] * std::abs(t.sx[e]) / kH * g.area();
+    return v;
+  }();
+  const double Rc = 40.0 * g.dx;
+  const int steps = 210;  // 0.3 dx each
+  for (const long long budget : {dc::runs::DynamicWear::kMaxMapCells, 1024LL}) {
+    dc::runs::DynamicWear wear(c, budget);
+    for (int k = 1; k <= steps; ++k) {
+      const double theta = 0.5 * M_PI * k / steps;
+      dc::dynamics::DynamicSample s;
+      s.state.position = Eigen::Vector3d(X0 + Rc * std::sin(theta), Y0 + Rc * (1.0 - std::cos(theta)), 0.1);
+      s.contact_state.in_contact = true;
+      s.contact_state.fields = &t;
+      s.contact_state.pressure = &t.normal.pressure;
+      s.contact_state.frictional_work = dc::frictional_work(t, g.area());
+      wear.observe(g, s);
+    }
+    const dc::runs::WornStrip track = wear.base();
+    SCOPED_TRACE("budget " + std::to_string(budget));
+    EXPECT_NEAR(track.volume(), steps * step_volume, 1e-12 * steps * step_volume);
+    const dc::Grid& m = track.grid;
+    if (budget == 1024) {
+      EXPECT_LE(m.size(), 2u * 1024u);
+      EXPECT_GE(m.dx, 2.0 * g.dx);  // doubled along
+      EXPECT_GE(m.dy, 2.0 * g.dy);  // and across
+    } else {
+      EXPECT_DOUBLE_EQ(m.dx, g.dx);
+      EXPECT_DOUBLE_EQ(m.dy, g.dy);
+    }
+    int columns = 0;
+    for (int i = 0; i < m.nx; ++i) {
+      const double X = m.xc(i) - X0;
+      // From the start's patch to the arc's 45 degrees: beyond, a column cuts the band of the track
+      // ever more obliquely and its mean leaves the centre line by the band's curvature.
+      if (X < r || X > Rc / std::sqrt(2.0)) continue;
+      double mass = 0.0, moment = 0.0;
+      for (int j = 0; j < m.ny; ++j) {
+        mass += track.depth[m.index(i, j)];
+        moment += track.depth[m.index(i, j)] * (m.yc(j) - Y0);
+      }
+      if (!(mass > 0.0)) continue;
+      ++columns;
+      const double arc = Rc - std::sqrt(Rc * Rc - X * X);
+      const double slope = X / std::sqrt(Rc * Rc - X * X);  // the patch's width across the column grows
+      EXPECT_NEAR(moment / mass, arc, m.dy + r * r / (2.0 * Rc) * (1.0 + slope * slope)) << "X = " << X;
+    }
+    EXPECT_GT(columns, budget == 1024 ? 8 : 20);
+  }
+}
+
 }  // namespace cli_dynamic_wear_test
+

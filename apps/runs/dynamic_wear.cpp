@@ -20,8 +20,6 @@ namespace {
 /// The most cells a map holds along the track or the circumference: beyond, the track's cells
 /// double (the map coarser than the grid), the circumference's are 2 pi R / this.
 constexpr long long kMaxCells = 16384;
-/// The most cells of the track's map in all (rows x cells along): beyond, its rows double.
-constexpr long long kMaxMapCells = 1LL << 22;
 
 long long floor_half(long long k) { return k >= 0 ? k / 2 : -((-k + 1) / 2); }
 
@@ -40,7 +38,7 @@ void split_row(double u, long long& l, double& f) {
 
 }  // namespace
 
-DynamicWear::DynamicWear(const Case& c) : case_(c) {
+DynamicWear::DynamicWear(const Case& c, long long max_map_cells) : case_(c), max_map_cells_(max_map_cells) {
   if (!c.wear || !c.dynamic) return;
   grid_ = c.grid;
   x_start_ = x_end_ = c.dynamic->position[0];
@@ -131,9 +129,9 @@ void DynamicWear::Cells::coarsen_rows() {
 double DynamicWear::base_row(double Y) const { return (Y - y_reference_) / base_.height - 0.5; }
 
 void DynamicWear::deposit(Cells& cells, double a, double b, double u_a, double u_b, double volume) {
-  // The map beyond kMaxMapCells: the smaller cells doubled (the direction with more of them when
+  // The map beyond its budget: the smaller cells doubled (the direction with more of them when
   // square); doubled rows halve the row coordinate.
-  if (!cells.fixed_rows && cells.count * cells.rows > kMaxMapCells) {
+  if (!cells.fixed_rows && cells.count * cells.rows > max_map_cells_) {
     const bool rows = cells.rows > 1 && (cells.height < cells.width ||
                                          (cells.height == cells.width && cells.rows >= cells.count));
     if (rows) {

@@ -47,8 +47,10 @@ struct WornStrip {
 
 class DynamicWear {
  public:
-  /// `c` must outlive this object.
-  explicit DynamicWear(const Case& c);
+  /// The most cells of the track's map in all (rows x cells along): beyond, the smaller cells double.
+  static constexpr long long kMaxMapCells = 1LL << 22;
+  /// `c` must outlive this object; `max_map_cells` the track map's budget (tests take smaller ones).
+  explicit DynamicWear(const Case& c, long long max_map_cells = kMaxMapCells);
   bool wanted() const { return case_.wear.has_value(); }
   /// Every accepted step: its wear added to both maps.
   void observe(const Grid& grid, const dynamics::DynamicSample& s);
@@ -91,6 +93,7 @@ class DynamicWear {
   double phi_ = 0.0, last_angle_ = 0.0, x_start_ = 0.0, x_end_ = 0.0, y_end_ = 0.0;
   double y_reference_ = 0.0;  ///< world Y of the lower edge of the base's row 0
   Grid grid_;  ///< the contact grid (its rows and dx)
+  long long max_map_cells_ = kMaxMapCells;
 };
 
 }  // namespace dc::runs
