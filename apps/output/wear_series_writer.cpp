@@ -8,15 +8,10 @@
 #include "output_files.hpp"
 #include "pvd_collection.hpp"
 #include "vti_image.hpp"
+#include "wear_writer.hpp"
 
 namespace dc::output {
 namespace {
-
-/// The row nearest y = 0 (2-D: the only one).
-int centre_row(const Grid& grid) {
-  if (grid.dimension == 2) return 0;
-  return std::clamp(static_cast<int>(std::floor((0.0 - grid.y0) / grid.dy)), 0, grid.ny - 1);
-}
 
 std::string number(double v) {
   std::ostringstream s;
@@ -46,7 +41,7 @@ void write_wear_series(const std::string& dir, const Grid& grid, const std::vect
   write_pvd((folder / "wear.pvd").string(), images);
   files["wear_series"] = "wear.pvd";
 
-  const int j0 = centre_row(grid);
+  const int j0 = wear_row(grid, series.back().depth, {});  // the last state's track
   std::string text = "cycles,x";
   if (bodies.base) text += ",base";
   if (bodies.body) text += ",body";
@@ -66,7 +61,7 @@ void write_wear_series(const std::string& dir, const Grid& grid, const std::vect
 
 GnuplotFigure wear_evolution_figure(const std::string& dir, const std::string& case_name, const Grid& grid,
                                     const std::vector<WornState>& series) {
-  const int j0 = centre_row(grid);
+  const int j0 = wear_row(grid, series.back().depth, {});
   constexpr std::size_t kCurves = 8;
   std::vector<std::size_t> drawn;  // evenly spread, the last included
   const std::size_t n = series.size();

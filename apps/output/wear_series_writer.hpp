@@ -2,7 +2,7 @@
 // The worn profile's evolution over a wear run's profile updates (docs/wear_energy.md "Outputs
 // of a wear run"): the worn depth after each kept update as ParaView images wear_<k>.vti in the
 // series wear.pvd (time value: the cycles done; point arrays wear_base / wear_body, m), the
-// depth along the x centre line (the row nearest y = 0, as the figure wear_x) after each in
+// depth along x on the row through the last state's wear (wear_row, as the figure wear_x) after each in
 // wear_profiles.csv (`cycles,x,base,body`), and the figure wear_evolution drawing up to eight of
 // those profiles. Files written whole (output_files.hpp).
 #include <string>

@@ -40,11 +40,28 @@ std::string write_wear(const std::string& dir, const Grid& grid, const std::vect
   return path;
 }
 
+int wear_row(const Grid& grid, const std::vector<double>& base, const std::vector<double>& body) {
+  if (grid.dimension == 2) return 0;
+  double mass = 0.0, moment = 0.0;
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      const std::size_t e = grid.index(i, j);
+      const double d = (e < base.size() ? base[e] : 0.0) + (e < body.size() ? body[e] : 0.0);
+      mass += d;
+      moment += d * grid.yc(j);
+    }
+  double y = mass > 0.0 ? moment / mass : 0.0;
+  // A centroid on a row boundary by symmetry (y = 0 on an even grid) within round-off: the boundary,
+  // whose row above is taken, as for y = 0 exactly.
+  const double u = (y - grid.y0) / grid.dy;
+  if (std::abs(u - std::round(u)) < 1e-6) y = grid.y0 + std::round(u) * grid.dy;
+  return std::clamp(static_cast<int>(std::floor((y - grid.y0) / grid.dy)), 0, grid.ny - 1);
+}
+
 GnuplotFigure wear_figure(const std::string& dir, const std::string& case_name, const Grid& grid,
                           const std::vector<double>& base, const std::vector<double>& body, const std::string& name,
                           const std::string& x_label) {
-  const int j0 = grid.dimension == 2 ? 0
-                                     : std::clamp(static_cast<int>(std::floor((0.0 - grid.y0) / grid.dy)), 0, grid.ny - 1);
+  const int j0 = wear_row(grid, base, body);
   auto at = [](const std::vector<double>& v, std::size_t e) { return e < v.size() ? v[e] : 0.0; };
   std::ostringstream data;
   data << "# " << x_label << " base body (m; row j = " << j0 << ")\n";

@@ -16,8 +16,13 @@ std::string write_wear(const std::string& dir, const Grid& grid, const std::vect
                        const std::vector<double>& body, const std::string& file = "wear.csv",
                        const std::string& x_name = "x");
 
-/// The figure `name` (default wear_x): each wearing body's worn depth (um) along the x centre
-/// line (the row nearest y = 0), its data written to dir/<name>.dat; `x_label` the abscissa
+/// The row the wear is drawn along: the one through the worn depth's centroid across the grid
+/// (base and body summed; a scar symmetric about y = 0, the row nearest y = 0, as without wear;
+/// a track worn off y = 0, the track's), 0 in 2-D.
+int wear_row(const Grid& grid, const std::vector<double>& base, const std::vector<double>& body);
+
+/// The figure `name` (default wear_x): each wearing body's worn depth (um) along x on wear_row,
+/// its data written to dir/<name>.dat; `x_label` the abscissa
 /// (mm); not yet drawn (render_gnuplot).
 GnuplotFigure wear_figure(const std::string& dir, const std::string& case_name, const Grid& grid,
                           const std::vector<double>& base, const std::vector<double>& body,
