@@ -46,17 +46,30 @@ struct TangentialAccuracy::Level {
 };
 
 TangentialAccuracy::TangentialAccuracy(const Grid& grid, const MaterialPair& materials, std::vector<double> heights,
-                                       FrictionLaw friction, OperatorKind kind)
-    : grid_(grid), materials_(materials), heights_(std::move(heights)), friction_(std::move(friction)), kind_(kind) {}
+                                       FrictionLaw friction, OperatorKind kind, std::size_t max_recorded_calls)
+    : grid_(grid),
+      materials_(materials),
+      heights_(std::move(heights)),
+      friction_(std::move(friction)),
+      kind_(kind),
+      max_recorded_calls_(max_recorded_calls) {}
 
 TangentialAccuracy::~TangentialAccuracy() = default;
 
 void TangentialAccuracy::record(TangentialCall call, const std::string& fine_backend) {
+  if (overflowed_) return;
+  if (calls_.size() >= max_recorded_calls_) {
+    overflowed_ = true;
+    calls_.clear();
+    calls_.shrink_to_fit();
+    return;
+  }
   call.solver = heights_estimate::coarse_solver(call.solver, fine_backend);
   calls_.push_back(std::move(call));
 }
 
 void TangentialAccuracy::reset() {
+  overflowed_ = false;
   calls_.clear();
   calls_first_ = 0;
   for (auto& level : levels_) {
@@ -94,6 +107,9 @@ nlohmann::json TangentialAccuracy::estimate(const TangentialSolution& fine, doub
   std::vector<double> seconds{fine_seconds};
   const int across = he::fewest_across(summaries[0]);
   std::string unavailable = he::why_none(grid_, converged(fine), across);
+  if (overflowed_ && unavailable.empty())
+    unavailable = "more than " + std::to_string(max_recorded_calls_) + " calls of the history since reset() waited for the "
+                  "coarse grids and were not kept: ask estimate=True at least that often (or from the first call)";
   if (calls_.empty() && unavailable.empty()) unavailable = "no call of the problem to estimate";
   // The coarse problems, once: the heights are the problem's for its whole life.
   if (unavailable.empty() && levels_.empty() && levels_unavailable_.empty()) {

@@ -32,8 +32,12 @@ struct TangentialCall {
 
 class TangentialAccuracy {
  public:
+  /// The most calls kept for the coarse grids to take (224 bytes each): a longer stretch of the
+  /// history without an estimate is not kept, and the estimates until reset() say why.
+  static constexpr std::size_t kMaxRecordedCalls = std::size_t{1} << 16;
+
   TangentialAccuracy(const Grid& grid, const MaterialPair& materials, std::vector<double> heights,
-                     FrictionLaw friction, OperatorKind kind);
+                     FrictionLaw friction, OperatorKind kind, std::size_t max_recorded_calls = kMaxRecordedCalls);
   ~TangentialAccuracy();
   TangentialAccuracy(const TangentialAccuracy&) = delete;
   TangentialAccuracy& operator=(const TangentialAccuracy&) = delete;
@@ -45,7 +49,8 @@ class TangentialAccuracy {
   /// The accuracy block of `fine`, the solution of the last recorded call (in `fine_seconds`).
   /// Unavailable (the block says why) in 2-D, when the solve did not converge, an axis has an odd
   /// number of elements, the coarser grid would have fewer than 6 elements across the contact, or
-  /// a coarse grid's history did not converge (until the next reset).
+  /// a coarse grid's history did not converge or more than kMaxRecordedCalls calls waited for
+  /// the coarse grids (until the next reset).
   nlohmann::json estimate(const TangentialSolution& fine, double fine_seconds);
 
  private:
@@ -61,6 +66,8 @@ class TangentialAccuracy {
   std::size_t calls_first_ = 0;        // the history's index of calls_[0] (the ones before: taken by every level)
   std::vector<std::unique_ptr<Level>> levels_;  // 2h, 4h once made
   std::string levels_unavailable_;              // why no coarse grid exists (odd sizes), once tried
+  std::size_t max_recorded_calls_;
+  bool overflowed_ = false;                     // more than max_recorded_calls_ waited: not kept
 };
 
 }  // namespace dc::runs
