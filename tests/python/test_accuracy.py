@@ -305,3 +305,26 @@ def test_the_heights_estimate_of_a_flat_punch_and_of_a_noisy_sphere_are_bands():
                 missed = max(missed, np.abs(field[:, k - 2:k + 4] @ w)[beside].max())
     assert q["method"] == "band" and q["error_estimate_absolute"] == pytest.approx(missed, rel=1e-6)
     assert q["error_estimate"] > 3 * q_smooth["error_estimate"]
+
+
+def test_a_transient_roll_is_estimated_on_coarse_grids_that_rolled_the_same_history():
+    # Cattaneo's shifted state rolled over 3 a into Carter's (roll(): marching steps of each grid's
+    # own dx over the same distance). The estimate asked at the roll alone takes the coarse grids
+    # through the shift first: the same values as coarse grids estimated at both calls; the rolled
+    # Fx approaches the steady-rolling one (within the estimate's band of each).
+    case, problem, a = _tangential_case_and_problem("cattaneo-sphere", 32)
+    P = case["normal"]["force"]
+    kw = dict(force=P, creepage_x=1e-3)
+    problem.step(force=P, force_x=-5.0)
+    rolled = problem.roll(3 * a, **kw, estimate=True).accuracy
+    _, mirror, _ = _tangential_case_and_problem("cattaneo-sphere", 32)
+    mirror.step(force=P, force_x=-5.0, estimate=True)
+    both = mirror.roll(3 * a, **kw, estimate=True).accuracy
+    assert [g["nx"] for g in rolled["grids"]] == [32, 16, 8]
+    assert all(g["status"] == "converged" for g in rolled["grids"])
+    assert rolled["quantities"]["Fx"]["values"] == pytest.approx(both["quantities"]["Fx"]["values"], rel=1e-9)
+    _, steady, _ = _tangential_case_and_problem("cattaneo-sphere", 32)
+    carter = steady.steady_rolling(**kw, estimate=True).accuracy["quantities"]["Fx"]
+    fx = rolled["quantities"]["Fx"]
+    gap = abs(fx["value"] - carter["value"])
+    assert gap <= fx["error_estimate_absolute"] + carter["error_estimate_absolute"]
