@@ -328,7 +328,9 @@ void bind_problems(py::module_& m) {
       "Each rigid mode is given by its amplitude or by its resultant (then solved for):\n"
       "  step:           shift_x | force_x (m | N), shift_y | force_y, angle | moment_z (rad | N m)\n"
       "  steady_rolling: creepage_x | force_x, creepage_y | force_y, spin | moment_z (1/m | N m)\n"
-      "Forces are on the body (a shift in +x gives Fx < 0).")
+      "Forces are on the body (a shift in +x gives Fx < 0).\n"
+      "estimate=True on a call: its solution's .accuracy, the history taken again on grids of 2 and 4\n"
+      "times the element size (docs/accuracy.md \"Problems given by their heights\").")
       .def(py::init([](const Grid& g, const MaterialPair& mat, const HeightArray& heights, const Opt& mu,
                        const Opt& tresca, const std::string& kind, bool allow_edge_contact) {
              std::vector<double> h = heights_of(g, heights);
