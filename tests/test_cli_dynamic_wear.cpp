@@ -247,6 +247,66 @@ TEST_F(CliDynamicWear, ATrackWornSidewaysOrAslantIsTheTrackWornAlongXTurned) {
   EXPECT_LT(es.farthest, ex.farthest + 1.5 * cell) << "aslant: the worn cells along the contact's path";
 }
 
+TEST_F(CliDynamicWear, AHookingBallWearsItsCurvedPath) {
+  // bowling-ball launched at 0.5 m/s along x with a side roll (omega_x R = 0.3 m/s): the slip at
+  // the contact, (0.5, 0.3) m/s, drives friction against it, and the ball hooks towards -y on a
+  // parabola (3.5 mm sideways over its 36 mm slide; rolling from then on, straight). The track
+  // map in world x and y: at every column of the slide's track the worn material's mean y is the
+  // ball's y where its centre passed that x (timeseries.csv, interpolated) within a quarter cell
+  // (measured: 0.1), 10 cells off y = 0 at the slide's end; the volume is k/(mu H) x the
+  // dissipation (round-off).
+  json c = dc::test::example_json("bowling-ball");
+  const double R = c["body"]["radius"].get<double>();
+  c["body"]["initial"]["velocity"] = {0.5, 0.0, 0.0};
+  c["body"]["initial"]["omega"] = {0.3 / R, 0.0, 0.0};
+  c["time"]["t_end"] = 0.12;
+  c["contact_model"] = "transient";
+  c["output"] = {{"plots", false}};
+  c["wear"] = {{"law", "archard"}, {"k", 1e-4}, {"hardness", 1e8}};
+  const json s = solve(c);
+  ASSERT_EQ(s.at("status"), "completed");
+  EXPECT_NEAR(s.at("wear").at("base").at("volume").get<double>() /
+                  (1e-4 / (0.2 * 1e8) * s.at("energy").at("dissipated").get<double>()),
+              1.0, 1e-9);
+  const double cell = s.at("wear").at("base").at("cell").get<double>();
+  const auto path = csv_rows(slurp(dir_ / "out" / "timeseries.csv"));
+  ASSERT_GT(path.size(), 10u);
+  const double y_end = path.back().at("y");
+  ASSERT_LT(y_end, -10.0 * cell) << "the ball hooks by many cells";
+  auto y_at = [&](double x) {  // the ball's y where its centre passed x (x grows along the run)
+    for (std::size_t k = 1; k < path.size(); ++k)
+      if (path[k].at("x") >= x) {
+        const auto &a = path[k - 1], &b = path[k];
+        return a.at("y") + (b.at("y") - a.at("y")) * (x - a.at("x")) / (b.at("x") - a.at("x"));
+      }
+    return path.back().at("y");
+  };
+  std::map<double, std::pair<double, double>> columns;  // x -> (sum depth, sum depth y)
+  for (const auto& w : csv_rows(slurp(dir_ / "out" / "wear.csv"))) {
+    auto& [mass, moment] = columns[w.at("x")];
+    mass += w.at("base");
+    moment += w.at("base") * w.at("y");
+  }
+  const double x_first = path.front().at("x"), a = 1.4e-3;
+  double heaviest = 0.0;
+  for (const auto& [x, m] : columns) heaviest = std::max(heaviest, m.first);
+  int checked = 0;
+  double farthest = 0.0;
+  for (const auto& [x, m] : columns) {
+    if (!(m.first > 0.0) || x < x_first + 2.0 * a) continue;  // past the start's scar
+    if (m.first >= 0.25 * heaviest) {  // the slide's track: the wear of many steps, evenly
+      EXPECT_LT(std::abs(m.second / m.first - y_at(x)), 0.25 * cell) << "x = " << x;
+      farthest = std::max(farthest, std::abs(y_at(x)));
+      ++checked;
+    }
+    // Not asserted where the slide's wear fades (over the contact's length 2a a column's mean
+    // leans to the heavier side by up to the path's slope x a) nor after it: rolling's micro-slip
+    // wears the contact's slip zone, off the centre line.
+  }
+  EXPECT_GT(checked, 40);
+  EXPECT_GT(farthest, 5.0 * cell) << "columns checked where the path is off y = 0";
+}
+
 TEST_F(CliDynamicWear, BadDynamicWearBlocksAreInputErrorsNamingTheKey) {
   const json law = {{"law", "archard"}, {"k", kK}, {"hardness", kH}};
   for (const char* key : {"cycles", "update", "cycle_from_step", "rolling_radius"}) {
@@ -358,4 +418,5 @@ TEST(DynamicWearMap, ACurvedTrackIsWornAlongItsArcAndKeepsItsVolumeWhenTheMapCoa
 }
 
 }  // namespace cli_dynamic_wear_test
+
 
