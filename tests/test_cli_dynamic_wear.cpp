@@ -57,6 +57,24 @@ class CliDynamicWear : public dc::test::CliTest {
     EXPECT_EQ(r.code, 0) << r.err;
     return json::parse(slurp(dir_ / "out" / "summary.json"));
   }
+  /// bowling-ball launched sliding (transient model) at `velocity` with `omega` until `t_end`,
+  /// the base wearing by Archard (k 1e-4, H 1e8, mu 0.2): its summary, the completed run's volume
+  /// checked against k/(mu H) x the dissipation (round-off).
+  json slide_ball(const json& velocity, const json& omega, double t_end) const {
+    json c = dc::test::example_json("bowling-ball");
+    c["body"]["initial"]["velocity"] = velocity;
+    c["body"]["initial"]["omega"] = omega;
+    c["time"]["t_end"] = t_end;
+    c["contact_model"] = "transient";
+    c["output"] = {{"plots", false}};
+    c["wear"] = {{"law", "archard"}, {"k", 1e-4}, {"hardness", 1e8}};
+    const json s = solve(c);
+    EXPECT_EQ(s.at("status"), "completed");
+    EXPECT_NEAR(s.at("wear").at("base").at("volume").get<double>() /
+                    (1e-4 / (0.2 * 1e8) * s.at("energy").at("dissipated").get<double>()),
+                1.0, 1e-9);
+    return s;
+  }
   static json wheel(const json& wear) {
     json c = dc::test::example_json("wheel-drive");
     c["output"] = {{"plots", false}};
@@ -196,17 +214,7 @@ TEST_F(CliDynamicWear, ATrackWornSidewaysOrAslantIsTheTrackWornAlongXTurned) {
   // of the contact's path. (With the rows kept in the grid's frame, the sideways track would pile
   // into the 16 rows under the ball, 8 times deeper.)
   auto slide = [&](double vx, double vy) {
-    json c = dc::test::example_json("bowling-ball");
-    c["body"]["initial"]["velocity"] = {vx, vy, 0.0};
-    c["time"]["t_end"] = 0.1;
-    c["contact_model"] = "transient";
-    c["output"] = {{"plots", false}};
-    c["wear"] = {{"law", "archard"}, {"k", 1e-4}, {"hardness", 1e8}};
-    const json s = solve(c);
-    EXPECT_EQ(s.at("status"), "completed");
-    EXPECT_NEAR(s.at("wear").at("base").at("volume").get<double>() /
-                    (1e-4 / (0.2 * 1e8) * s.at("energy").at("dissipated").get<double>()),
-                1.0, 1e-9);
+    const json s = slide_ball({vx, vy, 0.0}, {0.0, 0.0, 0.0}, 0.1);
     return std::pair{s, csv_rows(slurp(dir_ / "out" / "wear.csv"))};
   };
   struct Extent {
@@ -255,19 +263,9 @@ TEST_F(CliDynamicWear, AHookingBallWearsItsCurvedPath) {
   // ball's y where its centre passed that x (timeseries.csv, interpolated) within a quarter cell
   // (measured: 0.1), 10 cells off y = 0 at the slide's end; the volume is k/(mu H) x the
   // dissipation (round-off).
-  json c = dc::test::example_json("bowling-ball");
-  const double R = c["body"]["radius"].get<double>();
-  c["body"]["initial"]["velocity"] = {0.5, 0.0, 0.0};
-  c["body"]["initial"]["omega"] = {0.3 / R, 0.0, 0.0};
-  c["time"]["t_end"] = 0.12;
-  c["contact_model"] = "transient";
-  c["output"] = {{"plots", false}};
-  c["wear"] = {{"law", "archard"}, {"k", 1e-4}, {"hardness", 1e8}};
-  const json s = solve(c);
+  const double R = dc::test::example_json("bowling-ball")["body"]["radius"].get<double>();
+  const json s = slide_ball({0.5, 0.0, 0.0}, {0.3 / R, 0.0, 0.0}, 0.12);
   ASSERT_EQ(s.at("status"), "completed");
-  EXPECT_NEAR(s.at("wear").at("base").at("volume").get<double>() /
-                  (1e-4 / (0.2 * 1e8) * s.at("energy").at("dissipated").get<double>()),
-              1.0, 1e-9);
   const double cell = s.at("wear").at("base").at("cell").get<double>();
   const auto path = csv_rows(slurp(dir_ / "out" / "timeseries.csv"));
   ASSERT_GT(path.size(), 10u);
