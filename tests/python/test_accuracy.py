@@ -328,3 +328,30 @@ def test_a_transient_roll_is_estimated_on_coarse_grids_that_rolled_the_same_hist
     fx = rolled["quantities"]["Fx"]
     gap = abs(fx["value"] - carter["value"])
     assert gap <= fx["error_estimate_absolute"] + carter["error_estimate_absolute"]
+
+
+def test_the_heights_estimate_of_a_grooved_sphere_is_not_below_its_true_error():
+    # A sharp-edged groove across the sphere's contact (0.3 a off centre, 5 % of the approach deep,
+    # 2 elements of a 64^2 grid over +-1.3 a wide): a step in the heights the coarse grids cannot
+    # carry. The approach's estimate on 48^2, 64^2 and 96^2 is a band not below its true error
+    # (2.5-10 x it; reference: Richardson from 256^2 and 512^2; without the unresolved-height floor
+    # 0.2-0.7 x it). A groove narrower than the fine
+    # element is not seen by the fine grid itself (no centre in it), so no estimate from its heights
+    # can know it: docs/accuracy.md.
+    materials, R, P, a = _hertz_steel()
+    L = 1.3 * a
+    width, depth = 2 * (2 * L / 64), 0.05 * a * a / R
+
+    def solved(n, estimate):
+        grid = dyncontact.Grid(n, n, -L, L, -L, L)
+        x, y = dyncontact.grid_centres(grid)
+        h = (x**2 + y**2) / (2 * R) + np.where(np.abs(x + 0.37 * a) < width / 2, depth, 0.0)
+        return dyncontact.NormalProblem(grid, materials, h).solve(force=P, estimate=estimate)
+
+    fine, finer = solved(256, False).approach, solved(512, False).approach
+    reference = finer + (finer - fine) / 3
+    for n in (48, 64, 96):
+        s = solved(n, True)
+        q = s.accuracy["quantities"]["approach"]
+        assert q["method"] == "band", n
+        assert abs(s.approach / reference - 1) <= q["error_estimate"], n
