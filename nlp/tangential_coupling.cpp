@@ -30,6 +30,8 @@ const NormalSolution& TangentialProblem::Impl::solve_normal(const std::vector<do
     *normal_cache = sparse->normal(h, load, solver);
   else
     normal->solve(load, solver, *normal_cache);  // into the cache's own storage
+  // A failed solve is not kept: the same call (after reset(), or once a backend recovers) tries again.
+  if (normal_cache->report.status == SolveStatus::failed) return *normal_cache;
   normal_cache_heights = h;
   normal_cache_load = load;
   normal_cache_tol = solver.tol;
