@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <exception>
 #include <optional>
 #include <utility>
 
@@ -85,14 +86,21 @@ std::string TangentialAccuracy::catch_up(Level& level, double& seconds) {
   for (; level.failed.empty() && level.taken < calls_first_ + calls_.size(); ++level.taken) {
     const TangentialCall& c = calls_[level.taken - calls_first_];
     TangentialProblem& p = *level.problem;
-    switch (c.kind) {
-      case TangentialCall::Kind::step: level.last = p.step(c.step_load, c.solver); break;
-      case TangentialCall::Kind::steady_rolling: level.last = p.steady_rolling(c.rolling_load, c.solver); break;
-      case TangentialCall::Kind::roll: level.last = p.roll(c.rolling_load, c.distance, c.solver); break;
+    const std::string where = "call " + std::to_string(level.taken + 1) + " of the history on the grid of " +
+                              std::to_string(level.grid.nx) + " x " + std::to_string(level.grid.ny) + " elements";
+    // A coarse solve that throws (an interrupt aside) breaks this level's history off, as one that
+    // does not converge: the fine answer stands, its estimate says why it has none.
+    try {
+      switch (c.kind) {
+        case TangentialCall::Kind::step: level.last = p.step(c.step_load, c.solver); break;
+        case TangentialCall::Kind::steady_rolling: level.last = p.steady_rolling(c.rolling_load, c.solver); break;
+        case TangentialCall::Kind::roll: level.last = p.roll(c.rolling_load, c.distance, c.solver); break;
+      }
+    } catch (const std::exception& e) {
+      level.failed = where + " failed: " + e.what();
+      break;
     }
-    if (!converged(*level.last))
-      level.failed = "call " + std::to_string(level.taken + 1) + " of the history did not converge on the grid of " +
-                     std::to_string(level.grid.nx) + " x " + std::to_string(level.grid.ny) + " elements";
+    if (!converged(*level.last)) level.failed = where + " did not converge";
   }
   seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return level.failed;
