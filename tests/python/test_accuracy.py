@@ -267,7 +267,7 @@ def test_the_estimate_of_a_wavy_profile_holds_the_true_error(tmp_path):
 
 
 def test_the_heights_estimate_of_a_flat_punch_and_of_a_noisy_sphere_are_bands():
-    # A rigid-like flat punch given as heights (0 on r <= b, +inf outside: the rim detection of
+    # A flat punch given as heights (0 on r <= b, +inf outside: the rim detection of
     # the case path): its force is a band not below Boussinesq's P = 2 b E* delta, its peak pressure
     # diverges (no error bar). A sphere with white noise of 1 % of its approach: the approach's band
     # is the height detail the coarse grid misses (far above the grids' differences), not 1/3 of
