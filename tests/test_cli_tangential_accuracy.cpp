@@ -13,16 +13,25 @@
 
 namespace cli_tangential_accuracy_test {  // named: the unity build shares one translation unit
 
+/// Cattaneo on a steel sphere (R = 10 mm, 100 N, a = 0.187 mm, mu 0.3) on 32^2 elements over
+/// +-0.26 mm, given by its heights.
+struct SteelSphere {
+  dc::Grid g = dc::Grid::make(3, 32, 32, -2.6e-4, 2.6e-4, -2.6e-4, 2.6e-4);
+  std::vector<double> h = heights(g);
+  dc::MaterialPair steel{dc::Elastic::from_E_nu(2.1e11, 0.3), dc::Elastic::from_E_nu(2.1e11, 0.3)};
+  dc::FrictionLaw friction = dc::FrictionLaw::coulomb(0.3);
+  static std::vector<double> heights(const dc::Grid& g) {
+    std::vector<double> h(g.size());
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) h[g.index(i, j)] = (g.xc(i) * g.xc(i) + g.yc(j) * g.yc(j)) / 0.02;
+    return h;
+  }
+};
+
 TEST(TangentialAccuracy, AHistoryLongerThanTheRecordedCallsSaysWhyItHasNoEstimateUntilReset) {
-  // Cattaneo on a steel sphere (R = 10 mm, 100 N, a = 0.187 mm) on 32^2 elements over +-0.26 mm.
-  const dc::Grid g = dc::Grid::make(3, 32, 32, -2.6e-4, 2.6e-4, -2.6e-4, 2.6e-4);
-  std::vector<double> h(g.size());
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) h[g.index(i, j)] = (g.xc(i) * g.xc(i) + g.yc(j) * g.yc(j)) / 0.02;
-  const dc::MaterialPair steel{dc::Elastic::from_E_nu(2.1e11, 0.3), dc::Elastic::from_E_nu(2.1e11, 0.3)};
-  const dc::FrictionLaw friction = dc::FrictionLaw::coulomb(0.3);
-  dc::TangentialProblem fine(g, steel, h, friction);
-  dc::runs::TangentialAccuracy accuracy(g, steel, h, friction, dc::OperatorKind::automatic, 3);
+  const SteelSphere sphere;
+  dc::TangentialProblem fine(sphere.g, sphere.steel, sphere.h, sphere.friction);
+  dc::runs::TangentialAccuracy accuracy(sphere.g, sphere.steel, sphere.h, sphere.friction, dc::OperatorKind::automatic, 3);
   const dc::SolverOptions solver;
   const auto step = [&](double q) {
     dc::runs::TangentialCall call;
@@ -48,14 +57,9 @@ TEST(TangentialAccuracy, AHistoryLongerThanTheRecordedCallsSaysWhyItHasNoEstimat
 }
 
 TEST(TangentialAccuracy, ACoarseHistoryThatBreaksOffSaysWhichCallUntilReset) {
-  const dc::Grid g = dc::Grid::make(3, 32, 32, -2.6e-4, 2.6e-4, -2.6e-4, 2.6e-4);
-  std::vector<double> h(g.size());
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) h[g.index(i, j)] = (g.xc(i) * g.xc(i) + g.yc(j) * g.yc(j)) / 0.02;
-  const dc::MaterialPair steel{dc::Elastic::from_E_nu(2.1e11, 0.3), dc::Elastic::from_E_nu(2.1e11, 0.3)};
-  const dc::FrictionLaw friction = dc::FrictionLaw::coulomb(0.3);
-  dc::TangentialProblem fine(g, steel, h, friction);
-  dc::runs::TangentialAccuracy accuracy(g, steel, h, friction, dc::OperatorKind::automatic);
+  const SteelSphere sphere;
+  dc::TangentialProblem fine(sphere.g, sphere.steel, sphere.h, sphere.friction);
+  dc::runs::TangentialAccuracy accuracy(sphere.g, sphere.steel, sphere.h, sphere.friction, dc::OperatorKind::automatic);
   dc::runs::TangentialCall call;
   call.step_load.normal = {dc::Control::force, 100.0};
   call.step_load.modes[0] = {dc::ModeControl::Kind::resultant, -15.0};
