@@ -258,12 +258,8 @@ Voigt voigt_stress(const FieldValues& f) {
 }
 
 StressMeasures stress_measures(const FieldValues& f) {
-  const Voigt s = voigt_stress(f);
-  StressMeasures m;
-  m.hydrostatic = hydrostatic(s);
-  m.von_mises = std::sqrt(3.0) * sqrt_j2(s);
-  m.tresca = tresca_shear(s);
-  return m;
+  const StressInvariants s = stress_invariants(voigt_stress(f));
+  return {std::sqrt(3.0) * s.sqrt_j2, s.tresca, s.hydrostatic};
 }
 
 SubsurfaceMeasures subsurface_measures(const SubsurfaceResult& r) {
@@ -272,24 +268,39 @@ SubsurfaceMeasures subsurface_measures(const SubsurfaceResult& r) {
   resize_on_huge_pages(m.von_mises, K * N);
   resize_on_huge_pages(m.tresca, K * N);
   resize_on_huge_pages(m.hydrostatic, K * N);
-  const auto place = [&](FieldExtreme& x, double value, std::size_t k, int i, int j) {
-    x = FieldExtreme{value, k, i, j, r.grid.xc(i), r.grid.yc(j), r.depths[k]};
+  // The extremes as flat indices k * N + e, placed at the end.
+  std::size_t at_von_mises = 0, at_tresca = 0, at_max_hydrostatic = 0, at_min_hydrostatic = 0;
+  const double root3 = std::sqrt(3.0);
+  for (std::size_t k = 0; k < K; ++k) {
+    const double *xx = r.component(k, kSxx), *yy = r.component(k, kSyy), *zz = r.component(k, kSzz);
+    const double *yz = r.component(k, kSyz), *xz = r.component(k, kSxz), *xy = r.component(k, kSxy);
+    double* von_mises = m.von_mises.data() + k * N;
+    double* tresca = m.tresca.data() + k * N;
+    double* hydro = m.hydrostatic.data() + k * N;
+    for (std::size_t e = 0; e < N; ++e) {
+      const StressInvariants s = stress_invariants(Voigt{xx[e], yy[e], zz[e], yz[e], xz[e], xy[e]});
+      von_mises[e] = root3 * s.sqrt_j2;
+      tresca[e] = s.tresca;
+      hydro[e] = s.hydrostatic;
+    }
+  }
+  for (std::size_t at = 1; at < K * N; ++at) {
+    if (m.von_mises[at] > m.von_mises[at_von_mises]) at_von_mises = at;
+    if (m.tresca[at] > m.tresca[at_tresca]) at_tresca = at;
+    if (m.hydrostatic[at] > m.hydrostatic[at_max_hydrostatic]) at_max_hydrostatic = at;
+    if (m.hydrostatic[at] < m.hydrostatic[at_min_hydrostatic]) at_min_hydrostatic = at;
+  }
+  const auto place = [&](const std::vector<double>& values, std::size_t at) {
+    if (values.empty()) return FieldExtreme{};
+    const std::size_t k = at / N, e = at % N;
+    const int i = static_cast<int>(e % static_cast<std::size_t>(r.grid.nx));
+    const int j = static_cast<int>(e / static_cast<std::size_t>(r.grid.nx));
+    return FieldExtreme{values[at], k, i, j, r.grid.xc(i), r.grid.yc(j), r.depths[k]};
   };
-  bool first = true;
-  for (std::size_t k = 0; k < K; ++k)
-    for (int j = 0; j < r.grid.ny; ++j)
-      for (int i = 0; i < r.grid.nx; ++i) {
-        const std::size_t e = r.grid.index(i, j), at = k * N + e;
-        const StressMeasures s = stress_measures(r.point(k, i, j));
-        m.von_mises[at] = s.von_mises;
-        m.tresca[at] = s.tresca;
-        m.hydrostatic[at] = s.hydrostatic;
-        if (first || s.von_mises > m.max_von_mises.value) place(m.max_von_mises, s.von_mises, k, i, j);
-        if (first || s.tresca > m.max_tresca.value) place(m.max_tresca, s.tresca, k, i, j);
-        if (first || s.hydrostatic > m.max_hydrostatic.value) place(m.max_hydrostatic, s.hydrostatic, k, i, j);
-        if (first || s.hydrostatic < m.min_hydrostatic.value) place(m.min_hydrostatic, s.hydrostatic, k, i, j);
-        first = false;
-      }
+  m.max_von_mises = place(m.von_mises, at_von_mises);
+  m.max_tresca = place(m.tresca, at_tresca);
+  m.max_hydrostatic = place(m.hydrostatic, at_max_hydrostatic);
+  m.min_hydrostatic = place(m.hydrostatic, at_min_hydrostatic);
   return m;
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Geometry>
+
 namespace dc {
 
 const char* to_string(VoigtComponent c) {
@@ -101,23 +103,70 @@ Eigen::Vector3d principal_stresses(const Voigt& s) {
   return e;  // ascending
 }
 
-double tresca_shear(const Voigt& s) {
-  // From the deviator's invariants (Lode's angle; Jaeger, Cook & Zimmerman, Fundamentals of Rock
-  // Mechanics, 4th ed., 2.13): s1 - s3 = 2 sqrt(J2) sin(theta + pi/3), theta = acos(r) / 3,
+namespace {
+/// Tresca's shear where two principal stresses of the deviator (dx, dy, dz; shears s[3..5])
+/// nearly coincide, Lode's r near +-1. The isolated eigenvalue l is accurate from Lode's angle
+/// (the cosine at its extremum squares the angle's error); its eigenvector v is the largest cross
+/// product of two rows of (dev - l I) (Kopp, Int. J. Mod. Phys. C 19 (2008) 523, the hybrid
+/// method), well conditioned as l is isolated; the pair's half-difference d is that of the 2 x 2
+/// projection of the deviator on the plane normal to v, with no cancellation. The pair's mean is
+/// -l / 2 (trace zero), so (s1 - s3) / 2 = (1.5 |l| + d) / 2. Returns a negative value where the
+/// rows are degenerate (the caller then uses the Jacobi eigenvalues).
+double tresca_near_double_root(double dx, double dy, double dz, const Voigt& s, double j2, double r) {
+  const double theta = std::acos(std::clamp(r, -1.0, 1.0)) / 3.0;
+  const double radius = 2.0 * std::sqrt(j2 / 3.0);
+  const double l = r >= 0.0 ? radius * std::cos(theta) : radius * std::cos(theta + 2.0 * std::numbers::pi / 3.0);
+  const Eigen::Vector3d b0(dx - l, s[5], s[4]), b1(s[5], dy - l, s[3]), b2(s[4], s[3], dz - l);
+  Eigen::Vector3d v = b0.cross(b1);
+  for (const Eigen::Vector3d& c : {b0.cross(b2), b1.cross(b2)})
+    if (c.squaredNorm() > v.squaredNorm()) v = c;
+  const double length = v.norm();
+  if (!(length > 0.0) || !std::isfinite(length)) return -1.0;
+  v /= length;
+  // An orthonormal pair (u, w) normal to v: u from the axis v is least aligned with.
+  int k = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(v(i)) < std::abs(v(k))) k = i;
+  const Eigen::Vector3d u = v.cross(Eigen::Vector3d::Unit(k)).normalized(), w = v.cross(u);
+  const Eigen::Matrix3d dev = (Eigen::Matrix3d() << dx, s[5], s[4], s[5], dy, s[3], s[4], s[3], dz).finished();
+  const Eigen::Vector3d du = dev * u, dw = dev * w;
+  const double d = std::hypot(0.5 * (u.dot(du) - w.dot(dw)), u.dot(dw));
+  return 0.5 * (1.5 * std::abs(l) + d);
+}
+}  // namespace
+
+double tresca_shear(const Voigt& s) { return stress_invariants(s).tresca; }
+
+StressInvariants stress_invariants(const Voigt& s) {
+  // Tresca from the deviator's invariants (Lode's angle; Jaeger, Cook & Zimmerman, Fundamentals
+  // of Rock Mechanics, 4th ed., 2.13): s1 - s3 = 2 sqrt(J2) sin(theta + pi/3), theta = acos(r) / 3,
   // r = (3 sqrt 3 / 2) J3 / J2^(3/2). Where two principal stresses nearly coincide (|r| near 1)
-  // acos amplifies the rounding of r by 1 / sqrt(1 - r^2); there the Jacobi eigenvalues are used,
-  // so the result is within a few eps |sigma| of them everywhere (tests/test_voigt_stress.cpp).
+  // acos amplifies the rounding of r by 1 / sqrt(1 - r^2); there the pair is split by a 2 x 2
+  // projection (tresca_near_double_root), so the result is within a few eps |sigma| of the
+  // eigenvalues everywhere (tests/test_voigt_stress.cpp).
+  StressInvariants m;
   const double p = hydrostatic(s);
+  m.hydrostatic = p;
   const double dx = s[0] - p, dy = s[1] - p, dz = s[2] - p;
   const double j2 = 0.5 * (dx * dx + dy * dy + dz * dz) + s[3] * s[3] + s[4] * s[4] + s[5] * s[5];
-  if (j2 == 0.0) return 0.0;
+  if (j2 == 0.0) return m;
+  const double root = std::sqrt(j2);
+  m.sqrt_j2 = root;
   const double j3 = dx * (dy * dz - s[3] * s[3]) - s[5] * (s[5] * dz - s[3] * s[4]) + s[4] * (s[5] * s[3] - dy * s[4]);
-  const double r = 1.5 * std::sqrt(3.0) * j3 / (j2 * std::sqrt(j2));
-  if (!(1.0 - r * r > 0.01)) {  // within ~6 degrees of a repeated root (or not finite)
-    const Eigen::Vector3d e = principal_stresses(s);
-    return 0.5 * (e(2) - e(0));
+  const double r = 1.5 * std::sqrt(3.0) * j3 / (j2 * root);
+  if (1.0 - r * r > 0.01) {
+    m.tresca = root * std::sin(std::acos(r) / 3.0 + std::numbers::pi / 3.0);
+    return m;
   }
-  return std::sqrt(j2) * std::sin(std::acos(r) / 3.0 + std::numbers::pi / 3.0);
+  // Within ~6 degrees of a repeated root (or not finite).
+  const double tau = std::isfinite(r) ? tresca_near_double_root(dx, dy, dz, s, j2, r) : -1.0;
+  if (tau >= 0.0) {
+    m.tresca = tau;
+  } else {
+    const Eigen::Vector3d e = principal_stresses(s);
+    m.tresca = 0.5 * (e(2) - e(0));
+  }
+  return m;
 }
 
 }  // namespace dc

@@ -47,9 +47,16 @@ Eigen::Matrix<double, 5, 6> deviatoric_coordinate_map();
 double sqrt_j2(const Voigt& s);
 /// Tresca's shear: half the largest difference of principal stresses, (s1 - s3) / 2, from the
 /// deviator's invariants: sqrt(J2) sin(theta + pi/3), Lode's angle theta = acos(r) / 3,
-/// r = (3 sqrt 3 / 2) J3 / J2^(3/2); within 6 degrees of a repeated root (1 - r^2 <= 0.01) from
-/// principal_stresses. Within 8 eps |sigma| of the exact value.
+/// r = (3 sqrt 3 / 2) J3 / J2^(3/2); within 6 degrees of a repeated root (1 - r^2 <= 0.01) the
+/// close pair is split on the plane normal to the isolated principal direction. Within 8 eps
+/// |sigma| of the exact value.
 double tresca_shear(const Voigt& s);
+/// The measures of one tensor from one pass over its deviator: sigma_kk / 3, sqrt(J2) and
+/// Tresca's shear (those of hydrostatic, sqrt_j2 and tresca_shear, to rounding).
+struct StressInvariants {
+  double hydrostatic = 0.0, sqrt_j2 = 0.0, tresca = 0.0;
+};
+StressInvariants stress_invariants(const Voigt& s);
 /// Principal stresses, ascending: cyclic Jacobi rotations (backward stable, within 8 eps |sigma|).
 Eigen::Vector3d principal_stresses(const Voigt& s);
 
