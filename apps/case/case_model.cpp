@@ -172,7 +172,7 @@ Case build_case(const nlohmann::json& document, const std::string& base_dir) {
   }
   if (top.has("solver")) c.solver = read_solver(top.at("solver"));
   if (top.has("output")) c.output = read_output(top.at("output"));
-  if (top.has("accuracy")) c.accuracy = read_accuracy(top.at("accuracy"), c.problem);
+  if (top.has("accuracy")) c.accuracy = read_accuracy(top.at("accuracy"), c.problem, c.dimension);
   if (top.has("subsurface")) c.subsurface = read_subsurface(top.at("subsurface"));
   if (top.has("wear")) c.wear = read_wear(top.at("wear"), c);
   if (top.has("materials")) {

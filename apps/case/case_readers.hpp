@@ -26,7 +26,7 @@ FrictionSpec read_friction(const nlohmann::json& j);
 SolverOptions read_solver(const nlohmann::json& j);
 
 /// "accuracy": the error estimate and the target of a `problem` (its quantities checked).
-AccuracySpec read_accuracy(const nlohmann::json& j, ProblemKind problem);
+AccuracySpec read_accuracy(const nlohmann::json& j, ProblemKind problem, int dimension);
 
 /// materials.body.yield and materials.base.yield (the block read by read_materials).
 BodyYields read_yields(const nlohmann::json& materials);

@@ -26,7 +26,7 @@ const std::vector<AccuracyQuantityName>& accuracy_quantity_names() {
   return names;
 }
 
-AccuracySpec read_accuracy(const json& j, ProblemKind problem) {
+AccuracySpec read_accuracy(const json& j, ProblemKind problem, int dimension) {
   JsonBlock o(j, "accuracy");
   o.allow({"estimate", "target", "quantities", "max_elements", "max_seconds"});
   AccuracySpec a;
@@ -56,6 +56,10 @@ AccuracySpec read_accuracy(const json& j, ProblemKind problem) {
       if (it == names.end() || !of_problem(*it))
         throw InputError("accuracy.quantities", "unknown quantity '" + name + "' for problem " + to_string(problem) +
                                                     " (expected one of: " + list + ")");
+      // 3-D contacts report contact_half_width_x and _y, not one half-width (no estimate of it).
+      if (name == "contact_half_width" && dimension != 2)
+        throw InputError("accuracy.quantities", "'contact_half_width' is a result of 2-D (line) contacts; in 3-D name "
+                                                "contact_area or max_pressure");
       a.quantities.push_back(name);
     }
   }

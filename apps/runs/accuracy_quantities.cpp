@@ -38,8 +38,8 @@ std::vector<QuantityValue> accuracy_quantities(const nlohmann::json& s) {
     q.push_back({"normal_force", force, global, 0.0});
   q.push_back({"max_pressure", pressure, rim_peak ? C::rim_peak : C::peak, 0.0});
   // An element is in the contact or not: the area moves by whole elements, not monotonically.
-  q.push_back({"contact_area", number(s, "contact_area"), C::band, 0.0});
-  if (s.contains("contact_half_width")) q.push_back({"contact_half_width", number(s, "contact_half_width"), C::band, 0.0});
+  q.push_back({"contact_area", number(s, "contact_area"), C::band, 0.0, true});
+  if (s.contains("contact_half_width")) q.push_back({"contact_half_width", number(s, "contact_half_width"), C::band, 0.0, true});
   if (!is_pair(s, "tangential_force")) return q;
 
   // The tangential results depend on where the contact edge and the stick-slip boundary fall
@@ -62,8 +62,8 @@ std::vector<QuantityValue> accuracy_quantities(const nlohmann::json& s) {
   if (is_pair(s, "creepage"))
     q.push_back({"creepage", std::hypot(s["creepage"][0].get<double>(), s["creepage"][1].get<double>()), C::band, 0.0});
   const double area = number(s, "contact_area");
-  q.push_back({"stick_area", number(s, "stick_area"), C::band, 1e-6 * area});
-  q.push_back({"slip_area", number(s, "slip_area"), C::band, 1e-6 * area});
+  q.push_back({"stick_area", number(s, "stick_area"), C::band, 1e-6 * area, true});
+  q.push_back({"slip_area", number(s, "slip_area"), C::band, 1e-6 * area, true});
   if (area > 0.0) q.push_back({"stick_fraction", number(s, "stick_area") / area, C::band, 1e-6});
   return q;
 }

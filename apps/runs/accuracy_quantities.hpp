@@ -19,6 +19,9 @@ struct QuantityValue {
   /// What counts as zero for its relative error (a share of the load, of the friction capacity):
   /// a force that vanishes in the continuum is not judged against its own round-off.
   double scale = 0.0;
+  /// An area or a width counted in whole elements (never a value the case prescribes): equal on
+  /// every grid it still has the uncertainty of its edge's element.
+  bool whole_elements = false;
 };
 
 /// The results of a normal or tangential summary (a history: its last step's keys) that the
