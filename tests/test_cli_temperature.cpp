@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "material.hpp"
 #include "hertz.hpp"
 #include "thermal_closed_forms.hpp"
 

@@ -119,11 +119,13 @@ std::vector<EstimatedQuantity> estimate_quantities(
   return out;
 }
 
-void floor_by_unresolved_height(std::vector<EstimatedQuantity>& quantities, double unresolved, double approach) {
+double contact_stiffness(double e_star, double area) { return 2.0 * e_star * std::sqrt(std::max(area, 0.0) / std::numbers::pi); }
+
+void floor_by_unresolved_height(std::vector<EstimatedQuantity>& quantities, double unresolved, double stiffness) {
   if (!(unresolved > 0.0) || !std::isfinite(unresolved)) return;
   for (EstimatedQuantity& q : quantities) {
     const double floor = q.quantity.name == "approach"       ? unresolved
-                         : q.quantity.name == "normal_force" ? 1.5 * unresolved / std::abs(approach) * std::abs(q.error.value)
+                         : q.quantity.name == "normal_force" ? stiffness * unresolved
                                                              : 0.0;
     if (!(floor > q.error.error) || !std::isfinite(floor)) continue;
     q.error.error = floor;

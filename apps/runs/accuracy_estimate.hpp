@@ -52,9 +52,13 @@ std::vector<EstimatedQuantity> estimate_quantities(
 /// size does not carry (unresolved_height, core/height_restriction.hpp). A gap perturbed by that
 /// much moves the approach by as much, which the grids' differences cannot tell from their
 /// discretisation error (the coarse grids alias it), so the approach's error is taken no less (the
-/// normal force's, under approach control, no less than 3/2 of it over the approach: Hertz's
-/// dP/P = 3/2 d delta/delta): then a band.
-void floor_by_unresolved_height(std::vector<EstimatedQuantity>& quantities, double unresolved, double approach);
+/// normal force's, under approach control, no less than the contact's stiffness times it): then
+/// a band.
+void floor_by_unresolved_height(std::vector<EstimatedQuantity>& quantities, double unresolved, double stiffness);
+/// The normal stiffness dP/d delta of a contact of area A: 2 E* sqrt(A / pi) (Sneddon's result for
+/// any axisymmetric profile, Pharr, Oliver & Brotzen 1992 for others to a few per cent): 3/2 P/delta
+/// for Hertz, P/delta for a punch, more for a conformal contact.
+double contact_stiffness(double e_star, double area);
 
 /// The "quantities" object: name -> {value, values, extrapolated, error_estimate,
 /// error_estimate_absolute, method, order}.

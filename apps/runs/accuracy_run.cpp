@@ -192,7 +192,9 @@ Estimate estimate_on(GridSolves& solves, const Grid& fine_grid, const GridSolve*
     const double unresolved = heights_estimate::unresolved_in_contact(
         fine_grid, solves.heights(fine_grid), fine.run.fields[std::min(k, fine.run.fields.size() - 1)].p,
         solves.certificate_tol());
-    floor_by_unresolved_height(e.quantities, unresolved, peak_load_step(fine.run.summary).value("approach", 0.0));
+    const nlohmann::json& peak_step = peak_load_step(fine.run.summary);
+    const double e_star = fine.run.summary.at("materials").at("E_star").get<double>();
+    floor_by_unresolved_height(e.quantities, unresolved, contact_stiffness(e_star, peak_step.value("contact_area", 0.0)));
   }
   return e;
 }

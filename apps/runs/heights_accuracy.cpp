@@ -56,7 +56,7 @@ nlohmann::json normal_summary(const Grid& grid, Control control, double certific
 
 nlohmann::json block(const std::vector<Grid>& grids, const std::vector<double>& seconds,
                      const std::vector<nlohmann::json>& summaries, const std::string& unavailable,
-                     double coarse_seconds, double unresolved) {
+                     double coarse_seconds, double unresolved, double e_star) {
   std::vector<GridTime> timed;
   for (std::size_t k = 0; k < grids.size(); ++k) timed.push_back({grids[k], seconds[k], &summaries[k]});
   std::vector<EstimatedQuantity> quantities;
@@ -68,7 +68,7 @@ nlohmann::json block(const std::vector<Grid>& grids, const std::vector<double>& 
       sizes.push_back(element_size(grids[k]));
     }
     quantities = estimate_quantities(sizes, per_level, grids.front().dimension);
-    floor_by_unresolved_height(quantities, unresolved, summaries.front().value("approach", 0.0));
+    floor_by_unresolved_height(quantities, unresolved, contact_stiffness(e_star, summaries.front().value("contact_area", 0.0)));
   }
   return accuracy_block(timed, unavailable, quantities, coarse_seconds, AccuracySpec{});
 }
@@ -146,7 +146,7 @@ nlohmann::json HeightsAccuracy::estimate(const std::vector<double>& heights, con
     finer_pressure = s.pressure;
   }
   return he::block(grids, seconds, summaries, unavailable, coarse_seconds,
-                   he::unresolved_in_contact(grid_, heights, fine.pressure, solver.certificate_tol));
+                   he::unresolved_in_contact(grid_, heights, fine.pressure, solver.certificate_tol), materials_.E_star());
 }
 
 }  // namespace dc::runs

@@ -36,10 +36,11 @@ SolverOptions coarse_solver(const SolverOptions& solver, const std::string& fine
 nlohmann::json normal_summary(const Grid& grid, Control control, double certificate_tol, const NormalSolution& s,
                               const SolverReport& report, SolveStatus status);
 /// summary.json's accuracy block of the grids (finest first) with their summaries and times.
-/// `unresolved` (m): the height detail the coarse grid does not carry (floor_by_unresolved_height).
+/// `unresolved` (m): the height detail the coarse grid does not carry (floor_by_unresolved_height,
+/// with the contact stiffness of E* (Pa) and the fine grid's contact area).
 nlohmann::json block(const std::vector<Grid>& grids, const std::vector<double>& seconds,
                      const std::vector<nlohmann::json>& summaries, const std::string& unavailable,
-                     double coarse_seconds, double unresolved);
+                     double coarse_seconds, double unresolved, double e_star);
 /// unresolved_height of `heights` where `pressure` is above the contact threshold.
 double unresolved_in_contact(const Grid& grid, const std::vector<double>& heights, const std::vector<double>& pressure,
                              double certificate_tol);

@@ -162,7 +162,7 @@ nlohmann::json TangentialAccuracy::estimate(const TangentialSolution& fine, doub
     calls_first_ = taken_by_all;
   }
   return he::block(grids, seconds, summaries, unavailable, coarse_seconds,
-                   he::unresolved_in_contact(grid_, heights_, fine.normal.pressure, certificate_tol));
+                   he::unresolved_in_contact(grid_, heights_, fine.normal.pressure, certificate_tol), materials_.E_star());
 }
 
 }  // namespace dc::runs
