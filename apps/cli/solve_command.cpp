@@ -246,9 +246,7 @@ int run_solve(const SolveArgs& args) {
   }
   if (runs::accuracy_target_missed(s)) {
     const nlohmann::json& a = s["accuracy"];
-    std::cerr << "error: accuracy: the target " << a["target"].get<double>() << " was not met (stopped by "
-              << a.value("stopped_by", std::string("?")) << " on " << a["grid"].dump()
-              << "); results written to " << dir << "\n";
+    std::cerr << "error: accuracy: " << runs::missed_target_message(a) << "; results written to " << dir << "\n";
     return runs::kExitUnconverged;
   }
   if (!run.converged) {

@@ -105,9 +105,7 @@ void enforce_limits(const nlohmann::json& limits, const py::object& result, cons
 void enforce_accuracy_target(const nlohmann::json& summary, const py::object& result, const std::string& advice) {
   if (!runs::accuracy_target_missed(summary)) return;
   const nlohmann::json& a = summary["accuracy"];
-  py::object err = py::handle(g_accuracy_error)("accuracy: the target " + std::to_string(a["target"].get<double>()) +
-                                                " was not met (stopped by " + a.value("stopped_by", std::string("?")) +
-                                                " on " + a["grid"].dump() + ")" + advice);
+  py::object err = py::handle(g_accuracy_error)("accuracy: " + runs::missed_target_message(a) + advice);
   err.attr("result") = result;
   PyErr_SetObject(g_accuracy_error, err.ptr());
   throw py::error_already_set();

@@ -16,6 +16,8 @@ nlohmann::json grid_json(const Grid& g) {
 
 namespace {
 
+DiscretisationError edge_element_band(const QuantityValue& q, double h, int dimension);
+
 DiscretisationError estimate_one(const QuantityValue& q, Convergence kind, const std::vector<GridValue>& values,
                                  int dimension, const std::vector<std::vector<std::vector<QuantityValue>>>* shifted,
                                  EstimatedRun run) {
@@ -37,11 +39,12 @@ DiscretisationError estimate_one(const QuantityValue& q, Convergence kind, const
     with_shifts.push_back({values[k].h, values[k].value, sum / count});
   }
   DiscretisationError e = estimate_discretisation_error_shifted(with_shifts, kind, options);
-  // A whole-element area or width: the fine grid's shifted placements differ by where its edges
-  // fall in their elements, and the answer is not known better than that spread (a half-width
-  // equal on the nested grids extrapolates to itself).
+  // A whole-element width in 2-D: its two edges decide it, each placed to within an element, and
+  // the shifted placements' extrapolation does not see that (a half-width equal on the nested
+  // grids extrapolates to itself): no less than the edge elements' band, nor the spread of the
+  // fine grid's shifted placements.
   if (q.whole_elements && e.method != "diverging") {
-    double spread = 0.0;
+    double spread = edge_element_band(q, values[0].h, dimension).error;
     for (const auto& shift : (*shifted)[0])
       for (const QuantityValue& v : shift)
         if (v.name == q.name) spread = std::max(spread, std::abs(v.value - values[0].value));
@@ -56,18 +59,19 @@ DiscretisationError estimate_one(const QuantityValue& q, Convergence kind, const
   return e;
 }
 
-/// The band of a whole-element area or width whose value no grid changed: its edges placed to
-/// half an element h each (a width: 2-D area, both edges h; a half-width h / 2; a 3-D area of
-/// equivalent radius R: its perimeter times h / 2, a relative h / R).
+/// The band of a whole-element area or width from its edge elements: each edge placed to within
+/// one element h (the discrete contact set may gain or lose its outermost element: a line
+/// contact's half-width measured 0.53 h off Hertz's): a half-width h, a 2-D width (its area) 2 h,
+/// a 3-D area of equivalent radius R its perimeter times h, a relative 2 h / R.
 DiscretisationError edge_element_band(const QuantityValue& q, double h, int dimension) {
   DiscretisationError e;
   e.value = e.extrapolated = q.value;
   const double size = std::abs(q.value);
   double relative = 0.0;
   if (q.name == "contact_half_width")
-    relative = 0.5 * h / size;
+    relative = h / size;
   else
-    relative = dimension == 2 ? h / size : h / std::sqrt(size / std::numbers::pi);
+    relative = dimension == 2 ? 2.0 * h / size : 2.0 * h / std::sqrt(size / std::numbers::pi);
   e.relative_error = std::isfinite(relative) ? relative : HUGE_VAL;
   e.error = e.relative_error * std::max(size, q.scale);
   e.method = "band";

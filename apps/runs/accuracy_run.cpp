@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cmath>
 #include <map>
+#include <sstream>
 #include <tuple>
 #include <string>
 #include <utility>
@@ -48,20 +49,23 @@ class GridSolves {
  public:
   GridSolves(const Case& c, bool progress) : case_(c), progress_(progress) {}
   /// The coarse grids take the backend that solved the fine one (auto would give the smallest
-  /// grids to Ipopt, at several times the native solver's time); the fallbacks stay.
+  /// grids to Ipopt, at several times the native solver's time); the fallbacks stay. A fine grid
+  /// (a refinement) takes the case's own choice: the start grid's Ipopt, kept, took 20 s on a
+  /// 5632-strip line contact the native solver solves in 0.03 s.
   void use_backend_of(const SolverReport& fine) {
     if (case_.solver.backend != Backend::automatic) return;
     if (const auto b = backend_from_string(fine.backend); b && *b != Backend::automatic) backend_ = *b;
   }
   /// `g` solved (once: a grid asked for again is the one solved before); a normal case from the
-  /// pressure of `warm_from` interpolated to `g` (a refinement starts from the coarser answer).
-  const GridSolve& solve(const Grid& g, const GridSolve* warm_from = nullptr) {
+  /// pressure of `warm_from` interpolated to `g` (a refinement starts from the coarser answer);
+  /// `coarse`: one of an estimate's coarse or shifted grids.
+  const GridSolve& solve(const Grid& g, const GridSolve* warm_from = nullptr, bool coarse = false) {
     const auto key = std::make_tuple(g.nx, g.ny, g.x0, g.y0);
     const auto found = solved_.find(key);
     if (found != solved_.end() && same_bounds(found->second.grid, g)) return found->second;
     Case on_grid = case_;
     on_grid.grid = g;
-    on_grid.solver.backend = backend_;
+    on_grid.solver.backend = coarse ? backend_ : case_.solver.backend;
     // The same operator on every grid: auto would build the dense matrix on the smaller ones,
     // which costs more than their FFT solve.
     if (on_grid.solver.operator_kind == OperatorKind::automatic && g.size() < case_.grid.size())
@@ -140,7 +144,7 @@ Estimate estimate_on(GridSolves& solves, const Grid& fine_grid, const GridSolve*
     }
     const GridSolve* solved = nullptr;
     try {
-      solved = &solves.solve(coarsened(fine_grid, factor));
+      solved = &solves.solve(coarsened(fine_grid, factor), nullptr, true);
     } catch (const Interrupted&) {  // the fine answer stands; the run says it was interrupted
       e.unavailable = "interrupted";
       e.interrupted = true;
@@ -168,7 +172,7 @@ Estimate estimate_on(GridSolves& solves, const Grid& fine_grid, const GridSolve*
       const double dx = share * g.dx;
       const GridSolve* s = nullptr;
       try {
-        s = &solves.solve(Grid::make(2, g.nx, 1, g.x0 + dx, g.x_max() + dx, 0.0, 0.0));
+        s = &solves.solve(Grid::make(2, g.nx, 1, g.x0 + dx, g.x_max() + dx, 0.0, 0.0), nullptr, true);
       } catch (const Interrupted&) {
         e.interrupted = true;
         use_shifted = false;
@@ -327,6 +331,26 @@ void print_accuracy(const nlohmann::json& a) {
   if (a["target"].is_number())
     std::printf("  %-16s %.3g on %s: %s (%s)\n", "target", a["target"].get<double>(), a["grid"].dump().c_str(),
                 a["met"].get<bool>() ? "met" : "NOT met", a.value("stopped_by", std::string()).c_str());
+}
+
+std::string missed_target_message(const nlohmann::json& a) {
+  std::ostringstream text;
+  text << "the target " << a.value("target", 0.0) << " was not met (stopped by " << a.value("stopped_by", std::string("?"))
+       << " on " << a.value("grid", nlohmann::json()).dump();
+  // The named quantity whose estimate is furthest from the target.
+  std::string worst;
+  double largest = -1.0;
+  if (a.contains("quantities") && a["quantities"].is_object() && a.contains("quantities_targeted"))
+    for (const auto& n : a["quantities_targeted"]) {
+      const std::string name = n.get<std::string>();
+      if (!a["quantities"].contains(name)) continue;
+      const nlohmann::json& e = a["quantities"][name].value("error_estimate", nlohmann::json());
+      const double err = e.is_number() ? e.get<double>() : HUGE_VAL;  // null: diverging
+      if (err > largest) largest = err, worst = name;
+    }
+  if (!worst.empty()) text << "; largest estimate: " << worst << " " << largest;
+  text << ")";
+  return text.str();
 }
 
 bool accuracy_target_missed(const nlohmann::json& summary) {

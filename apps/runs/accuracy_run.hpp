@@ -30,5 +30,8 @@ StaticRun run_static_with_accuracy(const Case& c, bool progress);
 
 /// True when the summary's accuracy block holds a target that was not met (exit 3).
 bool accuracy_target_missed(const nlohmann::json& summary);
+/// "the target 0.001 was not met (stopped by max_seconds on {"nx":6144}; largest estimate:
+/// contact_half_width 0.00024)": the summary's accuracy block of a missed target, in words.
+std::string missed_target_message(const nlohmann::json& accuracy);
 
 }  // namespace dc::runs

@@ -288,9 +288,7 @@ int run_dynamic(const Case& c, const std::string& dir, bool quiet) {
   if (report_limits(out.limits, dir)) return kExitBadInput;
   if (accuracy_target_missed(summary)) {
     const json& a = summary["accuracy"];
-    std::cerr << "error: accuracy: the target " << a["target"].get<double>() << " was not met (stopped by "
-              << a.value("stopped_by", std::string("?")) << " on " << a["grid"].dump() << "); results written to "
-              << dir << "\n";
+    std::cerr << "error: accuracy: " << missed_target_message(a) << "; results written to " << dir << "\n";
     return kExitUnconverged;
   }
   if (!r.completed) {
