@@ -56,9 +56,12 @@ std::vector<QuantityValue> accuracy_quantities(const nlohmann::json& s) {
   const double length = std::sqrt(std::max(number(s, "contact_area"), 0.0));
   q.push_back({"twisting_moment", mz, C::band, tiny * length});
   q.push_back({"Mz", mz, C::band, tiny * length});
+  // A shift that is zero in the continuum (Spence's symmetric indentation): its scale is the
+  // shift of gross sliding, about mu times the approach (Cattaneo: 3 mu P (2 - nu) / (16 G a)).
+  const double friction = force > 0.0 ? capacity / force : 0.0;
   if (is_pair(s, "rigid_shift"))
     q.push_back({"rigid_shift", std::hypot(s["rigid_shift"][0].get<double>(), s["rigid_shift"][1].get<double>()),
-                 C::band, 0.0});
+                 C::band, 1e-6 * friction * std::abs(number(s, "approach"))});
   if (is_pair(s, "creepage"))
     q.push_back({"creepage", std::hypot(s["creepage"][0].get<double>(), s["creepage"][1].get<double>()), C::band, 0.0});
   const double area = number(s, "contact_area");
