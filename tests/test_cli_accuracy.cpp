@@ -13,9 +13,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "accuracy_run.hpp"
+#include "case_model.hpp"
 #include "cli_runner.hpp"
 #include "contact_closed_forms.hpp"
 #include "material.hpp"
+#include "resource_estimate.hpp"
 
 namespace {
 
@@ -382,6 +385,36 @@ TEST_F(CliAccuracy, AMissedTargetSaysWhyAndExitsThree) {
   EXPECT_FALSE(s.at("accuracy").at("met").get<bool>());
   EXPECT_EQ(s.at("accuracy").at("stopped_by"), "max_elements");
   EXPECT_LE(s.at("grid").at("elements").get<double>(), 20000.0);
+}
+
+/// The memory available stops a refinement before the grid that would not fit (the default
+/// max_elements, 2048^2, is above it here): the finest grid that fits, met false, exit 3.
+TEST_F(CliAccuracy, TheMemoryAvailableStopsARefinement) {
+  if (DYNCONTACT_SANITIZED) GTEST_SKIP() << "an address-space limit is not for a sanitizer build";
+  json c = hertz_case(false);
+  c["accuracy"] = {{"target", 1e-6}, {"quantities", {"contact_area"}}};
+  // 600 MB of address space: 512^2 (about 80 MB by the estimate) fits twice over, 1024^2 does not.
+  const auto r = run_prefixed("ulimit -v 600000;", "solve " + write_case(c) + " --out out -q");
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("stopped by max_memory"), std::string::npos) << r.err;
+  const json s = json::parse(slurp(dir_ / "out" / "summary.json"));
+  EXPECT_FALSE(s.at("accuracy").at("met").get<bool>());
+  EXPECT_EQ(s.at("accuracy").at("stopped_by"), "max_memory");
+  EXPECT_LT(s.at("grid").at("elements").get<double>(), 1024.0 * 1024.0);
+  EXPECT_GT(s.at("grid").at("elements").get<double>(), 64.0 * 64.0);
+}
+
+/// The memory budget's arithmetic: twice the case's memory estimate (the one validate prints).
+TEST(AccuracyBudget, AGridFitsWhenTwiceItsEstimateIsAvailable) {
+  json doc = hertz_case(false);
+  doc["grid"] = {{"nx", 64}, {"ny", 64}, {"extent", 1.3}};
+  const dc::Case c = dc::build_case(doc);
+  const double bytes = dc::runs::estimate_resources(c).memory_bytes;
+  ASSERT_GT(bytes, 0.0);
+  EXPECT_TRUE(dc::runs::grid_fits_in_memory(c, c.grid, 2.01 * bytes));
+  EXPECT_FALSE(dc::runs::grid_fits_in_memory(c, c.grid, 1.99 * bytes));
+  // 32 times the elements along each axis: about 1000 times the memory.
+  EXPECT_FALSE(dc::runs::grid_fits_in_memory(c, dc::runs::refined(c.grid, 32), 100.0 * bytes));
 }
 
 /// A grid whose extent cuts the contact: the target grows it (the element size kept) instead of

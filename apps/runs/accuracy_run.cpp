@@ -16,7 +16,9 @@
 #include "discretisation_error.hpp"
 #include "grid_interpolation.hpp"
 #include "heights_accuracy.hpp"
+#include "fe_body_estimate.hpp"
 #include "interrupt.hpp"
+#include "resource_estimate.hpp"
 #include "solve_case.hpp"
 #include "tangential_run.hpp"
 
@@ -280,6 +282,7 @@ StaticRun refine_to_target(const Case& c, bool progress) {
       ++refinements;
     }
     if (static_cast<double>(next.size()) > static_cast<double>(spec.max_elements)) return stop("max_elements");
+    if (!grid_fits_in_memory(c, next, available_memory_bytes())) return stop("max_memory");
     // The next solves' time, from this grid's (a little worse than linear in the elements).
     const double growth = static_cast<double>(next.size()) / static_cast<double>(grid.size());
     const double predicted = (fine.seconds + e.coarse_seconds) * std::pow(growth, 1.1);

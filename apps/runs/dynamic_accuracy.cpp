@@ -11,6 +11,8 @@
 #include "accuracy_estimate.hpp"
 #include "accuracy_run.hpp"
 #include "errors.hpp"
+#include "fe_body_estimate.hpp"
+#include "resource_estimate.hpp"
 
 namespace dc::runs {
 namespace dynamic_estimate {  // named: the unity build puts accuracy_run.cpp's own in the same unit
@@ -199,6 +201,7 @@ DynamicOutcome simulate_dynamic_with_accuracy(const Case& c, bool progress, cons
     Grid next = refined(grid, factor);
     if (static_cast<double>(next.size()) > static_cast<double>(spec.max_elements) && factor > 2) next = refined(grid, 2);
     if (static_cast<double>(next.size()) > static_cast<double>(spec.max_elements)) return stop("max_elements");
+    if (!grid_fits_in_memory(c, next, available_memory_bytes())) return stop("max_memory");
     const double growth = static_cast<double>(next.size()) / static_cast<double>(grid.size());
     if (elapsed() + (fine.elapsed + e.coarse_seconds) * std::pow(growth, 1.1) > spec.max_seconds)
       return stop("max_seconds");

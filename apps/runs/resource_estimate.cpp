@@ -47,4 +47,10 @@ ResourceEstimate estimate_resources(const Case& c) {
   return e;
 }
 
+bool grid_fits_in_memory(const Case& c, const Grid& grid, double available_bytes) {
+  Case on_grid = c;
+  on_grid.grid = grid;
+  return 2.0 * estimate_resources(on_grid).memory_bytes <= available_bytes;
+}
+
 }  // namespace dc::runs

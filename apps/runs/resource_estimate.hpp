@@ -17,4 +17,9 @@ struct ResourceEstimate {
 
 ResourceEstimate estimate_resources(const Case& c);
 
+/// True when the case on `grid` (its estimate_resources memory, twice over: the estimate is
+/// within a factor of a few, and a refinement keeps the coarser grids' answers) fits in
+/// `available_bytes`: the accuracy refinement's memory budget (stopped_by "max_memory").
+bool grid_fits_in_memory(const Case& c, const Grid& grid, double available_bytes);
+
 }  // namespace dc::runs
