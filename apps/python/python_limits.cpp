@@ -63,7 +63,8 @@ void bind_errors(py::module_& m) {
   g_accuracy_error = accuracy_error.ptr();
   accuracy_error.attr("__doc__") =
       "The accuracy asked for (solve(..., accuracy=...) or the case's accuracy.target) was not reached\n"
-      "within accuracy.max_elements or accuracy.max_seconds (a RuntimeError; `dyncontact solve` exits 3).\n"
+      "within accuracy.max_elements, the memory available or accuracy.max_seconds (a RuntimeError;\n"
+      "`dyncontact solve` exits 3).\n"
       ".result holds the result of the finest grid solved, with its 'accuracy' block (met: False,\n"
       "stopped_by, the estimated error of each quantity).";
   static py::exception<dc::OutputError> output_error(m, "OutputError", PyExc_OSError);
