@@ -16,7 +16,6 @@
 #include "discretisation_error.hpp"
 #include "grid_interpolation.hpp"
 #include "heights_accuracy.hpp"
-#include "fe_body_estimate.hpp"
 #include "interrupt.hpp"
 #include "resource_estimate.hpp"
 #include "solve_case.hpp"

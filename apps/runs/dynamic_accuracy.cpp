@@ -11,7 +11,6 @@
 #include "accuracy_estimate.hpp"
 #include "accuracy_run.hpp"
 #include "errors.hpp"
-#include "fe_body_estimate.hpp"
 #include "resource_estimate.hpp"
 
 namespace dc::runs {

@@ -1,14 +1,9 @@
 #include "fe_body_estimate.hpp"
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <limits>
 #include <numbers>
-#include <sstream>
 
 #include "errors.hpp"
 
@@ -72,21 +67,6 @@ std::optional<FeBodyEstimate> estimate_fe_body(const Case& c) {
   e.seconds = kSecondsPerDof17 * std::pow(e.dofs, 1.7);
   e.key = e.refined_share > 0.5 ? "fe_body.contact_size" : "fe_body.elements";
   return e;
-}
-
-double available_memory_bytes() {
-  double available = std::numeric_limits<double>::infinity();
-  std::ifstream meminfo("/proc/meminfo");
-  for (std::string line; std::getline(meminfo, line);) {
-    if (line.rfind("MemAvailable:", 0) != 0) continue;
-    std::istringstream in(line.substr(13));
-    double kb = 0.0;
-    if (in >> kb) available = kb * 1024.0;
-  }
-  rlimit limit{};
-  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
-    available = std::min(available, static_cast<double>(limit.rlim_cur));
-  return available;
 }
 
 void check_fe_body_fits(const Case& c) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "case_model.hpp"
+#include "resource_estimate.hpp"  // available_memory_bytes
 
 namespace dc::runs {
 
@@ -23,10 +24,6 @@ struct FeBodyEstimate {
 
 /// None for a body given as a mesh file (its size is the file's) or a case without an fe_body.
 std::optional<FeBodyEstimate> estimate_fe_body(const Case& c);
-
-/// The memory this process may use (bytes): the smaller of MemAvailable and RLIMIT_AS
-/// (+infinity when neither is known).
-double available_memory_bytes();
 
 /// Throws InputError naming the estimate's key when the body's estimated memory exceeds what is
 /// available (the message gives both, and what to reduce).

@@ -1,14 +1,22 @@
 #include "resource_estimate.hpp"
 
+#include <sys/resource.h>
+
+#include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
 
 #include "linear_operator.hpp"
 
 namespace dc::runs {
 
-ResourceEstimate estimate_resources(const Case& c) {
+ResourceEstimate estimate_resources(const Case& c) { return estimate_resources(c, c.grid); }
+
+ResourceEstimate estimate_resources(const Case& c, const Grid& grid) {
   ResourceEstimate e;
-  const double n = static_cast<double>(c.grid.size());
+  const double n = static_cast<double>(grid.size());
   const bool tangential = c.problem == ProblemKind::tangential;
   const bool three_d = c.dimension == 3;
   // Unknowns per element of the largest operator: p (normal); tau_x, tau_y (3-D tangential).
@@ -47,10 +55,23 @@ ResourceEstimate estimate_resources(const Case& c) {
   return e;
 }
 
+double available_memory_bytes() {
+  double available = std::numeric_limits<double>::infinity();
+  std::ifstream meminfo("/proc/meminfo");
+  for (std::string line; std::getline(meminfo, line);) {
+    if (line.rfind("MemAvailable:", 0) != 0) continue;
+    std::istringstream in(line.substr(13));
+    double kb = 0.0;
+    if (in >> kb) available = kb * 1024.0;
+  }
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    available = std::min(available, static_cast<double>(limit.rlim_cur));
+  return available;
+}
+
 bool grid_fits_in_memory(const Case& c, const Grid& grid, double available_bytes) {
-  Case on_grid = c;
-  on_grid.grid = grid;
-  return 2.0 * estimate_resources(on_grid).memory_bytes <= available_bytes;
+  return 2.0 * estimate_resources(c, grid).memory_bytes <= available_bytes;
 }
 
 }  // namespace dc::runs

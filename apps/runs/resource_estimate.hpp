@@ -16,6 +16,12 @@ struct ResourceEstimate {
 };
 
 ResourceEstimate estimate_resources(const Case& c);
+/// The same case on another grid (an accuracy refinement's next grid), without copying the case.
+ResourceEstimate estimate_resources(const Case& c, const Grid& grid);
+
+/// The memory this process may use (bytes): the smaller of MemAvailable and RLIMIT_AS
+/// (+infinity when neither is known).
+double available_memory_bytes();
 
 /// True when the case on `grid` (its estimate_resources memory, twice over: the estimate is
 /// within a factor of a few, and a refinement keeps the coarser grids' answers) fits in
