@@ -126,16 +126,21 @@ bool DynamicSimulation::commit_step(const RigidBodyState& before, const RigidBod
   }
   const Wrench& con = cs.wrench;
   const Eigen::Vector3d F = ext.force + con.force;
-  sums.impulse += h * F;
-  sums.impulse_size += h * F.norm();
+  const Wrench ext_before = external(before.time);
+  const Wrench& con_before = sums.contact_before;
+  // The impulse: bdf1's own sum, dt F_{K+1} (m dV equals it step by step, (3.9)); for bdf2 the
+  // trapezoidal rule, second order as the scheme is (dt F_{K+1} misses dt/2 of the force at the
+  // run's start and end: 1 % of a pressed-in ball's release in 72 steps).
+  const Eigen::Vector3d dI = spec_.bdf2 ? Eigen::Vector3d(0.5 * h * (ext_before.force + con_before.force + F))
+                                        : Eigen::Vector3d(h * F);
+  sums.impulse += dI;
+  sums.impulse_size += dI.norm();
   // Work over the step's displacement and rotation by the trapezoidal rule (exact for a
   // wrench linear in the motion over the step): the end-of-step wrench alone misses a
   // share of every step's force change, which over an elastic impact's loading and
   // unloading adds up to ~10 % of the kinetic energy where the rebound loses 0.1 %.
   const Eigen::Vector3d dR = state.position - before.position;
   const Eigen::Vector3d dTheta = h * state.omega;
-  const Wrench ext_before = external(before.time);
-  const Wrench& con_before = sums.contact_before;
   sums.external_work +=
       0.5 * ((ext_before.force + ext.force).dot(dR) + (ext_before.moment + ext.moment).dot(dTheta));
   sums.contact_work +=

@@ -81,7 +81,9 @@ struct DynamicResult {
   std::map<std::string, int> backends;  ///< accepted steps in contact per backend that solved them
   int fallback_steps = 0;        ///< accepted steps whose contact solve fell back to another backend
   double worst_certificate = 0.0, last_certificate = 0.0;
-  double momentum_imbalance = 0.0;  ///< |m dV - sum dt F| / max(sum dt |F|, m |V|) over the run (bdf1: round-off)
+  /// |m dV - impulse| / max(|impulse| summed per step, m |V|) over the run: bdf1 sums dt F_{K+1}
+  /// (round-off); bdf2 the trapezoidal impulse (O(dt^2)).
+  double momentum_imbalance = 0.0;
   double energy_imbalance = 0.0;    ///< |KE_end - KE_0 - W_external - W_contact| / max(KE, |W|)
   EnergyAudit energy;               ///< at the end of the run
   /// numerical_damping / max(KE_0, KE_end, |work_of_loads|, the largest elastic energy, dissipated)
