@@ -56,16 +56,49 @@ ContactSize measure(const Grid& g, const std::vector<double>& p, int& n_contact)
 
 }  // namespace
 
+namespace {
+
+/// The vertical motion of a body that starts start_inside (m) inside the half-space, moving down
+/// at v_down, under the static load P (N, downward): in the potential V(d) = U(d) - P d, with
+/// the Hertz energy U(d) = 2/5 K d^(5/2) (P = K d^(3/2), K = 4/3 E* sqrt(R); Johnson 11.4).
+struct PressedStart {
+  double force = 0.0;     ///< N, K d_max^(3/2) at the deepest approach, V(d_max) = V(d0) + m v^2 / 2
+  double duration = 0.0;  ///< s, the Hertz impact time of the same energy at first touch; 0: never released
+};
+
+PressedStart pressed_start(double R, double m, double v_down, double start_inside, double P, double E_star) {
+  const double K = 4.0 / 3.0 * E_star * std::sqrt(R);
+  const auto V = [&](double d) { return 0.4 * K * std::pow(d, 2.5) - P * d; };
+  const double energy = 0.5 * m * v_down * v_down + V(start_inside);
+  // The deepest approach: V rises beyond the static approach d_s = (P / K)^(2/3).
+  double lo = std::pow(P / K, 2.0 / 3.0), hi = std::max(lo, start_inside) + 1e-30;
+  while (V(hi) < energy) hi *= 2.0;
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) (V(0.5 * (lo + hi)) < energy ? lo : hi) = 0.5 * (lo + hi);
+  PressedStart out;
+  out.force = K * std::pow(hi, 1.5);
+  // Released when it reaches the surface still moving up (V(0) = 0); the static load's part in
+  // the contact time is left out, as for an impact.
+  if (energy > 0.0) out.duration = hertz::sphere_impact(R, m, std::sqrt(2.0 * energy / m), E_star).duration;
+  return out;
+}
+
+}  // namespace
+
 bool dynamic_sizing_load(const DynamicSpec& s, const ContactSpec& c, NormalSpec& load) {
   double P = std::max(0.0, -s.force[2].value);
-  if (c.dimension == 3 && s.velocity[2] < 0.0 && c.profile.type != ProfileType::table &&
+  const double v_down = std::max(0.0, -s.velocity[2]);
+  const double start_inside =
+      s.normal_model == NormalModel::dynamic ? std::max(0.0, s.radius - s.position[2]) : 0.0;
+  if (c.dimension == 3 && (v_down > 0.0 || start_inside > 0.0) && c.profile.type != ProfileType::table &&
       c.profile.type != ProfileType::flat_punch) {
-    // Hertz impact (Johnson 11.4): delta_max = (15 m v^2 / (16 E* sqrt(R)))^(2/5), P = 4/3 E* sqrt(R) delta^(3/2).
     double A = 0.0, B = 0.0;
     c.profile.quadratic_coefficients(A, B);
     if (A > 0.0 && B > 0.0) {
-      const double R = 0.5 / std::sqrt(A * B);
-      P = std::max(P, hertz::sphere_impact(R, s.mass, s.velocity[2], c.materials.E_star()).force);
+      const double R = 0.5 / std::sqrt(A * B), E_star = c.materials.E_star();
+      // A body starting inside under the static load: its deepest approach; else the impact at v_down.
+      const double peak = start_inside > 0.0 ? pressed_start(R, s.mass, v_down, start_inside, P, E_star).force
+                                             : hertz::sphere_impact(R, s.mass, v_down, E_star).force;
+      P = std::max(P, peak);
     }
   }
   if (!(P > 0.0) || !std::isfinite(P)) return false;
@@ -90,13 +123,18 @@ std::optional<DynamicContactEstimate> estimate_dynamic_contact(const DynamicCont
     e.half_width_x = h.a;
     e.half_width_y = h.b;
   }
-  const double v0 = -s.velocity[2];
-  if (s.normal_model == NormalModel::dynamic && v0 > 0.0) {
-    // Hertz impact (R: the equivalent radius of the elliptic gap).
-    e.contact_time = hertz::sphere_impact(0.5 / std::sqrt(A * B), s.mass, v0, c.materials.E_star()).duration;
-    e.steps_per_contact = e.contact_time / s.dt;
-  }
   if (s.normal_model == NormalModel::dynamic) e.start_inside = std::max(0.0, s.radius - s.position[2]);
+  const double v_down = std::max(0.0, -s.velocity[2]);
+  if (s.normal_model == NormalModel::dynamic && e.start_inside > 0.0) {
+    // Pressed in: the Hertz impact of the energy it has at first touch when it is released.
+    e.contact_time = pressed_start(0.5 / std::sqrt(A * B), s.mass, v_down, e.start_inside,
+                                   std::max(0.0, -s.force[2].value), c.materials.E_star())
+                         .duration;
+  } else if (s.normal_model == NormalModel::dynamic && v_down > 0.0) {
+    // Hertz impact (R: the equivalent radius of the elliptic gap).
+    e.contact_time = hertz::sphere_impact(0.5 / std::sqrt(A * B), s.mass, v_down, c.materials.E_star()).duration;
+  }
+  if (e.contact_time > 0.0) e.steps_per_contact = e.contact_time / s.dt;
   return e;
 }
 
@@ -105,15 +143,30 @@ std::vector<ResultLimit> dynamic_limits_before(const DynamicContactSpec& c) {
   const auto e = estimate_dynamic_contact(c);
   if (!e) return out;
   const DynamicSpec& s = *c.dynamic;
-  if (e->start_inside > kStartInsideShare * e->approach + 1e-9 * s.radius)
-    throw InputError("body.initial.position",
-                     format("the body starts %.3g m inside the half-space (z = %.6g m, its lowest point %.6g m "
-                            "below the centre), ",
-                            e->start_inside, s.position[2], s.radius) +
-                         format("deeper than the loads and the impact would press it (Hertz approach %.3g m): the "
-                                "overlap's elastic force would throw it out; start it touching (z = body.radius) "
-                                "or above",
-                                e->approach));
+  // The contact's own limits first: no time step mends a contact the half-space cannot carry.
+  if (e->load > 0.0) {
+    const Grid& g = c.grid;
+    ContactSize size;
+    size.half_width_x = e->half_width_x;
+    size.half_width_y = e->half_width_y;
+    const bool beyond = e->half_width_x > std::min(-g.x0, g.x_max()) || e->half_width_y > std::min(-g.y0, g.y_max());
+    size.edge_fraction = beyond ? 1.0 : 0.0;
+    size.across_x = static_cast<int>(2.0 * e->half_width_x / g.dx);
+    size.across_y = static_cast<int>(2.0 * e->half_width_y / g.dy);
+    const std::string lead =
+        e->start_inside > 0.0
+            ? format("the Hertz estimate of the largest contact (%.3g N; the body starts %.3g m inside the half-space, "
+                     "body.initial.position): ",
+                     e->load, e->start_inside)
+            : format("the Hertz estimate of the largest contact (%.3g N): ", e->load);
+    for (ResultLimit l : result_limits(c, size)) {
+      if (l.key == "grid" && beyond)  // an estimate: the share of the edge is not known before the run
+        l.message = "the contact reaches beyond the grid: " + l.message.substr(l.message.find(": ") + 2);
+      if (l.error) throw InputError(l.key, lead + l.message);
+      l.message = lead + l.message;
+      out.push_back(l);
+    }
+  }
   // Adaptive steps: the local error control, not a step count, resolves the contact (time.dt
   // is only the first step).
   if (!s.adaptive && e->contact_time > 0.0 && e->steps_per_contact < kMinStepsPerContact) {
@@ -128,24 +181,6 @@ std::vector<ResultLimit> dynamic_limits_before(const DynamicContactSpec& c) {
     l.message += " (accepted: time.allow_coarse_dt)";
     l.accepted = true;
     out.push_back(l);
-  }
-  if (e->load > 0.0) {
-    const Grid& g = c.grid;
-    ContactSize size;
-    size.half_width_x = e->half_width_x;
-    size.half_width_y = e->half_width_y;
-    const bool beyond = e->half_width_x > std::min(-g.x0, g.x_max()) || e->half_width_y > std::min(-g.y0, g.y_max());
-    size.edge_fraction = beyond ? 1.0 : 0.0;
-    size.across_x = static_cast<int>(2.0 * e->half_width_x / g.dx);
-    size.across_y = static_cast<int>(2.0 * e->half_width_y / g.dy);
-    const std::string lead = format("the Hertz estimate of the largest contact (%.3g N): ", e->load);
-    for (ResultLimit l : result_limits(c, size)) {
-      if (l.key == "grid" && beyond)  // an estimate: the share of the edge is not known before the run
-        l.message = "the contact reaches beyond the grid: " + l.message.substr(l.message.find(": ") + 2);
-      if (l.error) throw InputError(l.key, lead + l.message);
-      l.message = lead + l.message;
-      out.push_back(l);
-    }
   }
   return out;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // The result limits of a "dynamic" run (docs/limits.md): what is known wrong before the run
-// (a body starting inside the half-space, a time step too coarse for the Hertz contact time,
-// an estimated contact the grid or the half-space model cannot hold) and what the run shows
+// (a time step too coarse for the Hertz contact time of an impact or of a body released from
+// inside the half-space, an estimated contact the grid or the half-space model cannot hold) and what the run shows
 // at any step (the contact reaching the grid's edge, a/R, a body penetrating between the grid's
 // elements, too few steps in a contact, the energy balance).
 #include <optional>
@@ -16,12 +16,11 @@ namespace dc::dynamics {
 /// Fewer steps than this in a Hertz contact time and the impact's peak force and rebound are
 /// off by several per cent (ball-impact, bdf2: 14 steps 8 %, 7 steps 19 %, 2 steps 70 %).
 inline constexpr double kMinStepsPerContact = 20.0;
-/// A body may start inside the half-space by up to this share of the deepest Hertz approach the
-/// run's loads give (a start at its static equilibrium, or a little beyond it).
-inline constexpr double kStartInsideShare = 1.1;
 
 /// The Hertz estimate of a dynamic case's largest contact (3-D curved profiles; the sizing load
-/// of grid.extent: the static vertical load or the impact's peak force, Johnson 11.4).
+/// of grid.extent: the static vertical load or the impact's peak force, Johnson 11.4). A body
+/// starting inside the half-space (pressed in, then released) is on the path of the impact whose
+/// energy at first touch is its kinetic plus its stored elastic energy, 2/5 P(d0) d0.
 struct DynamicContactEstimate {
   double load = 0.0;            ///< N
   double approach = 0.0;        ///< m, at that load
@@ -33,16 +32,17 @@ struct DynamicContactEstimate {
 
 /// The normal load that sizes a dynamic case's `grid.extent` when it has no `normal` block: the
 /// larger of the static vertical load (-loads.force.z) and, in 3-D, the peak force of a Hertz
-/// impact at the initial downward speed (Johnson 11.4); false when neither is positive.
+/// impact at the initial downward speed and start inside the half-space (Johnson 11.4); false
+/// when neither is positive.
 bool dynamic_sizing_load(const DynamicSpec& spec, const ContactSpec& c, NormalSpec& load);
 
 /// None for a case without a Hertz estimate (2-D, flat or table profiles, an fe_body).
 std::optional<DynamicContactEstimate> estimate_dynamic_contact(const DynamicContactSpec& c);
 
-/// Before anything is solved: throws InputError naming body.initial.position (starting inside
-/// the half-space beyond kStartInsideShare of the Hertz approach), time.dt (an impact with fewer
-/// than kMinStepsPerContact steps, unless time.allow_coarse_dt or time.adaptive) or the key of
-/// an error limit of the estimated contact (grid, materials); returns the warnings.
+/// Before anything is solved: throws InputError naming time.dt (an impact, or the release of a
+/// body pressed in, with fewer than kMinStepsPerContact steps in its contact time, unless
+/// time.allow_coarse_dt or time.adaptive) or the key of an error limit of the estimated contact
+/// (grid: the contact beyond the grid; materials: a/R); returns the warnings.
 std::vector<ResultLimit> dynamic_limits_before(const DynamicContactSpec& c);
 
 /// Follows a run step by step; limits() after it.

@@ -3,6 +3,7 @@
 // step is in summary.json's "limits" with exit 2, and what the case accepts is recorded as such.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 #include <string>
 
@@ -72,16 +73,45 @@ TEST_F(CliDynamicLimits, AContactThatOutgrowsTheGridDuringTheRunIsAnError) {
   EXPECT_FALSE(find_limit(s, "grid", "error").is_null()) << s["limits"].dump();
 }
 
-TEST_F(CliDynamicLimits, ABodyStartingInsideTheHalfSpaceIsRefused) {
-  // 100 um inside: four times the impact's deepest Hertz approach (23 um).
-  const std::string inside = ball([](json& d) { d["body"]["initial"]["position"] = {0.0, 0.0, 0.0099}; });
-  expect_input_error("validate " + inside, "body.initial.position");
-  expect_input_error("solve " + inside + " -q --out inside", "body.initial.position");
-  // Within the approach the impact reaches: a start in contact, accepted.
-  const CliResult r =
-      run("solve " + ball([](json& d) { d["body"]["initial"]["position"] = {0.0, 0.0, 0.01 - 1e-5}; }) +
-          " -q --out shallow");
-  EXPECT_EQ(r.code, 0) << r.err;
+TEST_F(CliDynamicLimits, ABodyStartedPressedIntoTheHalfSpaceIsReleasedAsHertzSays) {
+  // The ball at rest, 20 um inside the half-space: its stored Hertz energy U = 0.4 K d0^2.5
+  // (K = 4/3 E* sqrt(R)) throws it off at sqrt(2U/m) after the second half of a Hertz impact,
+  // 1.4716 d0 / v (Johnson 11.4: the whole impact lasts 2.9432 d_max / v0), from the force
+  // K d0^1.5. Tolerances hold on 12 x 12 elements with dt = 5e-7 (72 steps in contact).
+  const double R = 0.01, m = 0.032673, d0 = 2e-5;
+  const double E_star = 210e9 / (2.0 * (1.0 - 0.3 * 0.3));
+  const double K = 4.0 / 3.0 * E_star * std::sqrt(R);
+  const double v = std::sqrt(2.0 * 0.4 * K * std::pow(d0, 2.5) / m);
+  const auto released = [&](double dt) {
+    return ball([&](json& d) {
+      d["body"]["initial"]["position"] = {0.0, 0.0, R - d0};
+      d["body"]["initial"]["velocity"] = {0.0, 0.0, 0.0};
+      d["time"]["t_end"] = 6e-5;
+      d["time"]["dt"] = dt;
+    });
+  };
+  CliResult r = run("solve " + released(5e-7) + " -q --out release");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json s = json::parse(slurp(dir_ / "release" / "summary.json"));
+  EXPECT_TRUE(s["limits"].empty()) << s["limits"].dump();
+  const json& peaks = s["peaks"];
+  EXPECT_NEAR(peaks["rebound_velocity"].get<double>() / v, 1.0, 3e-3);
+  EXPECT_NEAR(peaks["contact_time"].get<double>() / (1.4716 * d0 / v), 1.0, 2e-3);
+  EXPECT_NEAR(peaks["max_normal_force"].get<double>() / (K * std::pow(d0, 1.5)), 1.0, 3e-3);
+  // BDF2's momentum balance (the trapezoidal impulse) is second order in dt.
+  const double momentum = s["balances"]["momentum"].get<double>();
+  EXPECT_LT(momentum, 1e-4);
+  r = run("solve " + released(2.5e-7) + " -q --out finer");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json f = json::parse(slurp(dir_ / "finer" / "summary.json"));
+  EXPECT_LT(f["balances"]["momentum"].get<double>(), momentum / 3.0);
+  // At z = 0 the ball's centre is on the surface: its contact (a = R) is no half-space contact.
+  const std::string sunk = ball([](json& d) {
+    d["body"]["initial"]["position"] = {0.0, 0.0, 0.0};
+    d["body"]["initial"]["velocity"] = {0.0, 0.0, 0.0};
+  });
+  expect_input_error("validate " + sunk, "materials");
+  expect_input_error("solve " + sunk + " -q --out sunk", "materials");
 }
 
 TEST_F(CliDynamicLimits, ATimeStepTooCoarseForTheImpactIsRefusedOrAccepted) {
