@@ -54,10 +54,6 @@ ContactSize measure(const Grid& g, const std::vector<double>& p, int& n_contact)
   return size;
 }
 
-}  // namespace
-
-namespace {
-
 /// The vertical motion of a body that starts start_inside (m) inside the half-space, moving down
 /// at v_down, under the static load P (N, downward): in the potential V(d) = U(d) - P d, with
 /// the Hertz energy U(d) = 2/5 K d^(5/2) (P = K d^(3/2), K = 4/3 E* sqrt(R); Johnson 11.4).

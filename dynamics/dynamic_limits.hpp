@@ -19,8 +19,9 @@ inline constexpr double kMinStepsPerContact = 20.0;
 
 /// The Hertz estimate of a dynamic case's largest contact (3-D curved profiles; the sizing load
 /// of grid.extent: the static vertical load or the impact's peak force, Johnson 11.4). A body
-/// starting inside the half-space (pressed in, then released) is on the path of the impact whose
-/// energy at first touch is its kinetic plus its stored elastic energy, 2/5 P(d0) d0.
+/// starting inside the half-space (pressed in, then let go) moves in V(d) = U(d) - P d under the
+/// static load P: its deepest approach sizes the contact, and it is released, as the impact of
+/// its energy at first touch (kinetic + 2/5 P(d0) d0 - P d0), only when that energy is positive.
 struct DynamicContactEstimate {
   double load = 0.0;            ///< N
   double approach = 0.0;        ///< m, at that load
@@ -31,9 +32,10 @@ struct DynamicContactEstimate {
 };
 
 /// The normal load that sizes a dynamic case's `grid.extent` when it has no `normal` block: the
-/// larger of the static vertical load (-loads.force.z) and, in 3-D, the peak force of a Hertz
-/// impact at the initial downward speed and start inside the half-space (Johnson 11.4); false
-/// when neither is positive.
+/// larger of the static vertical load P (-loads.force.z) and, in 3-D, the peak force of a Hertz
+/// impact at the initial downward speed (Johnson 11.4) or, for a body starting inside the
+/// half-space, the force at the deepest approach of its motion under P; false when neither is
+/// positive.
 bool dynamic_sizing_load(const DynamicSpec& spec, const ContactSpec& c, NormalSpec& load);
 
 /// None for a case without a Hertz estimate (2-D, flat or table profiles, an fe_body).
