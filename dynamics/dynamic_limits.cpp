@@ -54,23 +54,29 @@ ContactSize measure(const Grid& g, const std::vector<double>& p, int& n_contact)
   return size;
 }
 
-/// The vertical motion of a body that starts start_inside (m) inside the half-space, moving down
-/// at v_down, under the static load P (N, downward): in the potential V(d) = U(d) - P d, with
-/// the Hertz energy U(d) = 2/5 K d^(5/2) (P = K d^(3/2), K = 4/3 E* sqrt(R); Johnson 11.4).
-struct PressedStart {
-  double force = 0.0;     ///< N, K d_max^(3/2) at the deepest approach, V(d_max) = V(d0) + m v^2 / 2
-  double duration = 0.0;  ///< s, the Hertz impact time of the same energy at first touch; 0: never released
+/// The vertical motion of a body whose lowest point starts start_inside (m; negative: above the
+/// surface) inside the half-space with the vertical speed v_z (m/s, up positive), under the static
+/// downward load P (N): in the potential V(d) = U(d) - P d (V = -P d above the surface), with the
+/// Hertz energy U(d) = 2/5 K d^(5/2) (P = K d^(3/2), K = 4/3 E* sqrt(R); Johnson 11.4). A load
+/// applied at once to a body resting on the surface swings it to 2.5 P (the deepest approach
+/// (5/2)^(2/3) d_s), not to P.
+struct VerticalMotion {
+  double force = 0.0;     ///< N, K d_max^(3/2) at the deepest approach, V(d_max) = V(d0) + m v^2 / 2; 0: no contact
+  double duration = 0.0;  ///< s, the Hertz impact time of the energy at first touch; 0: never released
 };
 
-PressedStart pressed_start(double R, double m, double v_down, double start_inside, double P, double E_star) {
+VerticalMotion vertical_motion(double R, double m, double v_z, double start_inside, double P, double E_star) {
   const double K = 4.0 / 3.0 * E_star * std::sqrt(R);
-  const auto V = [&](double d) { return 0.4 * K * std::pow(d, 2.5) - P * d; };
-  const double energy = 0.5 * m * v_down * v_down + V(start_inside);
+  const auto V = [&](double d) { return d > 0.0 ? 0.4 * K * std::pow(d, 2.5) - P * d : -P * d; };
+  // Moving up without a load, the body leaves: its speed does not bring it deeper.
+  const double kinetic = v_z < 0.0 || P > 0.0 ? 0.5 * m * v_z * v_z : 0.0;
+  const double energy = kinetic + V(start_inside);
+  VerticalMotion out;
+  if (!(P > 0.0) && !(energy > 0.0)) return out;  // never touches
   // The deepest approach: V rises beyond the static approach d_s = (P / K)^(2/3).
   double lo = std::pow(P / K, 2.0 / 3.0), hi = std::max(lo, start_inside) + 1e-30;
   while (V(hi) < energy) hi *= 2.0;
   for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) (V(0.5 * (lo + hi)) < energy ? lo : hi) = 0.5 * (lo + hi);
-  PressedStart out;
   out.force = K * std::pow(hi, 1.5);
   // Released when it reaches the surface still moving up (V(0) = 0); the static load's part in
   // the contact time is left out, as for an impact.
@@ -78,24 +84,31 @@ PressedStart pressed_start(double R, double m, double v_down, double start_insid
   return out;
 }
 
+/// The equivalent radius of a curved 3-D profile's elliptic gap (0: no Hertz estimate).
+double equivalent_radius(const ContactSpec& c) {
+  if (c.dimension != 3 || c.profile.type == ProfileType::table || c.profile.type == ProfileType::flat_punch)
+    return 0.0;
+  double A = 0.0, B = 0.0;
+  c.profile.quadratic_coefficients(A, B);
+  return A > 0.0 && B > 0.0 ? 0.5 / std::sqrt(A * B) : 0.0;
+}
+
+/// The vertical motion of a dynamic normal model's body from its initial state.
+VerticalMotion vertical_motion(const DynamicSpec& s, double R, double E_star) {
+  return vertical_motion(R, s.mass, s.velocity[2], s.radius - s.position[2], std::max(0.0, -s.force[2].value),
+                         E_star);
+}
+
 }  // namespace
 
 bool dynamic_sizing_load(const DynamicSpec& s, const ContactSpec& c, NormalSpec& load) {
   double P = std::max(0.0, -s.force[2].value);
-  const double v_down = std::max(0.0, -s.velocity[2]);
-  const double start_inside =
-      s.normal_model == NormalModel::dynamic ? std::max(0.0, s.radius - s.position[2]) : 0.0;
-  if (c.dimension == 3 && (v_down > 0.0 || start_inside > 0.0) && c.profile.type != ProfileType::table &&
-      c.profile.type != ProfileType::flat_punch) {
-    double A = 0.0, B = 0.0;
-    c.profile.quadratic_coefficients(A, B);
-    if (A > 0.0 && B > 0.0) {
-      const double R = 0.5 / std::sqrt(A * B), E_star = c.materials.E_star();
-      // A body starting inside under the static load: its deepest approach; else the impact at v_down.
-      const double peak = start_inside > 0.0 ? pressed_start(R, s.mass, v_down, start_inside, P, E_star).force
-                                             : hertz::sphere_impact(R, s.mass, v_down, E_star).force;
-      P = std::max(P, peak);
-    }
+  if (const double R = equivalent_radius(c); R > 0.0) {
+    const double E_star = c.materials.E_star();
+    if (s.normal_model == NormalModel::dynamic)  // the deepest approach of the vertical motion
+      P = std::max(P, vertical_motion(s, R, E_star).force);
+    else if (s.velocity[2] < 0.0)  // the impact at the initial downward speed
+      P = std::max(P, hertz::sphere_impact(R, s.mass, -s.velocity[2], E_star).force);
   }
   if (!(P > 0.0) || !std::isfinite(P)) return false;
   load.control = Control::force;
@@ -104,11 +117,11 @@ bool dynamic_sizing_load(const DynamicSpec& s, const ContactSpec& c, NormalSpec&
 }
 
 std::optional<DynamicContactEstimate> estimate_dynamic_contact(const DynamicContactSpec& c) {
-  if (!c.dynamic || c.dimension != 3 || c.fe_body) return std::nullopt;
-  if (c.profile.type == ProfileType::table || c.profile.type == ProfileType::flat_punch) return std::nullopt;
+  if (!c.dynamic || c.fe_body) return std::nullopt;
+  const double R = equivalent_radius(c);
+  if (!(R > 0.0)) return std::nullopt;
   double A = 0.0, B = 0.0;
   c.profile.quadratic_coefficients(A, B);
-  if (!(A > 0.0 && B > 0.0)) return std::nullopt;
   const DynamicSpec& s = *c.dynamic;
   DynamicContactEstimate e;
   NormalSpec load;
@@ -119,16 +132,10 @@ std::optional<DynamicContactEstimate> estimate_dynamic_contact(const DynamicCont
     e.half_width_x = h.a;
     e.half_width_y = h.b;
   }
-  if (s.normal_model == NormalModel::dynamic) e.start_inside = std::max(0.0, s.radius - s.position[2]);
-  const double v_down = std::max(0.0, -s.velocity[2]);
-  if (s.normal_model == NormalModel::dynamic && e.start_inside > 0.0) {
-    // Pressed in: the Hertz impact of the energy it has at first touch when it is released.
-    e.contact_time = pressed_start(0.5 / std::sqrt(A * B), s.mass, v_down, e.start_inside,
-                                   std::max(0.0, -s.force[2].value), c.materials.E_star())
-                         .duration;
-  } else if (s.normal_model == NormalModel::dynamic && v_down > 0.0) {
-    // Hertz impact (R: the equivalent radius of the elliptic gap).
-    e.contact_time = hertz::sphere_impact(0.5 / std::sqrt(A * B), s.mass, v_down, c.materials.E_star()).duration;
+  if (s.normal_model == NormalModel::dynamic) {
+    e.start_inside = std::max(0.0, s.radius - s.position[2]);
+    // An impact, or the release of a body pressed in: the Hertz impact of its energy at first touch.
+    e.contact_time = vertical_motion(s, R, c.materials.E_star()).duration;
   }
   if (e.contact_time > 0.0) e.steps_per_contact = e.contact_time / s.dt;
   return e;

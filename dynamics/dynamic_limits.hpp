@@ -18,10 +18,11 @@ namespace dc::dynamics {
 inline constexpr double kMinStepsPerContact = 20.0;
 
 /// The Hertz estimate of a dynamic case's largest contact (3-D curved profiles; the sizing load
-/// of grid.extent: the static vertical load or the impact's peak force, Johnson 11.4). A body
-/// starting inside the half-space (pressed in, then let go) moves in V(d) = U(d) - P d under the
-/// static load P: its deepest approach sizes the contact, and it is released, as the impact of
-/// its energy at first touch (kinetic + 2/5 P(d0) d0 - P d0), only when that energy is positive.
+/// of grid.extent). In the dynamic normal model the body moves vertically in V(d) = U(d) - P d
+/// under the static load P (U the Hertz energy, Johnson 11.4; V = -P d above the surface): its
+/// deepest approach sizes the contact (an impact's peak force; 2.5 P for a load applied at once
+/// to a body resting on the surface), and it is released, as the impact of its energy at first
+/// touch (kinetic + V(d0)), only when that energy is positive.
 struct DynamicContactEstimate {
   double load = 0.0;            ///< N
   double approach = 0.0;        ///< m, at that load
@@ -32,9 +33,9 @@ struct DynamicContactEstimate {
 };
 
 /// The normal load that sizes a dynamic case's `grid.extent` when it has no `normal` block: the
-/// larger of the static vertical load P (-loads.force.z) and, in 3-D, the peak force of a Hertz
-/// impact at the initial downward speed (Johnson 11.4) or, for a body starting inside the
-/// half-space, the force at the deepest approach of its motion under P; false when neither is
+/// static vertical load P (-loads.force.z) or, in 3-D on a curved profile, the force at the
+/// deepest approach of the vertical motion (dynamic normal model) or of a Hertz impact at the
+/// initial downward speed (quasi-static normal model), whichever is larger; false when none is
 /// positive.
 bool dynamic_sizing_load(const DynamicSpec& spec, const ContactSpec& c, NormalSpec& load);
 

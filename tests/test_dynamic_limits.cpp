@@ -77,6 +77,30 @@ TEST(DynamicLimits, APressedStartUnderAStaticLoadIsReleasedOnlyWithEnoughEnergy)
   EXPECT_GT(start(1.01 * d_release).contact_time, 0.0);
 }
 
+TEST(DynamicLimits, ALoadAppliedAtOnceSizesTheContactForItsOvershoot) {
+  // At rest on the surface, P applied at once: the body swings to U(d) = P d, the force
+  // K d^1.5 = 2.5 P (twice the static approach's energy), and oscillates in contact (no release).
+  const double K = 4.0 / 3.0 * 210e9 / (2.0 * (1.0 - 0.09)) * std::sqrt(0.01), P = 1000.0, m = 0.032673;
+  const auto start = [&](double gap) {
+    nlohmann::json doc = test::coarse_ball_impact();
+    doc["body"]["initial"]["position"] = {0.0, 0.0, 0.01 + gap};
+    doc["body"]["initial"]["velocity"] = {0.0, 0.0, 0.0};
+    doc["loads"] = {{"force", {{"z", {{"value", -P}}}}}};
+    return *estimate_dynamic_contact(build_case(doc));
+  };
+  const DynamicContactEstimate touching = start(0.0);
+  EXPECT_NEAR(touching.load / P, 2.5, 1e-9);
+  EXPECT_EQ(touching.contact_time, 0.0);
+  // Falling from a gap h at rest: the load's work P h is the impact's energy at first touch;
+  // the deepest approach has 2/5 K d^2.5 - P d = P h, the contact time Hertz's at sqrt(2 P h / m).
+  const double h = 1e-5;
+  const DynamicContactEstimate falling = start(h);
+  const double d = std::pow(falling.load / K, 2.0 / 3.0);
+  EXPECT_NEAR((0.4 * K * std::pow(d, 2.5) - P * d) / (P * h), 1.0, 1e-9);
+  const double v = std::sqrt(2.0 * P * h / m), d_star = std::pow(1.25 * m * v * v / K, 0.4);
+  EXPECT_NEAR(falling.contact_time / (2.9432 * d_star / v), 1.0, 1e-3);
+}
+
 TEST(DynamicLimits, RefusedBeforeTheRun) {
   nlohmann::json coarse = test::coarse_ball_impact();
   coarse["time"]["dt"] = 5e-5;
