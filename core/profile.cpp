@@ -1,7 +1,10 @@
 // Profiles (2.6). Table profiles: ProfileSpec::table_x/table_y/table_h are the CSV columns as
 // read (one entry per row, any order); they must form a regular lattice (every distinct x
 // with every distinct y, or a single y row: then h depends on x only). Heights at element
-// centres are interpolated bilinearly; an element centre outside the table is an InputError.
+// centres are interpolated along each axis as linear plus the minmod-limited parabola of the
+// second differences (TableLattice::along: exact for quadratics, no overshoot at steps); the
+// table covers half a node spacing beyond its outer nodes, an element centre beyond that is an
+// InputError.
 #include "profile.hpp"
 #include "profile_turned.hpp"
 
@@ -75,37 +78,55 @@ struct TableLattice {
     }
   }
 
-  /// Position of x in the sorted axis as (cell index, weight of the upper node); throws
-  /// when x lies outside the axis.
-  static void locate(const std::vector<double>& axis, double x, std::size_t& cell, double& w) {
+  /// Position of x in the sorted axis as (cell index, position t in the cell: 0 at its lower
+  /// node, 1 at its upper). The table covers half a node spacing beyond its outer nodes (a table
+  /// at a grid's element centres covers the grid's elements, so finer grids over the same bounds
+  /// are covered too; t from -1/2 to 3/2 in the outer cells); beyond that it throws.
+  static void locate(const std::vector<double>& axis, double x, std::size_t& cell, double& t) {
+    const std::size_t n = axis.size();
     const double tol = 1e-9 * (axis.back() - axis.front());
-    if (x < axis.front() - tol || x > axis.back() + tol)
-      throw InputError("profile.file", "grid extends outside the table");
-    if (axis.size() == 1) {
-      cell = 0;
-      w = 0.0;
-      return;
-    }
+    const double lo = axis[0] - 0.5 * (axis[1] - axis[0]), hi = axis[n - 1] + 0.5 * (axis[n - 1] - axis[n - 2]);
+    if (x < lo - tol || x > hi + tol) throw InputError("profile.file", "grid extends outside the table");
     auto it = std::upper_bound(axis.begin(), axis.end(), x);
-    std::size_t hi = static_cast<std::size_t>(it - axis.begin());
-    hi = std::clamp<std::size_t>(hi, 1, axis.size() - 1);
-    cell = hi - 1;
-    w = std::clamp((x - axis[cell]) / (axis[hi] - axis[cell]), 0.0, 1.0);
+    const std::size_t upper = std::clamp<std::size_t>(static_cast<std::size_t>(it - axis.begin()), 1, n - 1);
+    cell = upper - 1;
+    t = std::clamp((x - axis[cell]) / (axis[upper] - axis[cell]), -0.5, 1.5);
   }
 
-  /// Bilinear interpolation; a table with a single y row depends on x only (extruded along y).
+  /// Along one axis between the values v[cell] and v[cell + 1] of n nodes: linear plus the
+  /// parabola of the cell's second difference, v(t) = (1 - t) v0 + t v1 - t (1 - t) D / 2, D the
+  /// smaller of the second differences at the cell's nodes when they agree in sign, else 0
+  /// (minmod; one-sided in the outer cells). Exact for a quadratic, continuous slope there, and
+  /// no overshoot at a step (a sharp edge stays linear); bilinear interpolation's kinks at every
+  /// node would make the pressure log-singular on the grids between the nodes.
+  template <class Value>
+  static double along(std::size_t n, std::size_t cell, double t, const Value& v) {
+    const double v0 = v(cell), v1 = v(cell + 1);
+    double D = 0.0;
+    if (n >= 3) {
+      auto second = [&](std::size_t k) { return v(k - 1) - 2.0 * v(k) + v(k + 1); };
+      const bool has_lower = cell >= 1, has_upper = cell + 2 < n;
+      if (has_lower && has_upper) {
+        const double a = second(cell), b = second(cell + 1);
+        D = a * b > 0.0 ? (std::abs(a) < std::abs(b) ? a : b) : 0.0;
+      } else {
+        D = has_lower ? second(cell) : second(cell + 1);
+      }
+    }
+    return (1.0 - t) * v0 + t * v1 - 0.5 * t * (1.0 - t) * D;
+  }
+
+  /// The height at (x, y): along x on the four rows about y, then along y; a table with a single
+  /// y row depends on x only (extruded along y).
   double at(double x, double y) const {
     std::size_t i = 0, j = 0;
-    double wx = 0.0, wy = 0.0;
-    locate(xs, x, i, wx);
-    const std::size_t mx = xs.size();
-    auto H = [&](std::size_t a, std::size_t b) { return h[a + mx * b]; };
-    const std::size_t i1 = std::min(i + 1, mx - 1);
-    if (ys.size() == 1) return (1.0 - wx) * H(i, 0) + wx * H(i1, 0);
-    locate(ys, y, j, wy);
-    const std::size_t j1 = std::min(j + 1, ys.size() - 1);
-    return (1.0 - wx) * (1.0 - wy) * H(i, j) + wx * (1.0 - wy) * H(i1, j) +
-           (1.0 - wx) * wy * H(i, j1) + wx * wy * H(i1, j1);
+    double tx = 0.0, ty = 0.0;
+    locate(xs, x, i, tx);
+    const std::size_t mx = xs.size(), my = ys.size();
+    auto row = [&](std::size_t b) { return along(mx, i, tx, [&](std::size_t a) { return h[a + mx * b]; }); };
+    if (my == 1) return row(0);
+    locate(ys, y, j, ty);
+    return along(my, j, ty, row);
   }
 };
 

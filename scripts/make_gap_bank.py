@@ -22,7 +22,7 @@ measured-wheel-rail, measured-wheel-rail-force, conformal-band, two-patches, rou
 flat-punch-sharp, cone.
 
 Each case is a dyncontact normal case (docs/CASES.md) with a table profile: CSV columns x,y,h
-in metres on a regular lattice, interpolated bilinearly at the element centres (dyncontact
+in metres on a regular lattice, interpolated at the element centres (exactly for quadratics; dyncontact
 shifts the table's minimum to 0). The tables of the measured profiles are sampled at 0.1 mm
 laterally (y) and coarser along x; the formula shapes are tabulated at the element centres,
 where the interpolation is exact.
@@ -234,8 +234,8 @@ def measured_wheel_rail(scale):
         "%s and seeded phases. Both profiles sampled at 0.1 mm in y with band-limited noise "
         "(Gaussian-filtered white noise, correlation length %s, peak %s each) and quantised to "
         "0.01 um: the gap's noise up to %s (noise-free gap against measured: max |diff| %s). A "
-        "nearly conformal band: g <= 3 um over %s, <= 10 um over %s. Table %s: y every 0.1 mm over [%s, %s], x every %s (bilinear in x: at most "
-        "%s above x^2 / 2R). No closed form. Steel on steel (G = 82 GPa, nu = 0.28 both). "
+        "nearly conformal band: g <= 3 um over %s, <= 10 um over %s. Table %s: y every 0.1 mm over [%s, %s], x every %s (bilinear interpolation along x would be at most "
+        "%s above x^2 / 2R; the table's is exact for it). No closed form. Steel on steel (G = 82 GPa, nu = 0.28 both). "
         "scripts/make_gap_bank.py."
     ) % (fmt_mm(MWR_Y0), WEAR_SLOPE, fmt_mm(y_tangent), fmt_um(WEAR_DEPTH), fmt_mm(WEAR_ROUND),
          fmt_um(WEAR_DEPTH), WHEEL_TILT, fmt_mm(HOLLOW_CENTRE), HOLLOW_RADIUS,
@@ -344,8 +344,8 @@ def two_patches(scale):
         "y1 = %s, R1 = %g m (rail crown 300 mm, conical tread); flange root y2 = %s, R2 = 1 / "
         "(1/13 mm - 1/16 mm) = %.2f mm (gauge corner in the flange root), its well d = %s above "
         "the tread's: two separate patches %s apart, both loaded (the wells meet at y = %s, "
-        "h = %s: far above the contact). Table: y at the element centres, x every %s (bilinear "
-        "in x: at most %s above x^2 / 2R). Grid %d x %d = %d "
+        "h = %s: far above the contact). Table: y at the element centres, x every %s (bilinear interpolation "
+        "along x would be at most %s above x^2 / 2R; the table's is exact for it). Grid %d x %d = %d "
         "elements over x [%s, %s], y [%s, %s]. Load: 10 kN. No closed form (each patch alone is "
         "Hertzian; they interact through the half-space and share the approach). Steel on "
         "steel (G = 82 GPa, nu = 0.28 both). scripts/make_gap_bank.py."

@@ -533,14 +533,52 @@ TEST_F(TableProfile, ReadsAndInterpolates) {
   for (int j = 0; j < c.grid.ny; ++j)
     for (int i = 0; i < c.grid.nx; ++i) {
       const double x = c.grid.xc(i), y = c.grid.yc(j);
-      // bilinear interpolation of a quadratic: exact at nodes, error <= (dx^2 + 2 dy^2)/4 in between
-      EXPECT_NEAR(h[c.grid.index(i, j)], x * x + 2 * y * y, 3 * 4e-8 / 4) << i << "," << j;
+      // a quadratic is interpolated exactly: round-off of the heights 10 + ... (bilinear: off by 3e-8)
+      EXPECT_NEAR(h[c.grid.index(i, j)], x * x + 2 * y * y, 1e-14) << i << "," << j;
     }
   // read_case_file resolves the table against the case file's folder
   std::ofstream(dir_ / "case.json") << table_case("h.csv").dump();
   const json doc = read_case_file((dir_ / "case.json").string());
   EXPECT_EQ(std::filesystem::path(doc["profile"]["file"].get<std::string>()), dir_ / "h.csv");
   EXPECT_NO_THROW(build_case(doc));
+}
+
+TEST_F(TableProfile, CoversHalfASpacingBeyondItsNodesAndKeepsStepsSharp) {
+  // The table's nodes at the centres of a 10 x 10 grid over [-1.1e-3, 1.1e-3]^2 (spacing 2e-4, as
+  // a table written from a grid is): a finer grid over the same bounds reaches 1e-4 beyond the
+  // outer nodes and gets the quadratic exactly there too.
+  json fine = table_case("h.csv");
+  fine["grid"] = json::parse(R"({"nx": 40, "ny": 40, "x": [-1.1e-3, 1.1e-3], "y": [-1.1e-3, 1.1e-3]})");
+  const Case c = build_case(fine, dir_.string());
+  const auto h = profile_heights(c.profile, c.grid);
+  for (int j = 0; j < c.grid.ny; ++j)
+    for (int i = 0; i < c.grid.nx; ++i) {
+      const double x = c.grid.xc(i), y = c.grid.yc(j);
+      EXPECT_NEAR(h[c.grid.index(i, j)], x * x + 2 * y * y, 1e-14) << i << "," << j;
+    }
+  json beyond = table_case("h.csv");
+  beyond["grid"]["x"] = {-1.2e-3, 1.2e-3};  // centres 1.5e-4 beyond the outer nodes
+  beyond["grid"]["nx"] = 24;
+  expect_input_error([&] { build_case(beyond, dir_.string()); }, "profile.file");
+  // A step (a sharp edge: 0 on x <= 0, 1e-3 beyond) stays within its heights between the nodes:
+  // no dip below the face (a cubic through four nodes dips by 7 % of the step) or rise above it.
+  std::ofstream step(dir_ / "step.csv");
+  step << "x,y,h\n";
+  for (int j = 0; j <= 4; ++j)
+    for (int i = 0; i <= 10; ++i) step << -1e-3 + 2e-4 * i << "," << -4e-4 + 2e-4 * j << "," << (i > 5 ? 1e-3 : 0.0) << "\n";
+  step.close();
+  json sharp = table_case("step.csv");
+  sharp["grid"] = json::parse(R"({"nx": 88, "ny": 4, "x": [-1.1e-3, 1.1e-3], "y": [-4e-4, 4e-4]})");
+  const Case cs = build_case(sharp, dir_.string());
+  const auto hs = profile_heights(cs.profile, cs.grid);
+  for (int i = 0; i < cs.grid.nx; ++i) {
+    const double v = hs[cs.grid.index(i, 1)], x = cs.grid.xc(i);
+    EXPECT_GE(v, 0.0) << x;
+    EXPECT_LE(v, 1e-3) << x;
+    if (x <= 0.0) {
+      EXPECT_EQ(v, 0.0) << x;  // the face stays flat up to its last node
+    }
+  }
 }
 
 TEST_F(TableProfile, Errors) {

@@ -290,6 +290,48 @@ TEST_F(CliAccuracy, TargetsAreMetAgainstTheClosedForm) {
   EXPECT_LE(against_hertz(s, "max_pressure").truth, 1e-3);
 }
 
+/// The Hertz sphere given as a measured table at the element centres of a 24 x 24 grid (the
+/// form a profile written from a grid has): a target refines below the table's spacing, where
+/// the table is interpolated (exactly for a quadratic) and reaches half a spacing beyond its outer
+/// nodes to the grid's edge; the target is met against Hertz (p0 of the sphere).
+TEST_F(CliAccuracy, ATargetOnATableAtTheElementCentresIsMetAgainstHertz) {
+  json sphere = hertz_case(false);
+  sphere["grid"] = {{"nx", 24}, {"ny", 24}, {"extent", 1.3}};
+  const json reference = solve(sphere);
+  const json& g = reference.at("grid");
+  const int n = 24;
+  const double x0 = g.at("x")[0].get<double>(), dx = g.at("dx").get<double>(), R = 0.006;
+  std::string table = "x,y,h\n";
+  char line[128];
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = x0 + (i + 0.5) * dx, y = x0 + (j + 0.5) * dx;
+      std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g\n", x, y, (x * x + y * y) / (2.0 * R));
+      table += line;
+    }
+  std::FILE* f = std::fopen((dir_ / "sphere.csv").c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  std::fputs(table.c_str(), f);
+  std::fclose(f);
+  json c = hertz_case(false);
+  c["profile"] = {{"type", "table"}, {"file", (dir_ / "sphere.csv").string()}};
+  c["grid"] = {{"nx", n}, {"ny", n}, {"x", g.at("x")}, {"y", g.at("y")}};
+  c["accuracy"] = {{"target", 1e-3}, {"quantities", {"max_pressure", "approach"}}};
+  const json s = solve(c);
+  const json& a = s.at("accuracy");
+  EXPECT_TRUE(a.at("met").get<bool>()) << a.dump();
+  EXPECT_GE(a.at("refinements").get<int>(), 1);
+  const json& hertz = reference.at("hertz");
+  // A table's heights are taken from its lowest point, here 2 (dx/2)^2 / (2R) above the sphere's.
+  const double lowest = 0.5 * dx * dx / (2.0 * R);
+  for (const char* q : {"max_pressure", "approach"}) {
+    const double value = s.at(q).get<double>() + (std::string(q) == "approach" ? lowest : 0.0);
+    const double truth = std::abs(value / hertz.at(q).get<double>() - 1.0);
+    EXPECT_LE(truth, 1e-3) << q;
+    EXPECT_LE(a.at("quantities").at(q).at("error_estimate").get<double>(), 1e-3) << q;
+  }
+}
+
 TEST_F(CliAccuracy, TangentialTargetIsMetAgainstCarter) {
   json c = carter_case();
   c["accuracy"] = {{"target", 3e-3}, {"quantities", {"creepage"}}};
