@@ -1,9 +1,9 @@
 // Profiles (2.6). Table profiles: ProfileSpec::table_x/table_y/table_h are the CSV columns as
 // read (one entry per row, any order); they must form a regular lattice (every distinct x
 // with every distinct y, or a single y row: then h depends on x only). Heights at element
-// centres are interpolated along each axis as linear plus the minmod-limited parabola of the
-// second differences (TableLattice::along: exact for quadratics, no overshoot at steps); the
-// table covers half a node spacing beyond its outer nodes, an element centre beyond that is an
+// centres are interpolated along x on the rows, then along y, by the cubic Hermite of limited
+// slopes (core/limited_hermite.hpp: a continuous slope, exact for quadratics, no overshoot at
+// steps); the table covers half a node spacing beyond its outer nodes, an element centre beyond that is an
 // InputError.
 #include "profile.hpp"
 #include "profile_turned.hpp"
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "errors.hpp"
+#include "limited_hermite.hpp"
 
 namespace dc {
 namespace {
@@ -93,40 +94,20 @@ struct TableLattice {
     t = std::clamp((x - axis[cell]) / (axis[upper] - axis[cell]), -0.5, 1.5);
   }
 
-  /// Along one axis between the values v[cell] and v[cell + 1] of n nodes: linear plus the
-  /// parabola of the cell's second difference, v(t) = (1 - t) v0 + t v1 - t (1 - t) D / 2, D the
-  /// smaller of the second differences at the cell's nodes when they agree in sign, else 0
-  /// (minmod; one-sided in the outer cells). Exact for a quadratic, continuous slope there, and
-  /// no overshoot at a step (a sharp edge stays linear); bilinear interpolation's kinks at every
-  /// node would make the pressure log-singular on the grids between the nodes.
-  template <class Value>
-  static double along(std::size_t n, std::size_t cell, double t, const Value& v) {
-    const double v0 = v(cell), v1 = v(cell + 1);
-    double D = 0.0;
-    if (n >= 3) {
-      auto second = [&](std::size_t k) { return v(k - 1) - 2.0 * v(k) + v(k + 1); };
-      const bool has_lower = cell >= 1, has_upper = cell + 2 < n;
-      if (has_lower && has_upper) {
-        const double a = second(cell), b = second(cell + 1);
-        D = a * b > 0.0 ? (std::abs(a) < std::abs(b) ? a : b) : 0.0;
-      } else {
-        D = has_lower ? second(cell) : second(cell + 1);
-      }
-    }
-    return (1.0 - t) * v0 + t * v1 - 0.5 * t * (1.0 - t) * D;
-  }
-
-  /// The height at (x, y): along x on the four rows about y, then along y; a table with a single
+  /// The height at (x, y): along x on the six rows about y, then along y; a table with a single
   /// y row depends on x only (extruded along y).
   double at(double x, double y) const {
     std::size_t i = 0, j = 0;
     double tx = 0.0, ty = 0.0;
     locate(xs, x, i, tx);
     const std::size_t mx = xs.size(), my = ys.size();
-    auto row = [&](std::size_t b) { return along(mx, i, tx, [&](std::size_t a) { return h[a + mx * b]; }); };
+    const auto x_at = [&](std::size_t a) { return xs[a]; };
+    const auto row = [&](std::size_t b) {
+      return limited_hermite(mx, i, tx, x_at, [&](std::size_t a) { return h[a + mx * b]; });
+    };
     if (my == 1) return row(0);
     locate(ys, y, j, ty);
-    return along(my, j, ty, row);
+    return limited_hermite(my, j, ty, [&](std::size_t b) { return ys[b]; }, row);
   }
 };
 
